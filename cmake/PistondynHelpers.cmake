@@ -1,0 +1,54 @@
+# Helper functions shared by every module's CMakeLists.txt.
+
+set(PISTONDYN_WARNINGS -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Woverloaded-virtual)
+
+# pistondyn_add_library(<module>
+#     SOURCES <files...>
+#     [PUBLIC_DEPS <targets...>] [PRIVATE_DEPS <targets...>]
+#     [USES_SIMBODY])
+# Creates target pistondyn_<module> (alias and exported name pistondyn::<module>)
+# with public include folder <module>/include (headers under include/pistondyn/<module>/),
+# installs it and its headers. USES_SIMBODY adds -UNDEBUG to the target and to its
+# consumers (DESIGN.md §5).
+function(pistondyn_add_library module)
+  cmake_parse_arguments(ARG "USES_SIMBODY" "" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
+  set(tgt pistondyn_${module})
+  add_library(${tgt} ${ARG_SOURCES})
+  add_library(pistondyn::${module} ALIAS ${tgt})
+  set_target_properties(${tgt} PROPERTIES EXPORT_NAME ${module} POSITION_INDEPENDENT_CODE ON)
+  target_include_directories(${tgt} PUBLIC
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  target_compile_features(${tgt} PUBLIC cxx_std_17)
+  target_compile_options(${tgt} PRIVATE ${PISTONDYN_WARNINGS})
+  target_link_libraries(${tgt} PUBLIC ${ARG_PUBLIC_DEPS} PRIVATE ${ARG_PRIVATE_DEPS})
+  if(ARG_USES_SIMBODY)
+    target_compile_options(${tgt} PUBLIC -UNDEBUG)
+  endif()
+  install(TARGETS ${tgt} EXPORT pistondynTargets
+    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+    LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+    RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+endfunction()
+
+# pistondyn_add_gtest(<name> SOURCES <files...> LIBS <targets...> [LABELS <labels...>])
+# One GoogleTest executable; each TEST becomes its own CTest test.
+function(pistondyn_add_gtest name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;LABELS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_compile_options(${name} PRIVATE ${PISTONDYN_WARNINGS})
+  target_link_libraries(${name} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gtest_main)
+  gtest_discover_tests(${name}
+    WORKING_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}
+    DISCOVERY_TIMEOUT 120
+    PROPERTIES LABELS "${ARG_LABELS}")
+endfunction()
+
+# pistondyn_add_benchmark(<name> SOURCES <files...> LIBS <targets...>)
+function(pistondyn_add_benchmark name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_compile_options(${name} PRIVATE ${PISTONDYN_WARNINGS})
+  target_link_libraries(${name} PRIVATE ${ARG_LIBS} benchmark::benchmark)
+endfunction()

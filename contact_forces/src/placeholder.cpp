@@ -1,0 +1,1 @@
+// Placeholder so the skeleton builds; replaced by the module's first real source.

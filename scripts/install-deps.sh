@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs pistondyn's build dependencies from Debian 12 packages, only those missing.
+# Runs as root, or through sudo where not root.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake pkg-config
+  libsimbody-dev          # multibody engine (3.7)
+  libeigen3-dev           # dense/sparse linear algebra for the numerics
+  libsuitesparse-dev      # CHOLMOD / UMFPACK / KLU sparse direct solvers
+  libyaml-cpp-dev         # YAML engine decks (command-line program only)
+  libgtest-dev googletest # test suite
+  libbenchmark-dev        # bench/
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages already installed"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,53 @@
+#pragma once
+// Cylinder gas pressure against crank angle, periodic over the 720 deg four-stroke
+// cycle, interpolated by a periodic cubic spline (C2, so the gas force the integrator
+// sees is smooth). Angles are crank angles from firing TDC in degrees; pressures are
+// absolute, in Pa. Reading the table from a file is the caller's business (edge code).
+
+#include <vector>
+
+#include "pistondyn/mbd_models/SliderCrank.h"
+
+namespace pistondyn::mbd {
+
+class CylinderPressureCurve {
+ public:
+  static constexpr double kCycle_deg = 720.0;
+
+  // Inputs:
+  //   crankAngle_deg  strictly increasing angles covering one cycle: either the last
+  //                   angle is first + 720 (its pressure must equal the first within
+  //                   0.5 % of the peak, and it is dropped as the periodic duplicate),
+  //                   or the gap from the last angle to first + 720 is no larger than
+  //                   the table's largest step. At least 4 distinct angles.
+  //   pressure_Pa     absolute pressure at each angle, > 0 and finite.
+  // Throws std::invalid_argument naming the offending row index (0-based) otherwise.
+  CylinderPressureCurve(std::vector<double> crankAngle_deg, std::vector<double> pressure_Pa);
+
+  // Pressure [Pa] at any crank angle (wrapped into the cycle).
+  double calcPressure_Pa(double crankAngle_deg) const;
+  // dp/dtheta [Pa/deg].
+  double calcPressureSlope_Paperdeg(double crankAngle_deg) const;
+
+  double getPeakPressure_Pa() const { return peak_Pa_; }
+  double getPeakPressureAngle_deg() const { return peakAngle_deg_; }
+  const std::vector<double>& getAngles_deg() const { return angle_; }
+  const std::vector<double>& getPressures_Pa() const { return p_; }
+
+ private:
+  int findInterval(double wrappedAngle_deg) const;
+  double wrap(double crankAngle_deg) const;
+
+  std::vector<double> angle_;   // distinct knots, angle_[0] .. angle_[n-1] < angle_[0] + 720
+  std::vector<double> p_;       // knot values
+  std::vector<double> m_;       // knot second derivatives (periodic spline)
+  double peak_Pa_ = 0.0, peakAngle_deg_ = 0.0;
+};
+
+// Indicated mean effective pressure [Pa] of the 720 deg cycle: (closed integral of
+// p dV) / V_d, with V(theta) from the slider-crank kinematics. Net imep (includes the
+// gas-exchange loop). The integral is evaluated piecewise on the spline's own
+// intervals with 8-point Gauss-Legendre, exact for the cubic times the smooth dV.
+double calcImep_Pa(const CylinderPressureCurve& pressure, const CylinderVolume& volume);
+
+}  // namespace pistondyn::mbd

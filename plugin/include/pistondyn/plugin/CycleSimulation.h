@@ -1,0 +1,73 @@
+#pragma once
+// Runs a PistonAssemblyModel over whole 720 deg cycles and records one row per output
+// crank angle: the crank-train columns below, then every element's report columns.
+//
+// Crank-train columns (units in the names; crank angle 0 = firing TDC):
+//   time_s, crank_angle_deg (continuous from the start angle), crank_speed_rpm,
+//   piston_y_m (height of the piston axis at pin height above the crank axis),
+//   piston_vy_mps, piston_ay_mps2, u_lat_um (+ thrust), tilt_mrad (+ crown towards
+//   thrust), u_tran_um (+ along pin axis z), conrod_force_N (+ compression),
+//   crank_torque_Nm (rod on crank, + along rotation), drive_torque_Nm (drive on crank,
+//   + along rotation).
+//
+// Constant-speed crank: rows at exact crank angles start + k * step. Free crank: rows
+// at equal time intervals step / nominal speed; crank_angle_deg is the actual angle.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "pistondyn/plugin/PistonAssemblyModel.h"
+
+namespace pistondyn::plugin {
+
+struct SimulationSettings {
+  double startAngle_deg = 0.0;      // crank angle of the first row [deg]
+  int cycles = 1;                   // number of 720 deg cycles, >= 1
+  double outputStep_deg = 1.0;      // output interval [deg], > 0, must divide 720
+  enum class Integrator { RungeKuttaMerson, RungeKuttaFeldberg, CPodesBDF };
+  Integrator integrator = Integrator::RungeKuttaMerson;
+  double accuracy = 1e-9;             // integrator relative accuracy [-]
+  double constraintTolerance = 1e-11;  // constraint projection tolerance [-]
+};
+
+// Throws std::invalid_argument naming the member when settings are unusable.
+void validate(const SimulationSettings& settings);
+
+struct ResultTable {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;  // rows[i][j] = value of columns[j] at row i
+
+  // Index of a column; throws std::out_of_range naming it if absent.
+  std::size_t columnIndex(const std::string& name) const;
+  std::vector<double> column(const std::string& name) const;
+};
+
+struct SimulationStats {
+  double wallTime_s = 0.0;
+  long integratorSteps = 0;
+  long realizations = 0;  // number of Stage::Dynamics realizations taken by the integrator
+};
+
+class CycleSimulation {
+ public:
+  CycleSimulation(PistonAssemblyModel& model, SimulationSettings settings);
+
+  // Progress: called after every row with the fraction done in [0, 1].
+  using Progress = std::function<void(double)>;
+  ResultTable run(const Progress& progress = {});
+  const SimulationStats& getStats() const { return stats_; }
+
+  // The crank-train columns listed above, and their values at a state realized
+  // through Stage::Acceleration (also usable outside a run).
+  static std::vector<std::string> crankTrainColumns();
+  static void calcCrankTrainRow(const mbd::CrankTrain& crankTrain, const SimTK::State& s,
+                                std::vector<double>& values);
+
+ private:
+  PistonAssemblyModel& model_;
+  SimulationSettings settings_;
+  SimulationStats stats_;
+};
+
+}  // namespace pistondyn::plugin

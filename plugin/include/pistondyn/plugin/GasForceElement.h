@@ -1,0 +1,47 @@
+#pragma once
+// Gas force on the piston crown: (p_cylinder(theta) - p_crankcase) * A_bore, acting at
+// the crown centre along the piston axis (a body-fixed direction, so it follows the
+// tilt: pressure acts normal to the crown). Periodic cylinder-pressure curve over 720
+// deg; crank angle from the crank train's state.
+//
+// Report columns: cylinder_pressure_Pa, gas_force_N (positive = pushing the piston
+// down, towards the crank).
+
+#include "pistondyn/mbd_models/CylinderPressureCurve.h"
+#include "pistondyn/plugin/ElementCache.h"
+#include "pistondyn/plugin/ForceElement.h"
+
+namespace pistondyn::plugin {
+
+class GasForceElement final : public ForceElement {
+ public:
+  // crankcasePressure_Pa: absolute pressure under the piston [Pa], >= 0.
+  GasForceElement(mbd::CylinderPressureCurve cylinderPressure, double crankcasePressure_Pa);
+
+  std::string getName() const override { return "gas_force"; }
+  void addToModel(const ModelBuildContext& context) override;
+  void realizeTopology(SimTK::State& s, const SimTK::Subsystem& forces) const override;
+  void calcForces(const SimTK::State& s, AppliedForces& forces) const override;
+  bool dependsOnlyOnPositions() const override { return true; }
+  std::vector<std::string> getReportColumns() const override;
+  void calcReport(const SimTK::State& s, std::vector<double>& values) const override;
+
+  const mbd::CylinderPressureCurve& getCylinderPressure() const { return pressure_; }
+  double getCrankcasePressure_Pa() const { return crankcase_Pa_; }
+
+  struct Results {
+    double cylinderPressure_Pa = 0.0;
+    double gasForce_N = 0.0;  // along -y of the piston frame
+  };
+  // Requires Stage::Position.
+  const Results& getResults(const SimTK::State& s) const;
+
+ private:
+  mbd::CylinderPressureCurve pressure_;
+  double crankcase_Pa_;
+  const mbd::CrankTrain* crankTrain_ = nullptr;  // non-owning; the model owns both
+  double area_m2_ = 0.0;
+  ElementCache<Results> cache_;
+};
+
+}  // namespace pistondyn::plugin

@@ -1,0 +1,35 @@
+#pragma once
+// The "ideal liner": holds the piston exactly on the cylinder axis, upright, and at
+// zero tertiary displacement, by three Simbody constraints (lateral position, tilt,
+// position along the pin axis). It applies no force of its own; its reaction is the
+// side force a rigid, frictionless, zero-clearance liner would carry. Used to verify
+// the crank train against closed forms and as the simplest liner for quick studies;
+// the lubricated skirt element replaces it.
+//
+// Report columns (state realized through Stage::Acceleration):
+//   side_force_N      lateral force the piston exerts on the liner, + towards thrust
+//   guide_moment_Nm   moment the piston exerts on the liner about +z
+//   guide_axial_N     force the piston exerts along the pin axis (tertiary), + along +z
+
+#include "pistondyn/plugin/ForceElement.h"
+
+namespace pistondyn::plugin {
+
+class IdealLinerGuide final : public ForceElement {
+ public:
+  std::string getName() const override { return "ideal_liner_guide"; }
+  void addToModel(const ModelBuildContext& context) override;
+  void calcForces(const SimTK::State&, AppliedForces&) const override {}
+  std::vector<std::string> getReportColumns() const override;
+  void calcReport(const SimTK::State& s, std::vector<double>& values) const override;
+
+  // Force [N] and moment about the piston-frame origin [N m], in ground, that the
+  // piston exerts on the liner through the three constraints (Stage::Acceleration).
+  SimTK::SpatialVec calcForceOnLiner(const SimTK::State& s) const;
+
+ private:
+  const mbd::CrankTrain* crankTrain_ = nullptr;  // non-owning
+  SimTK::Constraint lateral_, tilt_, transverse_;
+};
+
+}  // namespace pistondyn::plugin

@@ -1,0 +1,80 @@
+#pragma once
+// A ready-to-simulate piston assembly: the Simbody system, the crank train and the
+// registry of force elements. Elements are added, replaced or removed by name until
+// the system is built (first call to buildSystem() / getDefaultState()); then the set
+// is frozen, because Simbody cannot remove a force or constraint from a built system.
+//
+//   PistonAssemblyModel model(engine);
+//   model.addElement(std::make_unique<GasForceElement>(curve, 1e5));
+//   model.addElement(std::make_unique<IdealLinerGuide>());
+//   model.replaceElement("ideal_liner_guide", std::make_unique<MyLinerModel>());
+//   SimTK::State s = model.getDefaultState();
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pistondyn/mbd_models/CrankTrain.h"
+#include "pistondyn/plugin/ForceElement.h"
+
+namespace pistondyn::plugin {
+
+class PistonAssemblyModel {
+ public:
+  explicit PistonAssemblyModel(const mbd::EngineDescription& engine);
+  PistonAssemblyModel(const PistonAssemblyModel&) = delete;
+  PistonAssemblyModel& operator=(const PistonAssemblyModel&) = delete;
+  ~PistonAssemblyModel();
+
+  // ---- element registry (before the system is built) -------------------------------
+  // Throws std::invalid_argument on a duplicate or empty name, std::logic_error once built.
+  void addElement(std::unique_ptr<ForceElement> element);
+  // Replaces the element called `name` (throws if there is none); the newcomer may
+  // have a different name. Keeps the registration order.
+  void replaceElement(const std::string& name, std::unique_ptr<ForceElement> element);
+  void removeElement(const std::string& name);
+  bool hasElement(const std::string& name) const;
+  const ForceElement& getElement(const std::string& name) const;
+  template <class T>
+  const T& getElementAs(const std::string& name) const {
+    const T* e = dynamic_cast<const T*>(&getElement(name));
+    if (e == nullptr) throw std::invalid_argument("element '" + name + "' has another type");
+    return *e;
+  }
+  std::vector<std::string> getElementNames() const;
+
+  // ---- Simbody system ------------------------------------------------------------
+  // Wraps every element in a Simbody Force::Custom, lets it add constraints, and
+  // realizes topology. Idempotent.
+  void buildSystem();
+  bool isBuilt() const { return built_; }
+  // Default state (builds first); every q and u zero = firing TDC, piston upright, at rest.
+  const SimTK::State& getDefaultState();
+
+  const SimTK::MultibodySystem& getSystem() const { return *system_; }
+  SimTK::MultibodySystem& updSystem() { return *system_; }
+  const SimTK::SimbodyMatterSubsystem& getMatter() const { return *matter_; }
+  const SimTK::GeneralForceSubsystem& getForceSubsystem() const { return *forces_; }
+  const mbd::CrankTrain& getCrankTrain() const { return *crankTrain_; }
+
+  // Output columns of every element, in registration order, and their values.
+  std::vector<std::string> getElementReportColumns() const;
+  void calcElementReports(const SimTK::State& s, std::vector<double>& values) const;
+
+ private:
+  void requireNotBuilt(const char* what) const;
+  std::vector<std::unique_ptr<ForceElement>>::iterator find(const std::string& name);
+  std::vector<std::unique_ptr<ForceElement>>::const_iterator find(const std::string& name) const;
+
+  // Declared before the system: members are destroyed in reverse order, so the
+  // Simbody system (whose Force::Custom adapters point at these elements) goes first.
+  std::vector<std::unique_ptr<ForceElement>> elements_;
+  std::unique_ptr<SimTK::MultibodySystem> system_;
+  std::unique_ptr<SimTK::SimbodyMatterSubsystem> matter_;
+  std::unique_ptr<SimTK::GeneralForceSubsystem> forces_;
+  std::unique_ptr<mbd::CrankTrain> crankTrain_;
+  bool built_ = false;
+};
+
+}  // namespace pistondyn::plugin

@@ -1,0 +1,157 @@
+#include "pistondyn/cli/EngineDeck.h"
+
+#include <cmath>
+
+#include "pistondyn/cli/DeckError.h"
+#include "pistondyn/cli/PressureTableCsv.h"
+#include "pistondyn/cli/YamlDeck.h"
+#include "pistondyn/plugin/GasForceElement.h"
+#include "pistondyn/plugin/IdealLinerGuide.h"
+
+namespace pistondyn::cli {
+namespace {
+
+constexpr double kMm = 1e-3;        // mm -> m
+constexpr double kGram = 1e-3;      // g -> kg
+constexpr double kKgMm2 = 1e-6;     // kg mm^2 -> kg m^2
+constexpr double kBar = 1e5;        // bar -> Pa
+using Sign = YamlDeck::Sign;
+
+mbd::PlanarMassProperties readBody(YamlDeck& d, const std::string& section) {
+  mbd::PlanarMassProperties b;
+  b.mass_kg = d.getNumber(section + ".mass_g", Sign::Positive) * kGram;
+  b.inertiaZZ_kgm2 = d.getNumber(section + ".inertia_kg_mm2", Sign::NonNegative) * kKgMm2;
+  return b;
+}
+
+}  // namespace
+
+EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::string>& overrides) {
+  YamlDeck d(deckPath);
+  for (const auto& o : overrides) d.applyOverride(o);
+
+  EngineDeck deck;
+  deck.deckPath = deckPath;
+  deck.overrides = overrides;
+  mbd::EngineDescription& e = deck.engine;
+  e.name = d.getString("engine.name");
+
+  mbd::CrankTrainGeometry& g = e.geometry;
+  e.piston.bore_m = d.getNumber("geometry.bore_mm", Sign::Positive) * kMm;
+  g.crankRadius_m = 0.5 * d.getNumber("geometry.stroke_mm", Sign::Positive) * kMm;
+  g.conrodLength_m = d.getNumber("geometry.conrod_length_mm", Sign::Positive) * kMm;
+  g.pinOffset_m = d.getNumberOr("geometry.pin_offset_mm", 0.0) * kMm;
+  g.crankOffset_m = d.getNumberOr("geometry.crank_offset_mm", 0.0) * kMm;
+  g.compressionRatio = d.getNumber("geometry.compression_ratio", Sign::Positive);
+
+  e.piston.compressionHeight_m = d.getNumber("piston.compression_height_mm", Sign::Positive) * kMm;
+  e.piston.skirtLength_m = d.getNumber("piston.skirt_length_mm", Sign::Positive) * kMm;
+  e.piston.skirtTopAbovePin_m = d.getNumber("piston.skirt_top_above_pin_mm") * kMm;
+  e.mass.piston = readBody(d, "piston");
+  e.mass.piston.comY_m = d.getNumber("piston.com_above_pin_mm") * kMm;
+  e.mass.piston.comX_m = d.getNumberOr("piston.com_towards_thrust_mm", 0.0) * kMm;
+
+  e.mass.pin = readBody(d, "pin");
+  const std::string joint =
+      d.getChoiceOr("pin.joint", {"floating", "fixed_in_rod", "fixed_in_piston"}, "floating");
+  e.pinJoint = joint == "fixed_in_rod"      ? mbd::PinJoint::FixedInRod
+               : joint == "fixed_in_piston" ? mbd::PinJoint::FixedInPiston
+                                            : mbd::PinJoint::Floating;
+
+  e.mass.conrod = readBody(d, "conrod");
+  e.mass.conrod.comY_m = d.getNumber("conrod.com_from_big_end_mm", Sign::NonNegative) * kMm;
+
+  e.mass.crank = readBody(d, "crank");
+  e.mass.crank.comY_m = d.getNumber("crank.com_radius_mm") * kMm;
+
+  const std::string mode = d.getChoiceOr("drive.mode", {"constant_speed", "free"}, "constant_speed");
+  e.drive.mode = mode == "free" ? mbd::CrankDrive::Mode::Free : mbd::CrankDrive::Mode::ConstantSpeed;
+  e.drive.speed_radps = d.getNumber("drive.speed_rpm", Sign::Positive) * M_PI / 30.0;
+  e.drive.flywheelInertia_kgm2 =
+      d.getNumberOr("drive.flywheel_inertia_kg_m2", 0.0, Sign::NonNegative);
+  e.drive.loadTorque_Nm = d.getNumberOr("drive.load_torque_Nm", 0.0);
+  e.gravity_mps2 = d.getNumberOr("simulation.gravity_mps2", 9.80665, Sign::NonNegative);
+
+  const std::string table = d.getString("gas.cylinder_pressure_file");
+  deck.cylinderPressureFile =
+      (!table.empty() && table[0] == '/') ? table : d.getDirectory() + table;
+  deck.crankcasePressure_Pa =
+      d.getNumberOr("gas.crankcase_pressure_bar", 1.01325, Sign::NonNegative) * kBar;
+  if (const auto imep = d.getOptionalNumber("gas.stated_imep_kPa")) deck.statedImep_Pa = *imep * 1e3;
+
+  deck.linerModel = d.getChoiceOr("liner.model", {"ideal_guide"}, "ideal_guide");
+
+  plugin::SimulationSettings& s = deck.simulation;
+  s.startAngle_deg = d.getNumberOr("simulation.start_angle_deg", 0.0);
+  s.cycles = static_cast<int>(d.getIntegerOr("simulation.cycles", 1, 1));
+  s.outputStep_deg = d.getNumberOr("simulation.output_step_deg", 1.0, Sign::Positive);
+  const std::string integ = d.getChoiceOr("simulation.integrator",
+                                          {"rk_merson", "rk_feldberg", "cpodes_bdf"}, "rk_merson");
+  s.integrator = integ == "rk_feldberg"  ? plugin::SimulationSettings::Integrator::RungeKuttaFeldberg
+                 : integ == "cpodes_bdf" ? plugin::SimulationSettings::Integrator::CPodesBDF
+                                         : plugin::SimulationSettings::Integrator::RungeKuttaMerson;
+  s.accuracy = d.getNumberOr("simulation.accuracy", 1e-9, Sign::Positive);
+  try {
+    plugin::validate(s);
+  } catch (const std::invalid_argument& ex) {
+    d.addProblem("simulation", ex.what());
+  }
+
+  // Cross-key checks, only on values that are individually valid (a failed read
+  // leaves a placeholder that would only produce a second, confusing message).
+  if (!d.hasProblems()) {
+    if (g.compressionRatio <= 1.0) {
+      d.addProblem("geometry.compression_ratio", "must be greater than 1");
+    }
+    const double reach = g.crankRadius_m + std::abs(g.pinOffset_m + g.crankOffset_m);
+    if (g.conrodLength_m <= reach) {
+      d.addProblem("geometry.conrod_length_mm",
+                   "the rod must be longer than half the stroke plus |pin offset + crank "
+                   "offset| = " + std::to_string(reach / kMm) + " mm");
+    }
+    if (e.piston.skirtTopAbovePin_m > e.piston.compressionHeight_m) {
+      d.addProblem("piston.skirt_top_above_pin_mm",
+                   "the skirt top cannot be above the crown (compression_height_mm)");
+    }
+  }
+  // Every key is read; report unknown keys and all problems together.
+  d.finish();
+
+  // Cross-checks that need a consistent description.
+  try {
+    mbd::validate(e);
+  } catch (const std::invalid_argument& ex) {
+    throw DeckError(deckPath + ": " + ex.what());
+  }
+  deck.cylinderPressure =
+      std::make_shared<const mbd::CylinderPressureCurve>(readPressureTableCsv(deck.cylinderPressureFile));
+  if (deck.statedImep_Pa) {
+    const double imep = calcDeckImep_Pa(deck);
+    const double rel = std::abs(imep - *deck.statedImep_Pa) / std::abs(*deck.statedImep_Pa);
+    if (!(rel <= 0.005)) {
+      throw DeckError(deckPath + ": gas.stated_imep_kPa: the pressure table " +
+                      deck.cylinderPressureFile + " gives an imep of " +
+                      std::to_string(imep / 1e3) + " kPa, " + std::to_string(rel * 100.0) +
+                      " % away from the stated " + std::to_string(*deck.statedImep_Pa / 1e3) +
+                      " kPa (tolerance 0.5 %)");
+    }
+  }
+  return deck;
+}
+
+double calcDeckImep_Pa(const EngineDeck& deck) {
+  const mbd::SliderCrank kin(deck.engine.geometry);
+  const mbd::CylinderVolume vol(kin, deck.engine.piston.bore_m, deck.engine.geometry.compressionRatio);
+  return mbd::calcImep_Pa(*deck.cylinderPressure, vol);
+}
+
+std::unique_ptr<plugin::PistonAssemblyModel> buildModel(const EngineDeck& deck) {
+  auto model = std::make_unique<plugin::PistonAssemblyModel>(deck.engine);
+  model->addElement(
+      std::make_unique<plugin::GasForceElement>(*deck.cylinderPressure, deck.crankcasePressure_Pa));
+  // liner.model: only the ideal guide exists so far (the lubricated skirt comes next).
+  model->addElement(std::make_unique<plugin::IdealLinerGuide>());
+  return model;
+}
+
+}  // namespace pistondyn::cli

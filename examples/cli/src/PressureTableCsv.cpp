@@ -1,0 +1,103 @@
+#include "pistondyn/cli/PressureTableCsv.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "pistondyn/cli/DeckError.h"
+
+namespace pistondyn::cli {
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return {};
+  const auto e = s.find_last_not_of(" \t\r");
+  return s.substr(b, e - b + 1);
+}
+
+std::vector<std::string> splitCsv(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream ss(line);
+  std::string f;
+  while (std::getline(ss, f, ',')) out.push_back(trim(f));
+  if (!line.empty() && line.back() == ',') out.emplace_back();
+  return out;
+}
+
+bool parseDouble(const std::string& text, double& value) {
+  if (text.empty()) return false;
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtod(text.c_str(), &end);
+  return errno == 0 && end == text.c_str() + text.size();
+}
+
+}  // namespace
+
+mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath) {
+  std::ifstream in(filePath);
+  if (!in) throw DeckError(filePath + ": cannot open the cylinder-pressure table");
+  static const std::map<std::string, double> kUnits = {
+      {"pressure_Pa", 1.0}, {"pressure_kPa", 1e3}, {"pressure_bar", 1e5}, {"pressure_MPa", 1e6}};
+
+  std::vector<double> angle, pressure;
+  std::vector<int> lineOfRow;
+  double toPa = 0.0;
+  bool haveHeader = false;
+  std::string line;
+  int lineNo = 0;
+  while (std::getline(in, line)) {
+    ++lineNo;
+    const std::string t = trim(line);
+    if (t.empty() || t[0] == '#') continue;
+    const std::vector<std::string> f = splitCsv(t);
+    const std::string at = filePath + ":" + std::to_string(lineNo) + ": ";
+    if (!haveHeader) {
+      if (f.size() != 2 || f[0] != "crank_angle_deg" || kUnits.count(f[1]) == 0) {
+        throw DeckError(at + "expected the header 'crank_angle_deg,pressure_<unit>' with unit "
+                             "Pa, kPa, bar or MPa (absolute), found '" + t + "'");
+      }
+      toPa = kUnits.at(f[1]);
+      haveHeader = true;
+      continue;
+    }
+    if (f.size() != 2) {
+      throw DeckError(at + "expected 2 columns (crank angle, pressure), found " +
+                      std::to_string(f.size()));
+    }
+    double a = 0.0, p = 0.0;
+    if (!parseDouble(f[0], a)) throw DeckError(at + "crank angle '" + f[0] + "' is not a number");
+    if (!parseDouble(f[1], p)) throw DeckError(at + "pressure '" + f[1] + "' is not a number");
+    if (!angle.empty() && !(a > angle.back())) {
+      throw DeckError(at + "crank angle " + f[0] + " deg is not greater than the previous row's (" +
+                      std::to_string(angle.back()) + " deg); angles must increase");
+    }
+    if (!(p > 0.0)) {
+      throw DeckError(at + "pressure " + f[1] + " must be positive (absolute pressure)");
+    }
+    angle.push_back(a);
+    pressure.push_back(p * toPa);
+    lineOfRow.push_back(lineNo);
+  }
+  if (!haveHeader) throw DeckError(filePath + ": empty table (no header line)");
+  try {
+    return mbd::CylinderPressureCurve(std::move(angle), std::move(pressure));
+  } catch (const std::invalid_argument& e) {
+    // The curve reports 0-based rows; translate "row i" into this file's line.
+    std::string msg = e.what();
+    const auto pos = msg.find("row ");
+    if (pos != std::string::npos) {
+      const std::size_t row = std::strtoul(msg.c_str() + pos + 4, nullptr, 10);
+      if (row < lineOfRow.size()) {
+        throw DeckError(filePath + ":" + std::to_string(lineOfRow[row]) + ": " + msg);
+      }
+    }
+    throw DeckError(filePath + ": " + msg);
+  }
+}
+
+}  // namespace pistondyn::cli

@@ -1,0 +1,182 @@
+// Generates the cylinder-pressure tables of the example engines (examples/engines/*),
+// so that every committed table can be reproduced and its model is on record.
+//
+// Model (single zone, crank angle 0 = firing TDC, 720 deg cycle):
+//   closed cycle IVC -> EVO:  dp/dtheta = (k-1)/V dQ/dtheta - k p/V dV/dtheta
+//       with a Wiebe heat release Q = Q_tot (1 - exp(-a ((theta-theta_s)/dtheta)^(m+1)))
+//       (a = 6.908 i.e. 99.9 % burnt at theta_s + dtheta, m = 2); Q_tot = 0 = motored.
+//       k is an effective polytropic exponent (heat loss lumped in).
+//   blow-down EVO -> EVO+60: cosine blend from p(EVO) to the exhaust pressure;
+//   exhaust stroke at p_exh; 370 -> 400 deg cosine blend to the intake pressure;
+//   intake stroke at p_int until IVC.
+// With --target-imep-kPa the heat Q_tot is found by the secant method so that the
+// net imep (closed integral of p dV over V_d, trapezoid at 0.01 deg) hits the target.
+//
+// Usage: make_pressure_curve --bore-mm B --stroke-mm S --rod-mm L --cr CR
+//          [--pin-offset-mm e] [--crank-offset-mm e] [--k 1.30] [--p-int-bar 1.0]
+//          [--p-exh-bar 1.05] [--ivc-deg 580] [--evo-deg 140] [--soc-deg -15]
+//          [--burn-deg 50] [--target-imep-kPa X] [--step-deg 0.5] --out FILE.csv
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "pistondyn/mbd_models/SliderCrank.h"
+
+namespace {
+
+struct Params {
+  double bore_mm = 0, stroke_mm = 0, rod_mm = 0, cr = 0, pinOffset_mm = 0, crankOffset_mm = 0;
+  double k = 1.30, pInt_bar = 1.0, pExh_bar = 1.05, ivc_deg = 580, evo_deg = 140;
+  double soc_deg = -15, burn_deg = 50, targetImep_kPa = NAN, step_deg = 0.5;
+  std::string out;
+};
+
+constexpr double kDeg = M_PI / 180.0;
+constexpr double kFine_deg = 0.01;  // integration step
+
+double wiebeFraction(double theta, const Params& p) {
+  if (theta <= p.soc_deg) return 0.0;
+  const double x = (theta - p.soc_deg) / p.burn_deg;
+  return 1.0 - std::exp(-6.908 * x * x * x);
+}
+
+// Pressure on the fine grid theta_i = i * kFine_deg, i = 0 .. 72000 - 1.
+std::vector<double> buildCycle(const Params& p, const pistondyn::mbd::CylinderVolume& vol,
+                               double qTot_J) {
+  const int n = static_cast<int>(std::lround(720.0 / kFine_deg));
+  std::vector<double> pr(n, 0.0);
+  const double pInt = p.pInt_bar * 1e5, pExh = p.pExh_bar * 1e5;
+  auto V = [&](double th) { return vol.calcVolume_m3(th * kDeg); };
+  auto dV = [&](double th) { return vol.calcVolumeDerivative_m3prad(th * kDeg) * kDeg; };  // per deg
+  // Heat release per degree; burn measured from firing TDC (theta may be < 0 before it).
+  auto dQ = [&](double th) {
+    const double h = 1e-4;
+    return qTot_J * (wiebeFraction(th + h, p) - wiebeFraction(th - h, p)) / (2 * h);
+  };
+  auto rhs = [&](double th, double pp) {
+    return (p.k - 1.0) / V(th) * dQ(th - 720.0 * (th > 360.0)) - p.k * pp / V(th) * dV(th);
+  };
+  // Closed cycle from IVC (e.g. 580) to EVO + 720 (e.g. 860), RK4.
+  double pp = pInt;
+  const int iIvc = static_cast<int>(std::lround(p.ivc_deg / kFine_deg));
+  const int iEvo = static_cast<int>(std::lround((p.evo_deg + 720.0) / kFine_deg));
+  for (int i = iIvc; i <= iEvo; ++i) {
+    pr[i % n] = pp;
+    const double th = i * kFine_deg, h = kFine_deg;
+    const double k1 = rhs(th, pp), k2 = rhs(th + h / 2, pp + h / 2 * k1);
+    const double k3 = rhs(th + h / 2, pp + h / 2 * k2), k4 = rhs(th + h, pp + h * k3);
+    pp += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+  }
+  const double pEvo = pr[iEvo % n];
+  auto blend = [](double th, double a, double b) {  // 1 at a, 0 at b, cosine
+    return 0.5 * (1.0 + std::cos(M_PI * (th - a) / (b - a)));
+  };
+  for (int i = (iEvo % n) + 1; i < iIvc; ++i) {
+    const double th = i * kFine_deg;
+    if (th < p.evo_deg + 60.0) {
+      pr[i] = pExh + (pEvo - pExh) * blend(th, p.evo_deg, p.evo_deg + 60.0);
+    } else if (th < 370.0) {
+      pr[i] = pExh;
+    } else if (th < 400.0) {
+      pr[i] = pInt + (pExh - pInt) * blend(th, 370.0, 400.0);
+    } else {
+      pr[i] = pInt;
+    }
+  }
+  return pr;
+}
+
+double netImep_Pa(const std::vector<double>& pr, const pistondyn::mbd::CylinderVolume& vol) {
+  const int n = static_cast<int>(pr.size());
+  double w = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double a = i * kFine_deg, b = (i + 1) * kFine_deg;
+    w += 0.5 * (pr[i] + pr[(i + 1) % n]) * (vol.calcVolume_m3(b * kDeg) - vol.calcVolume_m3(a * kDeg));
+  }
+  return w / vol.displacement_m3();
+}
+
+bool parse(int argc, char** argv, Params& p) {
+  const std::map<std::string, double*> num = {
+      {"--bore-mm", &p.bore_mm},         {"--stroke-mm", &p.stroke_mm},
+      {"--rod-mm", &p.rod_mm},           {"--cr", &p.cr},
+      {"--pin-offset-mm", &p.pinOffset_mm}, {"--crank-offset-mm", &p.crankOffset_mm},
+      {"--k", &p.k},                     {"--p-int-bar", &p.pInt_bar},
+      {"--p-exh-bar", &p.pExh_bar},      {"--ivc-deg", &p.ivc_deg},
+      {"--evo-deg", &p.evo_deg},         {"--soc-deg", &p.soc_deg},
+      {"--burn-deg", &p.burn_deg},       {"--target-imep-kPa", &p.targetImep_kPa},
+      {"--step-deg", &p.step_deg}};
+  for (int i = 1; i < argc; i += 2) {
+    if (i + 1 >= argc) return false;
+    if (std::strcmp(argv[i], "--out") == 0) {
+      p.out = argv[i + 1];
+    } else if (num.count(argv[i]) != 0) {
+      char* end = nullptr;
+      *num.at(argv[i]) = std::strtod(argv[i + 1], &end);
+      if (*end != '\0') return false;
+    } else {
+      return false;
+    }
+  }
+  return p.bore_mm > 0 && p.stroke_mm > 0 && p.rod_mm > 0 && p.cr > 1 && !p.out.empty();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Params p;
+  if (!parse(argc, argv, p)) {
+    std::fprintf(stderr, "make_pressure_curve: bad arguments; see the comment at the top of "
+                         "examples/tools/make_pressure_curve.cpp\n");
+    return 2;
+  }
+  pistondyn::mbd::CrankTrainGeometry g;
+  g.crankRadius_m = 0.5e-3 * p.stroke_mm;
+  g.conrodLength_m = 1e-3 * p.rod_mm;
+  g.pinOffset_m = 1e-3 * p.pinOffset_mm;
+  g.crankOffset_m = 1e-3 * p.crankOffset_mm;
+  const pistondyn::mbd::SliderCrank kin(g);
+  const pistondyn::mbd::CylinderVolume vol(kin, 1e-3 * p.bore_mm, p.cr);
+
+  double q = 0.0;
+  if (std::isfinite(p.targetImep_kPa)) {
+    auto f = [&](double qq) { return netImep_Pa(buildCycle(p, vol, qq), vol) - p.targetImep_kPa * 1e3; };
+    double q0 = 0.0, q1 = 1000.0 * vol.displacement_m3() * 1e3;  // ~ 1 kJ per litre
+    double f0 = f(q0), f1 = f(q1);
+    for (int it = 0; it < 50 && std::abs(f1) > 1e-6; ++it) {
+      const double q2 = q1 - f1 * (q1 - q0) / (f1 - f0);
+      q0 = q1;
+      f0 = f1;
+      q1 = q2;
+      f1 = f(q1);
+    }
+    q = q1;
+  }
+  const std::vector<double> pr = buildCycle(p, vol, q);
+  const double imep = netImep_Pa(pr, vol);
+
+  std::ofstream out(p.out);
+  out << "# Generated by examples/tools/make_pressure_curve (single-zone model, see its header)\n";
+  out << "# command:";
+  for (int i = 1; i < argc; ++i) out << ' ' << argv[i];
+  out << "\n# heat released Q_tot = " << q << " J per cycle; net imep (trapezoid at "
+      << kFine_deg << " deg) = " << imep / 1e3 << " kPa\n";
+  out << "# crank angle 0 deg = firing TDC; absolute pressure\n";
+  out << "crank_angle_deg,pressure_bar\n";
+  const int stride = static_cast<int>(std::lround(p.step_deg / kFine_deg));
+  char buf[64];
+  for (std::size_t i = 0; i < pr.size(); i += static_cast<std::size_t>(stride)) {
+    std::snprintf(buf, sizeof buf, "%.10g,%.8g\n", i * kFine_deg, pr[i] / 1e5);
+    out << buf;
+  }
+  std::printf("make_pressure_curve: wrote %s, Q_tot %.3f J, net imep %.4f kPa\n", p.out.c_str(), q,
+              imep / 1e3);
+  return out ? 0 : 1;
+}

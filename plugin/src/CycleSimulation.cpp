@@ -85,7 +85,7 @@ std::unique_ptr<SimTK::Integrator> makeIntegrator(const SimTK::MultibodySystem& 
 
 }  // namespace
 
-ResultTable CycleSimulation::run(const Progress& progress) {
+ResultTable CycleSimulation::run(const Progress& progress, const RowObserver& observer) {
   const auto wallStart = std::chrono::steady_clock::now();
   const SimTK::MultibodySystem& system = model_.getSystem();
   SimTK::State state = model_.getDefaultState();
@@ -128,6 +128,7 @@ ResultTable CycleSimulation::run(const Progress& progress) {
     }
     const SimTK::State& s = integ->getState();
     system.realize(s, SimTK::Stage::Acceleration);
+    if (observer) observer(s);
     std::vector<double> row;
     row.reserve(table.columns.size());
     calcCrankTrainRow(ct, s, row);

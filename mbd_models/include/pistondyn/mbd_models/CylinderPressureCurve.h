@@ -46,8 +46,9 @@ class CylinderPressureCurve {
 
 // Indicated mean effective pressure [Pa] of the 720 deg cycle: (closed integral of
 // p dV) / V_d, with V(theta) from the slider-crank kinematics. Net imep (includes the
-// gas-exchange loop). The integral is evaluated piecewise on the spline's own
-// intervals with 8-point Gauss-Legendre, exact for the cubic times the smooth dV.
+// gas-exchange loop). The integral is evaluated on the spline's own intervals, split
+// into sub-intervals of at most 1 deg, each with 8-point Gauss-Legendre (the
+// integrand is smooth there: a cubic times the smooth dV/dtheta).
 double calcImep_Pa(const CylinderPressureCurve& pressure, const CylinderVolume& volume);
 
 }  // namespace pistondyn::mbd

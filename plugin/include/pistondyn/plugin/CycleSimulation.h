@@ -55,7 +55,10 @@ class CycleSimulation {
 
   // Progress: called after every row with the fraction done in [0, 1].
   using Progress = std::function<void(double)>;
-  ResultTable run(const Progress& progress = {});
+  // Row observer: called at every output row with the state realized through
+  // Stage::Acceleration (custom outputs, checks), before the row is stored.
+  using RowObserver = std::function<void(const SimTK::State&)>;
+  ResultTable run(const Progress& progress = {}, const RowObserver& observer = {});
   const SimulationStats& getStats() const { return stats_; }
 
   // The crank-train columns listed above, and their values at a state realized

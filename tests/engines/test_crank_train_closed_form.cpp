@@ -1,0 +1,252 @@
+// The Simbody crank train with the ideal-liner guide against closed forms written here,
+// independently of the library: kinematics by implicit differentiation of the loop
+// closure |P - C| = L (the library uses the rod angle instead), TDC found as the root of
+// dy/dphi, side force / conrod force / crank torque from a Newton-Euler free-body
+// balance of piston+pin and rod, and the power balance of the whole model.
+// Run over 720 deg for both example engines (examples/engines/*/engine.yaml).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "pistondyn/cli/EngineDeck.h"
+#include "pistondyn/plugin/CycleSimulation.h"
+
+namespace {
+
+using pistondyn::cli::EngineDeck;
+
+struct V2 {
+  double x, y;
+};
+V2 operator-(V2 a, V2 b) { return {a.x - b.x, a.y - b.y}; }
+V2 operator+(V2 a, V2 b) { return {a.x + b.x, a.y + b.y}; }
+V2 operator*(double k, V2 a) { return {k * a.x, k * a.y}; }
+double cross(V2 a, V2 b) { return a.x * b.y - a.y * b.x; }
+double dot(V2 a, V2 b) { return a.x * b.x + a.y * b.y; }
+
+// Slider-crank with the pin on the line x = e, crank pin C = r(-sin phi, cos phi),
+// crank turning at constant omega. Everything from the loop closure
+// f = (e - Cx)^2 + (y - Cy)^2 - L^2 = 0 and its time derivatives.
+struct ClosedForm {
+  double r, L, e, omega;
+
+  struct Kin {
+    V2 C, Cd, Cdd, P, Pd, Pdd;
+  };
+  Kin at(double phi) const {
+    Kin k;
+    const double s = std::sin(phi), c = std::cos(phi), w = omega;
+    k.C = {-r * s, r * c};
+    k.Cd = {-r * c * w, -r * s * w};
+    k.Cdd = {r * s * w * w, -r * c * w * w};
+    const double y = k.C.y + std::sqrt(L * L - (e - k.C.x) * (e - k.C.x));
+    const double yd = k.Cd.y + (e - k.C.x) * k.Cd.x / (y - k.C.y);
+    const double ydd = k.Cdd.y + ((e - k.C.x) * k.Cdd.x - k.Cd.x * k.Cd.x -
+                                  (yd - k.Cd.y) * (yd - k.Cd.y)) / (y - k.C.y);
+    k.P = {e, y};
+    k.Pd = {0, yd};
+    k.Pdd = {0, ydd};
+    return k;
+  }
+  // TDC: root of dy/dphi (= yd / omega) near phi = 0, by bisection to machine precision.
+  double tdcPhi() const {
+    auto slope = [&](double phi) { return at(phi).Pd.y; };
+    double lo = -0.3, hi = 0.3;  // y rises before TDC (slope > 0) and falls after
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (slope(mid) > 0 ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+  }
+};
+
+// Newton-Euler balance of piston+pin (translating) and rod, constant crank speed.
+struct Loads {
+  double sideForceOnLiner_N, conrodCompression_N, rodTorqueOnCrank_Nm, driveTorque_Nm;
+};
+Loads freeBody(const EngineDeck& d, const ClosedForm::Kin& k, double gasForce_N) {
+  const auto& m = d.engine.mass;
+  const double g = d.engine.gravity_mps2, L = d.engine.geometry.conrodLength_m;
+  const V2 grav{0, -g};
+  const double mpp = m.piston.mass_kg + m.pin.mass_kg, mr = m.conrod.mass_kg;
+  const double lG = m.conrod.comY_m;  // rod COM on its axis (comX = 0 in both decks)
+  const V2 G = k.C + (lG / L) * (k.P - k.C);
+  const V2 aG = k.Cdd + (lG / L) * (k.Pdd - k.Cdd);
+  const double alphaRod = cross(k.P - k.C, k.Pdd - k.Cdd) / (L * L);
+  // Force of rod on pin F = (X, Y): piston y-equation gives Y; rod moment gives X.
+  const double Y = mpp * k.Pdd.y + gasForce_N + mpp * g;
+  const V2 CP = k.C - k.P;
+  const double X =
+      (CP.x * Y + cross(k.C - G, mr * (aG - grav)) - m.conrod.inertiaZZ_kgm2 * alphaRod) / CP.y;
+  const V2 F{X, Y};
+  const V2 Fcr = mr * (aG - grav) + F;  // crank on rod
+  Loads out;
+  out.sideForceOnLiner_N = X;  // liner on piston is -X
+  out.conrodCompression_N = dot(F, (1.0 / L) * (k.P - k.C));
+  out.rodTorqueOnCrank_Nm = cross(k.C, -1.0 * Fcr);
+  // Crank COM at comY along the throw (comX = 0): gravity torque about the axis.
+  const V2 throwDir = (1.0 / d.engine.geometry.crankRadius_m) * k.C;
+  const V2 Gc = m.crank.comY_m * throwDir;
+  out.driveTorque_Nm = -out.rodTorqueOnCrank_Nm - cross(Gc, m.crank.mass_kg * grav);
+  return out;
+}
+
+struct Engine {
+  const char* deck;
+};
+
+class ClosedFormEngines : public ::testing::TestWithParam<Engine> {};
+
+std::string deckPath(const Engine& e) {
+  return std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/" + e.deck + "/engine.yaml";
+}
+
+// "Not near zero": above 1e-3 of the cycle's largest magnitude.
+double maxAbs(const std::vector<double>& v) {
+  double m = 0;
+  for (double x : v) m = std::max(m, std::abs(x));
+  return m;
+}
+
+TEST_P(ClosedFormEngines, KinematicsLoadsAndPowerOver720Degrees) {
+  const EngineDeck deck = pistondyn::cli::loadEngineDeck(deckPath(GetParam()), {});
+  ASSERT_EQ(deck.engine.drive.mode, pistondyn::mbd::CrankDrive::Mode::ConstantSpeed);
+  ASSERT_EQ(deck.engine.pinJoint, pistondyn::mbd::PinJoint::Floating);
+  auto model = pistondyn::cli::buildModel(deck);
+  pistondyn::plugin::SimulationSettings settings = deck.simulation;
+  settings.outputStep_deg = 1.0;
+  settings.cycles = 1;
+
+  // Power balance of the Simbody model at every row: drive + gas + gravity power
+  // = d(kinetic energy)/dt, with the ideal guide doing no work.
+  const auto& ct = model->getCrankTrain();
+  const auto& mass = deck.engine.mass;
+  std::vector<double> powerResidual, drivePower, constraintPower;
+  auto observer = [&](const SimTK::State& s) {
+    const double g = deck.engine.gravity_mps2;
+    double dKE = 0.0, gravityPower = 0.0;
+    const SimTK::MobilizedBody* bodies[] = {&ct.getCrank(), &ct.getConrod(), &ct.getPin(),
+                                            &ct.getPiston()};
+    const pistondyn::mbd::PlanarMassProperties* props[] = {&mass.crank, &mass.conrod, &mass.pin,
+                                                           &mass.piston};
+    for (int b = 0; b < 4; ++b) {
+      const SimTK::Vec3 com(props[b]->comX_m, props[b]->comY_m, 0);
+      const SimTK::Vec3 v = bodies[b]->findStationVelocityInGround(s, com);
+      const SimTK::Vec3 a = bodies[b]->findStationAccelerationInGround(s, com);
+      const double w = bodies[b]->getBodyAngularVelocity(s)[2];
+      const double alpha = bodies[b]->getBodyAngularAcceleration(s)[2];
+      dKE += props[b]->mass_kg * SimTK::dot(v, a) + props[b]->inertiaZZ_kgm2 * w * alpha;
+      gravityPower += -props[b]->mass_kg * g * v[1];
+    }
+    const double theta_deg = ct.getCrankAngle_rad(s) * 180.0 / M_PI;
+    const double area = 0.25 * M_PI * std::pow(deck.engine.piston.bore_m, 2);
+    const double gasForce =
+        (deck.cylinderPressure->calcPressure_Pa(theta_deg) - deck.crankcasePressure_Pa) * area;
+    const SimTK::Vec3 crownVelocity =
+        ct.getPiston().findStationVelocityInGround(s, ct.getCrownCentreInPiston());
+    const double gasPower = -gasForce * crownVelocity[1];
+    const double pDrive = ct.getDriveTorque_Nm(s) * ct.getCrankSpeed_radps(s);
+    drivePower.push_back(pDrive);
+    powerResidual.push_back(pDrive + gasPower + gravityPower - dKE);
+    constraintPower.push_back(model->getMatter().calcConstraintPower(s));
+  };
+
+  pistondyn::plugin::CycleSimulation sim(*model, settings);
+  const auto table = sim.run({}, observer);
+
+  ClosedForm cf{deck.engine.geometry.crankRadius_m, deck.engine.geometry.conrodLength_m,
+                deck.engine.geometry.crankOffset_m + deck.engine.geometry.pinOffset_m,
+                deck.engine.drive.speed_radps};
+  const double phiTdc = cf.tdcPhi();
+  const auto angle = table.column("crank_angle_deg");
+  const auto y = table.column("piston_y_m"), vy = table.column("piston_vy_mps"),
+             ay = table.column("piston_ay_mps2");
+  const auto side = table.column("side_force_N"), rod = table.column("conrod_force_N"),
+             torque = table.column("crank_torque_Nm"), drive = table.column("drive_torque_Nm"),
+             gas = table.column("gas_force_N");
+  ASSERT_EQ(angle.size(), 721u);
+
+  std::vector<double> yRef, vRef, aRef, sideRef, rodRef, torqueRef, driveRef;
+  for (std::size_t i = 0; i < angle.size(); ++i) {
+    const auto k = cf.at(angle[i] * M_PI / 180.0 + phiTdc);
+    yRef.push_back(k.P.y);
+    vRef.push_back(k.Pd.y);
+    aRef.push_back(k.Pdd.y);
+    const Loads l = freeBody(deck, k, gas[i]);
+    sideRef.push_back(l.sideForceOnLiner_N);
+    rodRef.push_back(l.conrodCompression_N);
+    torqueRef.push_back(l.rodTorqueOnCrank_Nm);
+    driveRef.push_back(l.driveTorque_Nm);
+  }
+  // The tolerances: |dy| <= 1e-9 m; v, a, side force within 1e-6 relative where
+  // not near zero (|ref| > 1e-3 of the cycle maximum). Conrod force and torques likewise.
+  auto checkRelative = [&](const char* what, const std::vector<double>& got,
+                           const std::vector<double>& ref) {
+    const double scale = maxAbs(ref);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < ref.size(); ++i) {
+      if (std::abs(ref[i]) < 1e-3 * scale) continue;
+      worst = std::max(worst, std::abs(got[i] - ref[i]) / std::abs(ref[i]));
+    }
+    RecordProperty(std::string("max_rel_error_") + what, std::to_string(worst));
+    EXPECT_LE(worst, 1e-6) << what;
+    std::printf("  %-16s max relative error %.3e\n", what, worst);
+  };
+  double worstY = 0.0;
+  for (std::size_t i = 0; i < y.size(); ++i) worstY = std::max(worstY, std::abs(y[i] - yRef[i]));
+  std::printf("  %-16s max |error| %.3e m\n", "piston_y", worstY);
+  EXPECT_LE(worstY, 1e-9);
+  checkRelative("piston_vy", vy, vRef);
+  checkRelative("piston_ay", ay, aRef);
+  checkRelative("side_force", side, sideRef);
+  checkRelative("conrod_force", rod, rodRef);
+  checkRelative("crank_torque", torque, torqueRef);
+  checkRelative("drive_torque", drive, driveRef);
+
+  const double powerScale = maxAbs(drivePower);
+  const double worstPower = maxAbs(powerResidual) / powerScale;
+  std::printf("  power balance: max |residual| / max |drive power| = %.3e\n", worstPower);
+  EXPECT_LE(worstPower, 1e-6);
+  EXPECT_LE(maxAbs(constraintPower) / powerScale, 1e-6) << "the ideal guide must do no work";
+}
+
+INSTANTIATE_TEST_SUITE_P(ExampleEngines, ClosedFormEngines,
+                         ::testing::Values(Engine{"briggs_stratton_500"},
+                                           Engine{"gasoline_1400_2000rpm"}),
+                         [](const auto& paramInfo) { return std::string(paramInfo.param.deck); });
+
+// Over a whole cycle at constant speed the rod's mean torque on the crank delivers the
+// indicated work: mean torque = imep * V_d / (4 pi) (inertia and gravity torques
+// average to zero over a period). imep from the pressure table, torque from Simbody.
+TEST(CycleEnergy, MeanCrankTorqueEqualsIndicatedWork) {
+  const EngineDeck deck = pistondyn::cli::loadEngineDeck(
+      std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm/engine.yaml", {});
+  auto model = pistondyn::cli::buildModel(deck);
+  pistondyn::plugin::SimulationSettings settings = deck.simulation;
+  settings.outputStep_deg = 0.5;
+  const auto table = pistondyn::plugin::CycleSimulation(*model, settings).run();
+  const auto torque = table.column("crank_torque_Nm");
+  double mean = 0.0;  // periodic trapezoid: drop the repeated last row
+  for (std::size_t i = 0; i + 1 < torque.size(); ++i) mean += torque[i];
+  mean /= static_cast<double>(torque.size() - 1);
+  const pistondyn::mbd::SliderCrank kin(deck.engine.geometry);
+  const pistondyn::mbd::CylinderVolume vol(kin, deck.engine.piston.bore_m,
+                                           deck.engine.geometry.compressionRatio);
+  const double expected = pistondyn::cli::calcDeckImep_Pa(deck) * vol.displacement_m3() / (4 * M_PI);
+  std::printf("  mean crank torque %.9f N m, imep * Vd / 4pi %.9f N m\n", mean, expected);
+  EXPECT_NEAR(mean, expected, 1e-6 * std::abs(expected));
+}
+
+// The deck's pressure table reproduces the thesis' imep (598 kPa) within 0.5 %.
+TEST(CycleEnergy, FiredTableImepMatchesThesisValue) {
+  const EngineDeck deck = pistondyn::cli::loadEngineDeck(
+      std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm/engine.yaml", {});
+  ASSERT_TRUE(deck.statedImep_Pa.has_value());
+  EXPECT_DOUBLE_EQ(*deck.statedImep_Pa, 598e3);
+  EXPECT_NEAR(pistondyn::cli::calcDeckImep_Pa(deck), 598e3, 0.005 * 598e3);
+}
+
+}  // namespace

@@ -1,0 +1,264 @@
+// The command-line edge: every class of bad input named in issue 2 is rejected before
+// any simulation, with a message naming the file, the key or line, and what is wrong;
+// the program exits non-zero and leaves no result files. Outputs round-trip doubles.
+
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "pistondyn/cli/DeckError.h"
+#include "pistondyn/cli/EngineDeck.h"
+#include "pistondyn/cli/ResultWriters.h"
+#include "pistondyn/cli/RunDeck.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kEngineDir =
+    std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm";
+const std::string kTable = "cylinder_pressure_fired_imep598kPa.csv";
+
+std::string readFile(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// A scratch copy of the gasoline engine's deck and table, edited per test.
+class ScratchDeck : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("pistondyn_cli_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    fs::copy_file(kEngineDir + "/engine.yaml", dir_ / "engine.yaml");
+    fs::copy_file(kEngineDir + "/" + kTable, dir_ / kTable);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string deck() const { return (dir_ / "engine.yaml").string(); }
+  // Replace the first occurrence of `from` in the deck (the edit must apply).
+  void editDeck(const std::string& from, const std::string& to) {
+    std::string text = readFile(deck());
+    const auto pos = text.find(from);
+    ASSERT_NE(pos, std::string::npos) << from;
+    text.replace(pos, from.size(), to);
+    std::ofstream(deck()) << text;
+  }
+  void writeTable(const std::string& text) { std::ofstream(dir_ / kTable) << text; }
+  int lineOf(const std::string& needle) const {
+    std::ifstream in(deck());
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+      if (line.find(needle) != std::string::npos) return n;
+    }
+    return -1;
+  }
+  // The DeckError message of loading the deck ("" if it loads).
+  std::string rejection(const std::vector<std::string>& overrides = {}) const {
+    try {
+      pistondyn::cli::loadEngineDeck(deck(), overrides);
+    } catch (const pistondyn::cli::DeckError& e) {
+      return e.what();
+    }
+    return "";
+  }
+  // Runs the real program; returns its exit code.
+  int runProgram(const std::string& args, const fs::path& out) const {
+    const std::string cmd = std::string(PISTONDYN_EXE) + " run " + deck() + " --out " +
+                            out.string() + " --quiet " + args + " > " +
+                            (dir_ / "stdout.txt").string() + " 2> " +
+                            (dir_ / "stderr.txt").string();
+    const int status = std::system(cmd.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  std::string programStderr() const { return readFile(dir_ / "stderr.txt"); }
+
+  fs::path dir_;
+};
+
+// Message shape: "<file>:<line>: <key>: <problem>".
+void expectNames(const std::string& msg, const std::string& file, int line,
+                 const std::string& key, const std::string& problem) {
+  EXPECT_NE(msg.find(file + ":" + std::to_string(line) + ": " + key), std::string::npos) << msg;
+  EXPECT_NE(msg.find(problem), std::string::npos) << msg;
+}
+
+TEST_F(ScratchDeck, TheUneditedDeckLoads) { EXPECT_EQ(rejection(), ""); }
+
+TEST_F(ScratchDeck, MissingKey) {
+  editDeck("  bore_mm: 74.5               # [V]\n", "");
+  const std::string m = rejection();
+  EXPECT_NE(m.find(deck()), std::string::npos) << m;
+  EXPECT_NE(m.find("geometry.bore_mm: missing key"), std::string::npos) << m;
+}
+
+TEST_F(ScratchDeck, UnknownKey) {
+  editDeck("  stroke_mm: 80.0", "  strok_mm: 80.0");
+  const std::string m = rejection();
+  expectNames(m, deck(), lineOf("strok_mm"), "geometry.strok_mm", "unknown key");
+  EXPECT_NE(m.find("geometry.stroke_mm: missing key"), std::string::npos) << m;
+}
+
+TEST_F(ScratchDeck, NegativeLength) {
+  editDeck("bore_mm: 74.5", "bore_mm: -74.5");
+  expectNames(rejection(), deck(), lineOf("bore_mm"), "geometry.bore_mm", "must be positive");
+}
+
+TEST_F(ScratchDeck, ZeroLength) {
+  editDeck("skirt_length_mm: 30.0", "skirt_length_mm: 0");
+  expectNames(rejection(), deck(), lineOf("skirt_length_mm"), "piston.skirt_length_mm",
+              "must be positive");
+}
+
+TEST_F(ScratchDeck, RodShorterThanCrankRadius) {
+  editDeck("conrod_length_mm: 140.0", "conrod_length_mm: 35.0");
+  expectNames(rejection(), deck(), lineOf("conrod_length_mm"), "geometry.conrod_length_mm",
+              "the rod must be longer than half the stroke");
+}
+
+TEST_F(ScratchDeck, NonNumericValue) {
+  editDeck("speed_rpm: 2000", "speed_rpm: fast");
+  expectNames(rejection(), deck(), lineOf("speed_rpm"), "drive.speed_rpm",
+              "'fast' is not a number");
+}
+
+TEST_F(ScratchDeck, BadChoice) {
+  editDeck("joint: floating", "joint: welded");
+  expectNames(rejection(), deck(), lineOf("joint:"), "pin.joint", "not one of");
+}
+
+TEST_F(ScratchDeck, AllProblemsAreReportedTogether) {
+  editDeck("bore_mm: 74.5", "bore_mm: -1");
+  editDeck("speed_rpm: 2000", "speed_rpm: x");
+  const std::string m = rejection();
+  EXPECT_NE(m.find("geometry.bore_mm"), std::string::npos);
+  EXPECT_NE(m.find("drive.speed_rpm"), std::string::npos);
+}
+
+TEST_F(ScratchDeck, PressureTableNotIncreasing) {
+  writeTable("crank_angle_deg,pressure_bar\n0,1\n180,1\n170,1\n540,1\n");
+  const std::string m = rejection();
+  EXPECT_NE(m.find((dir_ / kTable).string() + ":4: crank angle 170"), std::string::npos) << m;
+  EXPECT_NE(m.find("angles must increase"), std::string::npos) << m;
+}
+
+TEST_F(ScratchDeck, PressureTableNotCoveringTheCycle) {
+  writeTable("# partial\ncrank_angle_deg,pressure_bar\n0,1\n90,2\n180,3\n270,2\n360,1\n");
+  const std::string m = rejection();
+  EXPECT_NE(m.find((dir_ / kTable).string()), std::string::npos) << m;
+  EXPECT_NE(m.find("does not cover the 720 deg cycle"), std::string::npos) << m;
+}
+
+TEST_F(ScratchDeck, PressureTableNonNumericAndBadHeader) {
+  writeTable("crank_angle_deg,pressure_bar\n0,1\n90,abc\n");
+  EXPECT_NE(rejection().find(":3: pressure 'abc' is not a number"), std::string::npos);
+  writeTable("angle,pressure\n0,1\n");
+  EXPECT_NE(rejection().find(":1: expected the header"), std::string::npos);
+}
+
+TEST_F(ScratchDeck, StatedImepDisagreeingWithTheTable) {
+  editDeck("stated_imep_kPa: 598.0", "stated_imep_kPa: 650.0");
+  const std::string m = rejection();
+  EXPECT_NE(m.find("gas.stated_imep_kPa"), std::string::npos) << m;
+  EXPECT_NE(m.find("tolerance 0.5 %"), std::string::npos) << m;
+}
+
+TEST_F(ScratchDeck, InvalidYamlNamesTheLine) {
+  editDeck("  stroke_mm: 80.0", "  stroke_mm: [80.0");
+  const std::string m = rejection();
+  EXPECT_NE(m.find(deck() + ":"), std::string::npos) << m;
+  EXPECT_NE(m.find("not valid YAML"), std::string::npos) << m;
+}
+
+TEST_F(ScratchDeck, OverridesAreAppliedAndBadOnesNamed) {
+  const auto d = pistondyn::cli::loadEngineDeck(deck(), {"drive.speed_rpm=3000"});
+  EXPECT_DOUBLE_EQ(d.engine.drive.speed_radps, 3000 * M_PI / 30);
+  EXPECT_NE(rejection({"drive.sped_rpm=3000"}).find("--set drive.sped_rpm: unknown key"),
+            std::string::npos);
+  EXPECT_NE(rejection({"geometry.bore_mm=-3"}).find("--set geometry.bore_mm: must be positive"),
+            std::string::npos);
+  EXPECT_NE(rejection({"geometry"}).find("expected key.path=value"), std::string::npos);
+}
+
+// Process level: exit code 1, a message naming the key, and no result files.
+TEST_F(ScratchDeck, ProgramRejectsBadInputWithoutWritingAnything) {
+  editDeck("bore_mm: 74.5", "bore_mm: -74.5");
+  const fs::path out = dir_ / "results";
+  EXPECT_EQ(runProgram("", out), 1);
+  EXPECT_NE(programStderr().find("geometry.bore_mm: must be positive"), std::string::npos)
+      << programStderr();
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(ScratchDeck, ProgramUsageErrorsExitWithTwo) {
+  const std::string cmd = std::string(PISTONDYN_EXE) + " run " + deck() + " > /dev/null 2>&1";
+  const int status = std::system(cmd.c_str());
+  EXPECT_EQ(WEXITSTATUS(status), 2);  // no --out
+}
+
+// Process level, good deck: required columns with units, TDC convention stated,
+// summary.json with SI inputs, imep and wall time; --set reaches the run.
+TEST_F(ScratchDeck, ProgramWritesCycleAndSummary) {
+  const fs::path out = dir_ / "results";
+  ASSERT_EQ(runProgram("--set simulation.output_step_deg=2 --set drive.speed_rpm=2500", out), 0)
+      << programStderr();
+  const std::string csv = readFile(out / "cycle.csv");
+  EXPECT_NE(csv.find("crank angle 0 deg = firing TDC"), std::string::npos);
+  for (const char* col : {"crank_angle_deg", "piston_y_m", "piston_vy_mps", "piston_ay_mps2",
+                          "gas_force_N", "side_force_N", "conrod_force_N", "crank_torque_Nm"}) {
+    EXPECT_TRUE(std::regex_search(csv, std::regex(std::string("(^|\n|,)") + col + "(,|\n)")))
+        << col;
+  }
+  const YAML::Node summary = YAML::LoadFile((out / "summary.json").string());
+  EXPECT_NEAR(summary["inputs"]["drive"]["speed_rad_per_s"].as<double>(), 2500 * M_PI / 30, 1e-9);
+  EXPECT_NEAR(summary["inputs"]["geometry"]["bore_m"].as<double>(), 0.0745, 1e-15);
+  EXPECT_NEAR(summary["results"]["imep_kPa"].as<double>(), 598.0, 0.005 * 598.0);
+  EXPECT_GT(summary["wall_time_s"].as<double>(), 0.0);
+  EXPECT_NE(summary["crank_angle_convention"].as<std::string>().find("firing TDC"),
+            std::string::npos);
+  EXPECT_EQ(summary["overrides"].size(), 2u);
+  // No temporary files left next to the results.
+  for (const auto& entry : fs::directory_iterator(out)) {
+    EXPECT_TRUE(entry.path().filename() == "cycle.csv" || entry.path().filename() == "summary.json")
+        << entry.path();
+  }
+}
+
+// Results are written with the shortest text that reads back to the same double.
+TEST(ResultWriters, NumbersRoundTrip) {
+  std::mt19937_64 rng(12345);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int i = 0; i < 20000; ++i) {
+    const double x = unit(rng) * std::pow(10.0, static_cast<int>(rng() % 40) - 20);
+    EXPECT_EQ(std::strtod(pistondyn::cli::formatNumber(x).c_str(), nullptr), x);
+  }
+  // A metre-valued position keeps sub-nanometre resolution.
+  const double y = 0.179999305554216;
+  EXPECT_EQ(std::strtod(pistondyn::cli::formatNumber(y + 3e-13).c_str(), nullptr), y + 3e-13);
+}
+
+TEST(ResultWriters, AtomicWriteLeavesNothingOnFailure) {
+  const fs::path dir = fs::temp_directory_path() / ("pistondyn_atomic_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "cycle.csv");  // a folder where a file must go: rename fails
+  EXPECT_THROW(pistondyn::cli::writeFilesAtomically(dir.string(),
+                                                    {{"summary.json", "{}"}, {"cycle.csv", "x"}}),
+               std::runtime_error);
+  EXPECT_FALSE(fs::exists(dir / ".summary.json.partial"));
+  EXPECT_FALSE(fs::exists(dir / ".cycle.csv.partial"));
+  fs::remove_all(dir);
+}
+
+}  // namespace

@@ -28,6 +28,14 @@ void checkFinite(const char* name, double value) {
   }
 }
 
+void checkPositive(const char* name, double value) {
+  if (!(value > 0.0)) {
+    std::ostringstream msg;
+    msg << name << " = " << value << " must be > 0";
+    fail(msg.str());
+  }
+}
+
 void checkAboveAbsoluteZero(const char* name, double temperature_degC) {
   if (!(temperature_degC > -kZeroCelsius_K)) {
     std::ostringstream msg;
@@ -65,16 +73,8 @@ Oil::Oil(const OilSpec& spec) : spec_(spec) {
   }
   const double nu1_cSt = spec.kinematicViscosity1_m2ps / kM2psPerCSt;
   const double nu2_cSt = spec.kinematicViscosity2_m2ps / kM2psPerCSt;
-  if (!(spec.kinematicViscosity1_m2ps > 0.0)) {
-    std::ostringstream msg;
-    msg << "kinematicViscosity1_m2ps = " << spec.kinematicViscosity1_m2ps << " must be > 0";
-    fail(msg.str());
-  }
-  if (!(spec.kinematicViscosity2_m2ps > 0.0)) {
-    std::ostringstream msg;
-    msg << "kinematicViscosity2_m2ps = " << spec.kinematicViscosity2_m2ps << " must be > 0";
-    fail(msg.str());
-  }
+  checkPositive("kinematicViscosity1_m2ps", spec.kinematicViscosity1_m2ps);
+  checkPositive("kinematicViscosity2_m2ps", spec.kinematicViscosity2_m2ps);
   if (!(nu2_cSt < nu1_cSt)) {
     std::ostringstream msg;
     msg << "kinematicViscosity2_m2ps = " << spec.kinematicViscosity2_m2ps
@@ -88,11 +88,7 @@ Oil::Oil(const OilSpec& spec) : spec_(spec) {
         << " is below 2e-6 m^2/s, the lower limit of the ASTM D341 Walther form";
     fail(msg.str());
   }
-  if (!(spec.density_kgpm3 > 0.0)) {
-    std::ostringstream msg;
-    msg << "density_kgpm3 = " << spec.density_kgpm3 << " must be > 0";
-    fail(msg.str());
-  }
+  checkPositive("density_kgpm3", spec.density_kgpm3);
   if (!(spec.thermalExpansion_perK >= 0.0 &&
         spec.thermalExpansion_perK < kMaxThermalExpansion_perK)) {
     std::ostringstream msg;
@@ -160,19 +156,21 @@ double Oil::calcKinematicViscosity_m2ps(double temperature_degC) const {
   return kinematicViscosity_cSt(temperature_degC + kZeroCelsius_K) * kM2psPerCSt;
 }
 
-double Oil::calcDensity_kgpm3(double temperature_degC) const {
-  checkTemperature("calcDensity_kgpm3", temperature_degC);
+double Oil::density_kgpm3(double temperature_degC) const {
   return spec_.density_kgpm3 /
          (1.0 + spec_.thermalExpansion_perK *
                     (temperature_degC - spec_.densityReferenceTemperature_degC));
 }
 
+double Oil::calcDensity_kgpm3(double temperature_degC) const {
+  checkTemperature("calcDensity_kgpm3", temperature_degC);
+  return density_kgpm3(temperature_degC);
+}
+
 double Oil::calcDynamicViscosity_Pas(double temperature_degC) const {
   checkTemperature("calcDynamicViscosity_Pas", temperature_degC);
-  const double rho =
-      spec_.density_kgpm3 / (1.0 + spec_.thermalExpansion_perK *
-                                       (temperature_degC - spec_.densityReferenceTemperature_degC));
-  return rho * kinematicViscosity_cSt(temperature_degC + kZeroCelsius_K) * kM2psPerCSt;
+  return density_kgpm3(temperature_degC) *
+         kinematicViscosity_cSt(temperature_degC + kZeroCelsius_K) * kM2psPerCSt;
 }
 
 double Oil::calcDynamicViscosityAtKelvin_Pas(double temperature_K) const {

@@ -131,13 +131,18 @@ constexpr double kExpFitFloor = 0.02;
 // 1 - C exp(-r H), used from Hlo = max(Hmin, H where the fit equals kExpFitFloor);
 // below Hlo: phi(Hlo) (H / Hlo)^k with k = Hlo phi'(Hlo) / phi(Hlo), which matches value
 // and slope at Hlo, is positive, increasing, and tends to 0 as H -> 0.
+// The fit rises with H, so "H >= Hlo" is "H >= Hmin and fit(H) >= floor"; testing it that
+// way keeps the logarithm for Hlo off the common path.
 double exponentialFitWithContinuation(double C, double r, double Hmin, double H) {
+  if (H >= Hmin) {
+    const double phi = 1.0 - C * std::exp(-r * H);
+    if (phi >= kExpFitFloor) {
+      return phi;
+    }
+  }
   double Hlo = Hmin;
   if (C > 1.0 - kExpFitFloor) {
     Hlo = std::max(Hmin, std::log(C / (1.0 - kExpFitFloor)) / r);
-  }
-  if (H >= Hlo) {
-    return 1.0 - C * std::exp(-r * H);
   }
   const double e = std::exp(-r * Hlo);
   const double phiLo = 1.0 - C * e;
@@ -151,22 +156,22 @@ double powerFitHeld(double C, double r, double Hmin, double H) {
   return 1.0 + C * std::pow(std::max(H, Hmin), -r);
 }
 
-void checkH(const char* function, double H) {
-  if (!std::isfinite(H) || !(H > 0.0)) {
+// Throws std::invalid_argument unless value is positive and finite.
+void checkPositiveFinite(const char* function, const char* what, double value) {
+  if (!std::isfinite(value) || !(value > 0.0)) {
     std::ostringstream msg;
-    msg << "patir_cheng::" << function << ": film parameter H = " << H
+    msg << "patir_cheng::" << function << ": " << what << " = " << value
         << " must be positive and finite";
     throw std::invalid_argument(msg.str());
   }
 }
 
+void checkH(const char* function, double H) {
+  checkPositiveFinite(function, "film parameter H", H);
+}
+
 void checkGamma(const char* function, double gamma) {
-  if (!std::isfinite(gamma) || !(gamma > 0.0)) {
-    std::ostringstream msg;
-    msg << "patir_cheng::" << function << ": Peklenik number gamma = " << gamma
-        << " must be positive and finite";
-    throw std::invalid_argument(msg.str());
-  }
+  checkPositiveFinite(function, "Peklenik number gamma", gamma);
 }
 
 }  // namespace

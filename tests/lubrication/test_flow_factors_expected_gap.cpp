@@ -9,21 +9,15 @@
 #include <stdexcept>
 
 #include "pistondyn/lubrication/PatirChengExpectedGap.h"
+#include "test_flow_factors_quadrature.h"
 
 using pistondyn::lubrication::calcExpectedGap;
 using pistondyn::lubrication::ExpectedGap;
 using pistondyn::lubrication::ExpectedGapForm;
 
-namespace {
+using pistondyn::lubrication::test::simpson;
 
-double simpson(const std::function<double(double)>& f, double a, double b, int n) {
-  const double h = (b - a) / n;
-  double s = f(a) + f(b);
-  for (int i = 1; i < n; ++i) {
-    s += f(a + i * h) * (i % 2 == 1 ? 4.0 : 2.0);
-  }
-  return s * h / 3.0;
-}
+namespace {
 
 constexpr double kSigma = 0.4e-6;  // 0.4 um composite roughness
 

@@ -18,8 +18,11 @@
 #include <vector>
 
 #include "pistondyn/lubrication/PatirChengFactors.h"
+#include "test_flow_factors_quadrature.h"
 
 namespace pc = pistondyn::lubrication::patir_cheng;
+
+using pistondyn::lubrication::test::simpson;
 
 namespace {
 
@@ -27,16 +30,6 @@ const double kGammas[7] = {1.0 / 9.0, 1.0 / 6.0, 1.0 / 3.0, 1.0, 3.0, 6.0, 9.0};
 
 // Evaluating the same formula in another order differs by a few ulps only.
 constexpr double kRoundoff = 1e-13;
-
-// Composite Simpson rule on [a, b] with n (even) panels.
-double simpson(const std::function<double(double)>& f, double a, double b, int n) {
-  const double h = (b - a) / n;
-  double s = f(a) + f(b);
-  for (int i = 1; i < n; ++i) {
-    s += f(a + i * h) * (i % 2 == 1 ? 4.0 : 2.0);
-  }
-  return s * h / 3.0;
-}
 
 }  // namespace
 

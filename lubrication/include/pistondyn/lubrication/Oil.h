@@ -72,7 +72,8 @@ class Oil {
 
  private:
   void checkTemperature(const char* function, double temperature_degC) const;
-  double kinematicViscosity_cSt(double temperature_K) const;
+  double kinematicViscosity_cSt(double temperature_K) const;  // unchecked
+  double density_kgpm3(double temperature_degC) const;        // unchecked
 
   OilSpec spec_;
   double waltherA_ = 0.0;

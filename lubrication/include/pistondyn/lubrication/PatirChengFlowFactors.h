@@ -1,0 +1,84 @@
+#pragma once
+// Patir & Cheng flow-factor model for two rough surfaces: the FlowFactorModel a film
+// solver uses for the average Reynolds equation and for the mean shear stress.
+//
+// Surface 1 is the surface that moves with the relative sliding velocity U with respect
+// to surface 2 (FlowFactorModel.h); for the skirt-liner film that is the piston skirt,
+// surface 2 the liner. Only the shear flow factor and phi_fs depend on which surface is
+// which: Phi_s = Vr1 Phi_s(H, gamma1) - Vr2 Phi_s(H, gamma2) with the variance ratios
+// Vr_i = Rq_i^2 / sigma^2 (Patir & Cheng 1979), and the same for phi_fs. Swapping the
+// surfaces flips their sign.
+//
+// The model is immutable after construction and safe to share between threads.
+
+#include <optional>
+
+#include "pistondyn/lubrication/FlowFactorModel.h"
+#include "pistondyn/lubrication/PatirChengExpectedGap.h"
+#include "pistondyn/lubrication/PatirChengFactors.h"
+#include "pistondyn/lubrication/PatirChengRows.h"
+
+namespace pistondyn::lubrication {
+
+struct PatirChengParameters {
+  double rq1_m = 0.0;  // RMS roughness Rq of surface 1 (moving: skirt) [m], >= 0, default 0
+  double rq2_m = 0.0;  // RMS roughness Rq of surface 2 (stationary: liner) [m], >= 0, default 0
+  // Peklenik number gamma = lambda_sliding / lambda_cross of each surface [-], > 0,
+  // default 1 (isotropic). Used for Phi_s and phi_fs.
+  double peklenik1 = 1.0;
+  double peklenik2 = 1.0;
+  // Peklenik number of the composite roughness h1 + h2 [-], > 0, used for phi_x, phi_y
+  // and phi_fp. Unset (default): taken as peklenik1, which then must equal peklenik2 —
+  // for differing surfaces the composite's gamma depends on the correlation functions
+  // and must be given.
+  std::optional<double> peklenikComposite;
+  ExpectedGapForm expectedGapForm = ExpectedGapForm::kGaussian;  // default Gaussian
+  // How phi_x, phi_y are evaluated between the tabulated gamma; default table + ln(gamma).
+  patir_cheng::PressureFlowGammaModel pressureFlowGammaModel =
+      patir_cheng::PressureFlowGammaModel::kTableLogGamma;
+};
+
+class PatirChengFlowFactors final : public FlowFactorModel {
+ public:
+  // Builds the model.
+  // Inputs:
+  //   parameters  see PatirChengParameters
+  // Throws std::invalid_argument naming the member for a negative or non-finite Rq, a
+  // non-positive or non-finite Peklenik number, or an unset peklenikComposite with
+  // peklenik1 != peklenik2. Rq1 = Rq2 = 0 is allowed: the model then returns the smooth
+  // (plain Reynolds) factors.
+  explicit PatirChengFlowFactors(const PatirChengParameters& parameters);
+
+  // Factors at one node.
+  // Inputs:
+  //   h_m  nominal gap, finite and > 0 [m]
+  // Outputs (NodeFlowFactors, H = h / sigma):
+  //   phiPressureSliding = phi_x(H, gammaC), phiPressureCross = phi_x(H, 1/gammaC);
+  //   sigmaPhiS_m = sigma (Vr1 Phi_s(H, gamma1) - Vr2 Phi_s(H, gamma2)) [m];
+  //   expectedGap_m, dExpectedGap_dh from calcExpectedGap with the chosen form;
+  //   phiF = phi_f(H); phiFs = Vr1 Phi_fs(H, gamma1) - Vr2 Phi_fs(H, gamma2);
+  //   phiFp = phi_fp(H, gammaC).
+  // Throws std::invalid_argument if h_m is not positive and finite.
+  NodeFlowFactors calcFactors(double h_m) const override;
+
+  // sqrt(Rq1^2 + Rq2^2) [m].
+  double compositeSigma_m() const override { return sigma_m_; }
+
+  const PatirChengParameters& getParameters() const { return parameters_; }
+  // Peklenik number used for phi_x, phi_y and phi_fp [-].
+  double getCompositePeklenik() const { return gammaComposite_; }
+
+ private:
+  PatirChengParameters parameters_;
+  double sigma_m_ = 0.0;
+  double varianceRatio1_ = 0.0;  // Rq1^2 / sigma^2
+  double varianceRatio2_ = 0.0;  // Rq2^2 / sigma^2
+  double gammaComposite_ = 1.0;
+  // Interpolation brackets in ln(gamma), fixed at construction.
+  patir_cheng::detail::GammaBracket bracketSliding_;  // gammaC
+  patir_cheng::detail::GammaBracket bracketCross_;    // 1 / gammaC
+  patir_cheng::detail::GammaBracket bracket1_;        // gamma1
+  patir_cheng::detail::GammaBracket bracket2_;        // gamma2
+};
+
+}  // namespace pistondyn::lubrication

@@ -1,0 +1,186 @@
+#include "pistondyn/lubrication/Oil.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace pistondyn::lubrication {
+
+namespace {
+
+constexpr double kZeroCelsius_K = 273.15;
+constexpr double kWaltherShift_cSt = 0.7;         // ASTM D341, nu >= 2 cSt
+constexpr double kWaltherMinViscosity_cSt = 2.0;  // lower limit of the simple form
+constexpr double kM2psPerCSt = 1e-6;
+constexpr double kMaxThermalExpansion_perK = 2e-3;
+
+[[noreturn]] void fail(const std::string& what) {
+  throw std::invalid_argument("Oil: " + what);
+}
+
+void checkFinite(const char* name, double value) {
+  if (!std::isfinite(value)) {
+    std::ostringstream msg;
+    msg << name << " = " << value << " must be finite";
+    fail(msg.str());
+  }
+}
+
+void checkPositive(const char* name, double value) {
+  if (!(value > 0.0)) {
+    std::ostringstream msg;
+    msg << name << " = " << value << " must be > 0";
+    fail(msg.str());
+  }
+}
+
+void checkAboveAbsoluteZero(const char* name, double temperature_degC) {
+  if (!(temperature_degC > -kZeroCelsius_K)) {
+    std::ostringstream msg;
+    msg << name << " = " << temperature_degC << " degC is not above absolute zero";
+    fail(msg.str());
+  }
+}
+
+double loglog(double nu_cSt) {
+  return std::log10(std::log10(nu_cSt + kWaltherShift_cSt));
+}
+
+}  // namespace
+
+Oil::Oil(const OilSpec& spec) : spec_(spec) {
+  checkFinite("temperature1_degC", spec.temperature1_degC);
+  checkFinite("temperature2_degC", spec.temperature2_degC);
+  checkFinite("kinematicViscosity1_m2ps", spec.kinematicViscosity1_m2ps);
+  checkFinite("kinematicViscosity2_m2ps", spec.kinematicViscosity2_m2ps);
+  checkFinite("density_kgpm3", spec.density_kgpm3);
+  checkFinite("densityReferenceTemperature_degC", spec.densityReferenceTemperature_degC);
+  checkFinite("thermalExpansion_perK", spec.thermalExpansion_perK);
+  checkFinite("minTemperature_degC", spec.minTemperature_degC);
+  checkFinite("maxTemperature_degC", spec.maxTemperature_degC);
+  checkAboveAbsoluteZero("temperature1_degC", spec.temperature1_degC);
+  checkAboveAbsoluteZero("densityReferenceTemperature_degC", spec.densityReferenceTemperature_degC);
+  checkAboveAbsoluteZero("minTemperature_degC", spec.minTemperature_degC);
+
+  if (!(spec.temperature2_degC > spec.temperature1_degC)) {
+    std::ostringstream msg;
+    msg << "temperature2_degC = " << spec.temperature2_degC
+        << " must be greater than temperature1_degC = " << spec.temperature1_degC
+        << " (give the (T, nu) points in order of increasing temperature)";
+    fail(msg.str());
+  }
+  const double nu1_cSt = spec.kinematicViscosity1_m2ps / kM2psPerCSt;
+  const double nu2_cSt = spec.kinematicViscosity2_m2ps / kM2psPerCSt;
+  checkPositive("kinematicViscosity1_m2ps", spec.kinematicViscosity1_m2ps);
+  checkPositive("kinematicViscosity2_m2ps", spec.kinematicViscosity2_m2ps);
+  if (!(nu2_cSt < nu1_cSt)) {
+    std::ostringstream msg;
+    msg << "kinematicViscosity2_m2ps = " << spec.kinematicViscosity2_m2ps
+        << " at the higher temperature must be below kinematicViscosity1_m2ps = "
+        << spec.kinematicViscosity1_m2ps << " (viscosity must decrease with temperature)";
+    fail(msg.str());
+  }
+  if (nu2_cSt < kWaltherMinViscosity_cSt) {
+    std::ostringstream msg;
+    msg << "kinematicViscosity2_m2ps = " << spec.kinematicViscosity2_m2ps
+        << " is below 2e-6 m^2/s, the lower limit of the ASTM D341 Walther form";
+    fail(msg.str());
+  }
+  checkPositive("density_kgpm3", spec.density_kgpm3);
+  if (!(spec.thermalExpansion_perK >= 0.0 &&
+        spec.thermalExpansion_perK < kMaxThermalExpansion_perK)) {
+    std::ostringstream msg;
+    msg << "thermalExpansion_perK = " << spec.thermalExpansion_perK << " must be in [0, "
+        << kMaxThermalExpansion_perK << ")";
+    fail(msg.str());
+  }
+  if (!(spec.maxTemperature_degC > spec.minTemperature_degC)) {
+    std::ostringstream msg;
+    msg << "maxTemperature_degC = " << spec.maxTemperature_degC
+        << " must be greater than minTemperature_degC = " << spec.minTemperature_degC;
+    fail(msg.str());
+  }
+
+  // Walther line through both points.
+  const double logT1 = std::log10(spec.temperature1_degC + kZeroCelsius_K);
+  const double logT2 = std::log10(spec.temperature2_degC + kZeroCelsius_K);
+  const double y1 = loglog(nu1_cSt);
+  const double y2 = loglog(nu2_cSt);
+  waltherB_ = (y1 - y2) / (logT2 - logT1);
+  waltherA_ = y1 + waltherB_ * logT1;
+
+  // The density must stay positive over the range (1 + alpha dT > 0).
+  if (spec.thermalExpansion_perK > 0.0) {
+    const double lowest = spec.densityReferenceTemperature_degC - 1.0 / spec.thermalExpansion_perK;
+    if (!(spec.minTemperature_degC > lowest)) {
+      std::ostringstream msg;
+      msg << "minTemperature_degC = " << spec.minTemperature_degC
+          << " is outside the range of the linear specific-volume density model";
+      fail(msg.str());
+    }
+  }
+
+  // Upper end: where nu reaches 2 cSt, if that comes before the requested maximum.
+  minTemperature_degC_ = spec.minTemperature_degC;
+  maxTemperature_degC_ = spec.maxTemperature_degC;
+  const double logTAtLimit = (waltherA_ - loglog(kWaltherMinViscosity_cSt)) / waltherB_;
+  const double tAtLimit_degC = std::pow(10.0, logTAtLimit) - kZeroCelsius_K;
+  maxTemperature_degC_ = std::min(maxTemperature_degC_, tAtLimit_degC);
+  if (!(maxTemperature_degC_ > minTemperature_degC_)) {
+    std::ostringstream msg;
+    msg << "minTemperature_degC = " << spec.minTemperature_degC << " is not below the temperature "
+        << tAtLimit_degC << " degC where the oil thins to 2e-6 m^2/s";
+    fail(msg.str());
+  }
+}
+
+void Oil::checkTemperature(const char* function, double temperature_degC) const {
+  if (!(temperature_degC >= minTemperature_degC_ && temperature_degC <= maxTemperature_degC_)) {
+    std::ostringstream msg;
+    msg << "Oil::" << function << ": temperature " << temperature_degC
+        << " degC is outside the valid range [" << minTemperature_degC_ << ", "
+        << maxTemperature_degC_ << "] degC of oil '" << spec_.name << "'";
+    throw std::invalid_argument(msg.str());
+  }
+}
+
+double Oil::kinematicViscosity_cSt(double temperature_K) const {
+  const double y = waltherA_ - waltherB_ * std::log10(temperature_K);
+  return std::pow(10.0, std::pow(10.0, y)) - kWaltherShift_cSt;
+}
+
+double Oil::calcKinematicViscosity_m2ps(double temperature_degC) const {
+  checkTemperature("calcKinematicViscosity_m2ps", temperature_degC);
+  return kinematicViscosity_cSt(temperature_degC + kZeroCelsius_K) * kM2psPerCSt;
+}
+
+double Oil::density_kgpm3(double temperature_degC) const {
+  return spec_.density_kgpm3 /
+         (1.0 + spec_.thermalExpansion_perK *
+                    (temperature_degC - spec_.densityReferenceTemperature_degC));
+}
+
+double Oil::calcDensity_kgpm3(double temperature_degC) const {
+  checkTemperature("calcDensity_kgpm3", temperature_degC);
+  return density_kgpm3(temperature_degC);
+}
+
+double Oil::calcDynamicViscosity_Pas(double temperature_degC) const {
+  checkTemperature("calcDynamicViscosity_Pas", temperature_degC);
+  return density_kgpm3(temperature_degC) *
+         kinematicViscosity_cSt(temperature_degC + kZeroCelsius_K) * kM2psPerCSt;
+}
+
+double Oil::calcDynamicViscosityAtKelvin_Pas(double temperature_K) const {
+  if (!std::isfinite(temperature_K)) {
+    std::ostringstream msg;
+    msg << "Oil::calcDynamicViscosityAtKelvin_Pas: temperature_K = " << temperature_K
+        << " must be finite";
+    throw std::invalid_argument(msg.str());
+  }
+  return calcDynamicViscosity_Pas(temperature_K - kZeroCelsius_K);
+}
+
+}  // namespace pistondyn::lubrication

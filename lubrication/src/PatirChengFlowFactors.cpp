@@ -1,0 +1,113 @@
+#include "pistondyn/lubrication/PatirChengFlowFactors.h"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace pistondyn::lubrication {
+
+namespace {
+
+using patir_cheng::detail::blend;
+
+void checkRoughness(const char* name, double rq_m) {
+  if (!std::isfinite(rq_m) || rq_m < 0.0) {
+    std::ostringstream msg;
+    msg << "PatirChengFlowFactors: roughness " << name << " = " << rq_m
+        << " m must be finite and >= 0";
+    throw std::invalid_argument(msg.str());
+  }
+}
+
+void checkPeklenik(const char* name, double gamma) {
+  if (!std::isfinite(gamma) || !(gamma > 0.0)) {
+    std::ostringstream msg;
+    msg << "PatirChengFlowFactors: Peklenik number " << name << " = " << gamma
+        << " must be positive and finite";
+    throw std::invalid_argument(msg.str());
+  }
+}
+
+}  // namespace
+
+PatirChengFlowFactors::PatirChengFlowFactors(const PatirChengParameters& parameters)
+    : parameters_(parameters) {
+  checkRoughness("rq1_m", parameters.rq1_m);
+  checkRoughness("rq2_m", parameters.rq2_m);
+  checkPeklenik("peklenik1", parameters.peklenik1);
+  checkPeklenik("peklenik2", parameters.peklenik2);
+  if (parameters.peklenikComposite.has_value()) {
+    checkPeklenik("peklenikComposite", *parameters.peklenikComposite);
+    gammaComposite_ = *parameters.peklenikComposite;
+  } else {
+    if (parameters.peklenik1 != parameters.peklenik2) {
+      std::ostringstream msg;
+      msg << "PatirChengFlowFactors: peklenikComposite must be given when peklenik1 ("
+          << parameters.peklenik1 << ") and peklenik2 (" << parameters.peklenik2 << ") differ";
+      throw std::invalid_argument(msg.str());
+    }
+    gammaComposite_ = parameters.peklenik1;
+  }
+
+  const double var1 = parameters.rq1_m * parameters.rq1_m;
+  const double var2 = parameters.rq2_m * parameters.rq2_m;
+  sigma_m_ = std::sqrt(var1 + var2);
+  if (sigma_m_ > 0.0) {
+    varianceRatio1_ = var1 / (var1 + var2);
+    varianceRatio2_ = var2 / (var1 + var2);
+  }
+
+  bracketSliding_ = patir_cheng::detail::bracketGamma(gammaComposite_);
+  bracketCross_ = patir_cheng::detail::bracketGamma(1.0 / gammaComposite_);
+  bracket1_ = patir_cheng::detail::bracketGamma(parameters.peklenik1);
+  bracket2_ = patir_cheng::detail::bracketGamma(parameters.peklenik2);
+}
+
+NodeFlowFactors PatirChengFlowFactors::calcFactors(double h_m) const {
+  if (!std::isfinite(h_m) || !(h_m > 0.0)) {
+    std::ostringstream msg;
+    msg << "PatirChengFlowFactors::calcFactors: gap h_m = " << h_m
+        << " m must be positive and finite";
+    throw std::invalid_argument(msg.str());
+  }
+  NodeFlowFactors f;
+  if (sigma_m_ == 0.0) {
+    f.expectedGap_m = h_m;  // smooth surfaces: plain Reynolds
+    return f;
+  }
+  const double H = h_m / sigma_m_;
+
+  namespace pcd = patir_cheng::detail;
+  if (parameters_.pressureFlowGammaModel == patir_cheng::PressureFlowGammaModel::kDesignNoteFit) {
+    f.phiPressureSliding = pcd::pressureFlowDesignNoteFit(H, gammaComposite_);
+    f.phiPressureCross = pcd::pressureFlowDesignNoteFit(H, 1.0 / gammaComposite_);
+  } else {
+    f.phiPressureSliding = blend(bracketSliding_, H, pcd::pressureFlowRow);
+    f.phiPressureCross = blend(bracketCross_, H, pcd::pressureFlowRow);
+  }
+
+  // Each term only where its surface is rough: a smooth surface contributes nothing and
+  // skipping it saves the transcendental calls.
+  double phiS = 0.0;
+  double phiFs = 0.0;
+  if (varianceRatio1_ > 0.0) {
+    phiS += varianceRatio1_ * blend(bracket1_, H, pcd::shearFlowRow);
+    phiFs += varianceRatio1_ * blend(bracket1_, H, pcd::shearStressFsRow);
+  }
+  if (varianceRatio2_ > 0.0) {
+    phiS -= varianceRatio2_ * blend(bracket2_, H, pcd::shearFlowRow);
+    phiFs -= varianceRatio2_ * blend(bracket2_, H, pcd::shearStressFsRow);
+  }
+  f.sigmaPhiS_m = sigma_m_ * phiS;
+  f.phiFs = phiFs;
+
+  const ExpectedGap gap = calcExpectedGap(h_m, sigma_m_, parameters_.expectedGapForm);
+  f.expectedGap_m = gap.value_m;
+  f.dExpectedGap_dh = gap.dValue_dh;
+
+  f.phiF = patir_cheng::calcShearStressFactorF(H);
+  f.phiFp = blend(bracketSliding_, H, pcd::shearStressFpRow);
+  return f;
+}
+
+}  // namespace pistondyn::lubrication

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# README command (b): install dependencies, build, run the whole test suite (CTest +
+# GoogleTest). .ci/run runs exactly this.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./scripts/install-deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j"$(nproc)"
+ctest --test-dir build --output-on-failure -j"$(nproc)"

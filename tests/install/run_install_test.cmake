@@ -1,0 +1,31 @@
+# Installs the build tree into a scratch prefix, builds tests/install/downstream against
+# it (Release) and runs it, then runs the installed bin/pistondyn on an example deck.
+# Variables: BUILD_DIR, SOURCE_DIR, WORK_DIR, GENERATOR.
+file(REMOVE_RECURSE "${WORK_DIR}")
+set(prefix "${WORK_DIR}/prefix")
+function(run what)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message(STATUS "${what}: ${out}")
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${what} failed (${rc}):\n${out}\n${err}")
+  endif()
+endfunction()
+run("install" ${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
+foreach(f bin/pistondyn lib/cmake/pistondyn/pistondynConfig.cmake
+          include/pistondyn/plugin/ForceElement.h include/pistondyn/mbd_models/CrankTrain.h)
+  if(NOT EXISTS "${prefix}/${f}")
+    message(FATAL_ERROR "install is missing ${f}")
+  endif()
+endforeach()
+run("configure downstream" ${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/install/downstream"
+    -B "${WORK_DIR}/build" -G "${GENERATOR}" -DCMAKE_BUILD_TYPE=Release
+    "-DCMAKE_PREFIX_PATH=${prefix}")
+run("build downstream" ${CMAKE_COMMAND} --build "${WORK_DIR}/build")
+run("run downstream" "${WORK_DIR}/build/downstream")
+run("installed pistondyn" "${prefix}/bin/pistondyn" run
+    "${SOURCE_DIR}/examples/engines/briggs_stratton_500/engine.yaml"
+    --out "${WORK_DIR}/results" --quiet --set simulation.output_step_deg=5)
+if(NOT EXISTS "${WORK_DIR}/results/cycle.csv" OR NOT EXISTS "${WORK_DIR}/results/summary.json")
+  message(FATAL_ERROR "installed pistondyn wrote no results")
+endif()
+file(REMOVE_RECURSE "${WORK_DIR}")

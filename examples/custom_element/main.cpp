@@ -23,12 +23,12 @@ using namespace pistondyn;
 class SpringLinerGuide final : public plugin::ForceElement {
  public:
   struct Parameters {
-    double lateralStiffness_Npm = 2e7;   // [N/m]
-    double lateralDamping_Nspm = 2e3;    // [N s/m]
-    double tiltStiffness_Nmprad = 2e4;   // [N m/rad]
-    double tiltDamping_Nmsprad = 2.0;    // [N m s/rad]
-    double axialStiffness_Npm = 2e7;     // along the pin axis [N/m]
-    double axialDamping_Nspm = 2e3;      // [N s/m]
+    double lateralStiffness_Npm = 2e7;  // [N/m]
+    double lateralDamping_Nspm = 2e3;   // [N s/m]
+    double tiltStiffness_Nmprad = 2e4;  // [N m/rad]
+    double tiltDamping_Nmsprad = 2.0;   // [N m s/rad]
+    double axialStiffness_Npm = 2e7;    // along the pin axis [N/m]
+    double axialDamping_Nspm = 2e3;     // [N s/m]
   };
   explicit SpringLinerGuide(Parameters p) : p_(p) {}
 
@@ -45,8 +45,8 @@ class SpringLinerGuide final : public plugin::ForceElement {
                       p_.axialDamping_Nspm * v[2];
     // Tilt is a rotation about -z; the restoring moment about +z is +k * tilt.
     const double tiltRate = -piston.getBodyAngularVelocity(s)[2];
-    const double mz = p_.tiltStiffness_Nmprad * crankTrain_->getTilt_rad(s) +
-                      p_.tiltDamping_Nmsprad * tiltRate;
+    const double mz =
+        p_.tiltStiffness_Nmprad * crankTrain_->getTilt_rad(s) + p_.tiltDamping_Nmsprad * tiltRate;
     forces.addForceAtStation(s, piston, SimTK::Vec3(0), SimTK::Vec3(fx, 0, fz));
     forces.addTorque(s, piston, SimTK::Vec3(0, 0, mz));
   }
@@ -65,9 +65,9 @@ class SpringLinerGuide final : public plugin::ForceElement {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string deckPath =
-      argc > 1 ? argv[1]
-               : std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm/engine.yaml";
+  const std::string deckPath = argc > 1 ? argv[1]
+                                        : std::string(PISTONDYN_SOURCE_DIR) +
+                                              "/examples/engines/gasoline_1400_2000rpm/engine.yaml";
   const cli::EngineDeck deck = cli::loadEngineDeck(deckPath, {});
   plugin::SimulationSettings settings = deck.simulation;
   settings.cycles = 2;  // let the compliant piston settle, compare the last cycle
@@ -92,9 +92,10 @@ int main(int argc, char** argv) {
   }
   std::printf("custom element: elements %s + %s\n", compliant->getElementNames()[0].c_str(),
               compliant->getElementNames()[1].c_str());
-  std::printf("  last cycle: peak ideal side force %.1f N, max difference %.1f N, "
-              "max lateral displacement %.2f um, %ld steps in %.3f s\n",
-              peak, diff, uMax, sim.getStats().integratorSteps, sim.getStats().wallTime_s);
+  std::printf(
+      "  last cycle: peak ideal side force %.1f N, max difference %.1f N, "
+      "max lateral displacement %.2f um, %ld steps in %.3f s\n",
+      peak, diff, uMax, sim.getStats().integratorSteps, sim.getStats().wallTime_s);
   // The springs carry the same load as the ideal guide up to their dynamics.
   return diff < 0.2 * peak ? 0 : 1;
 }

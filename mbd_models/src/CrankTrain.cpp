@@ -19,8 +19,8 @@ MassProperties toSimbody(const PlanarMassProperties& b, double extraAxialInertia
   Inertia aboutOrigin = Inertia(b.inertiaZZ_kgm2).shiftFromMassCenter(com, b.mass_kg);
   if (extraAxialInertia_kgm2 > 0.0) {
     // A thin disc on the z axis (Ixx = Iyy = Izz/2) keeps the triangle inequality.
-    aboutOrigin += Inertia(0.5 * extraAxialInertia_kgm2, 0.5 * extraAxialInertia_kgm2,
-                           extraAxialInertia_kgm2);
+    aboutOrigin +=
+        Inertia(0.5 * extraAxialInertia_kgm2, 0.5 * extraAxialInertia_kgm2, extraAxialInertia_kgm2);
   }
   return MassProperties(b.mass_kg, com, aboutOrigin);
 }
@@ -48,7 +48,9 @@ class ConstantSpeedMotion final : public SimTK::Motion::Custom::Implementation {
 };
 
 // Planar rotation angle about +z of a body's frame in ground.
-double planarAngle(const SimTK::Rotation& R) { return std::atan2(R[1][0], R[0][0]); }
+double planarAngle(const SimTK::Rotation& R) {
+  return std::atan2(R[1][0], R[0][0]);
+}
 
 }  // namespace
 
@@ -64,7 +66,8 @@ CrankTrain::CrankTrain(SimTK::SimbodyMatterSubsystem& matter, SimTK::GeneralForc
   const double flywheel =
       engine_.drive.mode == CrankDrive::Mode::Free ? engine_.drive.flywheelInertia_kgm2 : 0.0;
   MobilizedBody::Pin crank(matter.updGround(), Transform(crankFrame, Vec3(0)),
-                           SimTK::Body::Rigid(toSimbody(engine_.mass.crank, flywheel)), Transform());
+                           SimTK::Body::Rigid(toSimbody(engine_.mass.crank, flywheel)),
+                           Transform());
   crank_ = crank;
 
   MobilizedBody::Pin conrod(crank_, Transform(Vec3(0, r, 0)),
@@ -173,7 +176,8 @@ void CrankTrain::setRates(SimTK::State& s, double omega, double uLatDot, double 
   const double psiRod = psiCrank + conrod_.getOneQ(s, SimTK::MobilizerQIndex(0));
   const double relY = g.conrodLength_m * std::cos(psiRod);  // (P - C)_y > 0
   double psiPin = psiRod;
-  if (engine_.pinJoint != PinJoint::FixedInRod) psiPin += pin_.getOneQ(s, SimTK::MobilizerQIndex(0));
+  if (engine_.pinJoint != PinJoint::FixedInRod)
+    psiPin += pin_.getOneQ(s, SimTK::MobilizerQIndex(0));
   double pistonAngle = psiPin - crankFrameRotation_rad_;  // rotation about +z = -tilt
   if (engine_.pinJoint != PinJoint::FixedInPiston) {
     pistonAngle += piston_.getOneQ(s, SimTK::MobilizerQIndex(0));
@@ -204,7 +208,8 @@ void CrankTrain::setRates(SimTK::State& s, double omega, double uLatDot, double 
 }
 
 double CrankTrain::getDriveTorque_Nm(const SimTK::State& s) const {
-  if (engine_.drive.mode == CrankDrive::Mode::Free) return -engine_.drive.loadTorque_Nm;
+  if (engine_.drive.mode == CrankDrive::Mode::Free)
+    return -engine_.drive.loadTorque_Nm;
   SimTK::Vector motionForces;
   matter_.findMotionForces(s, motionForces);
   // Simbody reports Motion forces like constraint forces, with the opposite sign of an

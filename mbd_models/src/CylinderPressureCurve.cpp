@@ -25,8 +25,10 @@ std::vector<double> periodicSplineSecondDerivatives(const std::vector<double>& x
                                                     const std::vector<double>& y, double T) {
   const std::size_t n = x.size();
   std::vector<double> h(n);
-  for (std::size_t i = 0; i < n; ++i) h[i] = (i + 1 < n ? x[i + 1] : x[0] + T) - x[i];
-  // Row i: h[i-1] m[i-1] + 2(h[i-1]+h[i]) m[i] + h[i] m[i+1] = 6((y[i+1]-y[i])/h[i] - (y[i]-y[i-1])/h[i-1])
+  for (std::size_t i = 0; i < n; ++i)
+    h[i] = (i + 1 < n ? x[i + 1] : x[0] + T) - x[i];
+  // Row i: h[i-1] m[i-1] + 2(h[i-1]+h[i]) m[i] + h[i] m[i+1] = 6((y[i+1]-y[i])/h[i] -
+  // (y[i]-y[i-1])/h[i-1])
   std::vector<double> a(n), b(n), c(n), d(n);
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t im = (i + n - 1) % n, ip = (i + 1) % n;
@@ -53,13 +55,15 @@ std::vector<double> periodicSplineSecondDerivatives(const std::vector<double>& x
       rhs[i] = (rhs[i] - a[i] * rhs[i - 1]) / denom;
     }
     out[n - 1] = rhs[n - 1];
-    for (std::size_t i = n - 1; i-- > 0;) out[i] = rhs[i] - cp[i] * out[i + 1];
+    for (std::size_t i = n - 1; i-- > 0;)
+      out[i] = rhs[i] - cp[i] * out[i + 1];
     return out;
   };
   const std::vector<double> yv = thomas(d), z = thomas(u);
   const double fact = (yv[0] + beta * yv[n - 1] / gamma) / (1.0 + z[0] + beta * z[n - 1] / gamma);
   std::vector<double> m(n);
-  for (std::size_t i = 0; i < n; ++i) m[i] = yv[i] - fact * z[i];
+  for (std::size_t i = 0; i < n; ++i)
+    m[i] = yv[i] - fact * z[i];
   return m;
 }
 
@@ -71,7 +75,8 @@ CylinderPressureCurve::CylinderPressureCurve(std::vector<double> angle, std::vec
          std::to_string(p.size()) + ")");
   }
   for (std::size_t i = 0; i < angle.size(); ++i) {
-    if (!std::isfinite(angle[i])) fail(rowText(i, angle[i], p[i]) + ": angle is not finite");
+    if (!std::isfinite(angle[i]))
+      fail(rowText(i, angle[i], p[i]) + ": angle is not finite");
     if (!std::isfinite(p[i]) || p[i] <= 0.0) {
       fail(rowText(i, angle[i], p[i]) + ": absolute pressure must be positive and finite");
     }
@@ -80,7 +85,8 @@ CylinderPressureCurve::CylinderPressureCurve(std::vector<double> angle, std::vec
            std::to_string(angle[i - 1]) + " deg)");
     }
   }
-  if (angle.size() < 4) fail("needs at least 4 rows, has " + std::to_string(angle.size()));
+  if (angle.size() < 4)
+    fail("needs at least 4 rows, has " + std::to_string(angle.size()));
 
   const double peak = *std::max_element(p.begin(), p.end());
   const double span = angle.back() - angle.front();
@@ -103,7 +109,8 @@ CylinderPressureCurve::CylinderPressureCurve(std::vector<double> angle, std::vec
     p.pop_back();
   } else {
     double maxStep = 0.0;
-    for (std::size_t i = 1; i < angle.size(); ++i) maxStep = std::max(maxStep, angle[i] - angle[i - 1]);
+    for (std::size_t i = 1; i < angle.size(); ++i)
+      maxStep = std::max(maxStep, angle[i] - angle[i - 1]);
     const double gap = angle.front() + kCycle_deg - angle.back();
     if (gap > maxStep * (1.0 + 1e-9)) {
       std::ostringstream s;
@@ -123,7 +130,8 @@ CylinderPressureCurve::CylinderPressureCurve(std::vector<double> angle, std::vec
 
 double CylinderPressureCurve::wrap(double a) const {
   double w = std::fmod(a - angle_.front(), kCycle_deg);
-  if (w < 0.0) w += kCycle_deg;
+  if (w < 0.0)
+    w += kCycle_deg;
   return angle_.front() + w;
 }
 
@@ -133,7 +141,8 @@ int CylinderPressureCurve::findInterval(double w) const {
 }
 
 double CylinderPressureCurve::calcPressure_Pa(double crankAngle_deg) const {
-  if (!std::isfinite(crankAngle_deg)) fail("calcPressure_Pa: crank angle is not finite");
+  if (!std::isfinite(crankAngle_deg))
+    fail("calcPressure_Pa: crank angle is not finite");
   const double w = wrap(crankAngle_deg);
   const std::size_t n = angle_.size();
   const std::size_t i = static_cast<std::size_t>(findInterval(w)), j = (i + 1) % n;

@@ -8,7 +8,8 @@ namespace pistondyn::mbd {
 namespace {
 
 void require(bool ok, const std::string& member, double value, const char* expected) {
-  if (ok) return;
+  if (ok)
+    return;
   std::ostringstream msg;
   msg.precision(17);
   msg << "EngineDescription: " << member << " = " << value << " " << expected;

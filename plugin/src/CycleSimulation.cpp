@@ -9,8 +9,10 @@ namespace pistondyn::plugin {
 
 void validate(const SimulationSettings& s) {
   auto fail = [](const std::string& m) { throw std::invalid_argument("SimulationSettings: " + m); };
-  if (!std::isfinite(s.startAngle_deg)) fail("startAngle_deg must be finite");
-  if (s.cycles < 1) fail("cycles must be >= 1");
+  if (!std::isfinite(s.startAngle_deg))
+    fail("startAngle_deg must be finite");
+  if (s.cycles < 1)
+    fail("cycles must be >= 1");
   if (!(s.outputStep_deg > 0.0) || !std::isfinite(s.outputStep_deg)) {
     fail("outputStep_deg must be positive");
   }
@@ -18,7 +20,8 @@ void validate(const SimulationSettings& s) {
   if (std::abs(perCycle - std::round(perCycle)) > 1e-9 * perCycle) {
     fail("outputStep_deg must divide 720 deg into a whole number of steps");
   }
-  if (!(s.accuracy > 0.0 && s.accuracy < 1.0)) fail("accuracy must be in (0, 1)");
+  if (!(s.accuracy > 0.0 && s.accuracy < 1.0))
+    fail("accuracy must be in (0, 1)");
   if (!(s.constraintTolerance > 0.0 && s.constraintTolerance < 1.0)) {
     fail("constraintTolerance must be in (0, 1)");
   }
@@ -26,7 +29,8 @@ void validate(const SimulationSettings& s) {
 
 std::size_t ResultTable::columnIndex(const std::string& name) const {
   for (std::size_t j = 0; j < columns.size(); ++j) {
-    if (columns[j] == name) return j;
+    if (columns[j] == name)
+      return j;
   }
   throw std::out_of_range("ResultTable: no column '" + name + "'");
 }
@@ -35,7 +39,8 @@ std::vector<double> ResultTable::column(const std::string& name) const {
   const std::size_t j = columnIndex(name);
   std::vector<double> out;
   out.reserve(rows.size());
-  for (const auto& r : rows) out.push_back(r[j]);
+  for (const auto& r : rows)
+    out.push_back(r[j]);
   return out;
 }
 
@@ -108,7 +113,8 @@ ResultTable CycleSimulation::run(const Progress& progress, const RowObserver& ob
 
   ResultTable table;
   table.columns = crankTrainColumns();
-  for (auto& c : model_.getElementReportColumns()) table.columns.push_back(std::move(c));
+  for (auto& c : model_.getElementReportColumns())
+    table.columns.push_back(std::move(c));
 
   const long stepsPerCycle = std::lround(720.0 / settings_.outputStep_deg);
   const long nRows = stepsPerCycle * settings_.cycles + 1;
@@ -120,27 +126,29 @@ ResultTable CycleSimulation::run(const Progress& progress, const RowObserver& ob
       while (integ->getTime() < tOut) {
         const SimTK::Integrator::SuccessfulStepStatus status = integ->stepTo(tOut);
         if (status == SimTK::Integrator::EndOfSimulation) {
-          throw std::runtime_error("CycleSimulation: integrator stopped: " +
-                                   integ->getTerminationReasonString(
-                                       integ->getTerminationReason()));
+          throw std::runtime_error(
+              "CycleSimulation: integrator stopped: " +
+              integ->getTerminationReasonString(integ->getTerminationReason()));
         }
       }
     }
     const SimTK::State& s = integ->getState();
     system.realize(s, SimTK::Stage::Acceleration);
-    if (observer) observer(s);
+    if (observer)
+      observer(s);
     std::vector<double> row;
     row.reserve(table.columns.size());
     calcCrankTrainRow(ct, s, row);
     model_.calcElementReports(s, row);
     for (double v : row) {
       if (!std::isfinite(v)) {
-        throw std::runtime_error("CycleSimulation: non-finite result at t = " +
-                                 std::to_string(s.getTime()) + " s");
+        throw std::runtime_error(
+            "CycleSimulation: non-finite result at t = " + std::to_string(s.getTime()) + " s");
       }
     }
     table.rows.push_back(std::move(row));
-    if (progress) progress(static_cast<double>(k) / static_cast<double>(nRows - 1));
+    if (progress)
+      progress(static_cast<double>(k) / static_cast<double>(nRows - 1));
   }
   stats_.integratorSteps = integ->getNumStepsTaken();
   stats_.realizations = integ->getNumRealizations();

@@ -15,8 +15,8 @@ void IdealLinerGuide::addToModel(const ModelBuildContext& context) {
   tilt_ = SimTK::Constraint::ConstantAngle(ground, SimTK::UnitVec3(SimTK::XAxis), piston,
                                            SimTK::UnitVec3(SimTK::YAxis));
   // Piston-frame origin stays on the plane z = 0: no tertiary motion.
-  transverse_ = SimTK::Constraint::PointInPlane(ground, SimTK::UnitVec3(SimTK::ZAxis), 0.0,
-                                                piston, SimTK::Vec3(0));
+  transverse_ = SimTK::Constraint::PointInPlane(ground, SimTK::UnitVec3(SimTK::ZAxis), 0.0, piston,
+                                                SimTK::Vec3(0));
 }
 
 SimTK::SpatialVec IdealLinerGuide::calcForceOnLiner(const SimTK::State& s) const {

@@ -49,7 +49,8 @@ void PistonAssemblyModel::requireNotBuilt(const char* what) const {
 std::vector<std::unique_ptr<ForceElement>>::iterator PistonAssemblyModel::find(
     const std::string& name) {
   for (auto it = elements_.begin(); it != elements_.end(); ++it) {
-    if ((*it)->getName() == name) return it;
+    if ((*it)->getName() == name)
+      return it;
   }
   return elements_.end();
 }
@@ -57,16 +58,19 @@ std::vector<std::unique_ptr<ForceElement>>::iterator PistonAssemblyModel::find(
 std::vector<std::unique_ptr<ForceElement>>::const_iterator PistonAssemblyModel::find(
     const std::string& name) const {
   for (auto it = elements_.begin(); it != elements_.end(); ++it) {
-    if ((*it)->getName() == name) return it;
+    if ((*it)->getName() == name)
+      return it;
   }
   return elements_.end();
 }
 
 void PistonAssemblyModel::addElement(std::unique_ptr<ForceElement> element) {
   requireNotBuilt("addElement");
-  if (!element) throw std::invalid_argument("PistonAssemblyModel::addElement: null element");
+  if (!element)
+    throw std::invalid_argument("PistonAssemblyModel::addElement: null element");
   const std::string name = element->getName();
-  if (name.empty()) throw std::invalid_argument("PistonAssemblyModel::addElement: empty name");
+  if (name.empty())
+    throw std::invalid_argument("PistonAssemblyModel::addElement: empty name");
   if (hasElement(name)) {
     throw std::invalid_argument("PistonAssemblyModel::addElement: an element called '" + name +
                                 "' is already registered (use replaceElement)");
@@ -77,11 +81,12 @@ void PistonAssemblyModel::addElement(std::unique_ptr<ForceElement> element) {
 void PistonAssemblyModel::replaceElement(const std::string& name,
                                          std::unique_ptr<ForceElement> element) {
   requireNotBuilt("replaceElement");
-  if (!element) throw std::invalid_argument("PistonAssemblyModel::replaceElement: null element");
+  if (!element)
+    throw std::invalid_argument("PistonAssemblyModel::replaceElement: null element");
   auto it = find(name);
   if (it == elements_.end()) {
-    throw std::invalid_argument("PistonAssemblyModel::replaceElement: no element called '" +
-                                name + "'");
+    throw std::invalid_argument("PistonAssemblyModel::replaceElement: no element called '" + name +
+                                "'");
   }
   const std::string newName = element->getName();
   if (newName != name && hasElement(newName)) {
@@ -116,12 +121,14 @@ const ForceElement& PistonAssemblyModel::getElement(const std::string& name) con
 
 std::vector<std::string> PistonAssemblyModel::getElementNames() const {
   std::vector<std::string> names;
-  for (const auto& e : elements_) names.push_back(e->getName());
+  for (const auto& e : elements_)
+    names.push_back(e->getName());
   return names;
 }
 
 void PistonAssemblyModel::buildSystem() {
-  if (built_) return;
+  if (built_)
+    return;
   const ModelBuildContext context{*matter_, *forces_, *crankTrain_};
   for (auto& e : elements_) {
     e->addToModel(context);
@@ -141,7 +148,8 @@ const SimTK::State& PistonAssemblyModel::getDefaultState() {
 std::vector<std::string> PistonAssemblyModel::getElementReportColumns() const {
   std::vector<std::string> columns;
   for (const auto& e : elements_) {
-    for (auto& c : e->getReportColumns()) columns.push_back(std::move(c));
+    for (auto& c : e->getReportColumns())
+      columns.push_back(std::move(c));
   }
   return columns;
 }

@@ -61,7 +61,8 @@ class ScratchDeck : public ::testing::Test {
     std::ifstream in(deck());
     std::string line;
     for (int n = 1; std::getline(in, line); ++n) {
-      if (line.find(needle) != std::string::npos) return n;
+      if (line.find(needle) != std::string::npos)
+        return n;
     }
     return -1;
   }
@@ -76,10 +77,9 @@ class ScratchDeck : public ::testing::Test {
   }
   // Runs the real program; returns its exit code.
   int runProgram(const std::string& args, const fs::path& out) const {
-    const std::string cmd = std::string(PISTONDYN_EXE) + " run " + deck() + " --out " +
-                            out.string() + " --quiet " + args + " > " +
-                            (dir_ / "stdout.txt").string() + " 2> " +
-                            (dir_ / "stderr.txt").string();
+    const std::string cmd =
+        std::string(PISTONDYN_EXE) + " run " + deck() + " --out " + out.string() + " --quiet " +
+        args + " > " + (dir_ / "stdout.txt").string() + " 2> " + (dir_ / "stderr.txt").string();
     const int status = std::system(cmd.c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
@@ -89,13 +89,15 @@ class ScratchDeck : public ::testing::Test {
 };
 
 // Message shape: "<file>:<line>: <key>: <problem>".
-void expectNames(const std::string& msg, const std::string& file, int line,
-                 const std::string& key, const std::string& problem) {
+void expectNames(const std::string& msg, const std::string& file, int line, const std::string& key,
+                 const std::string& problem) {
   EXPECT_NE(msg.find(file + ":" + std::to_string(line) + ": " + key), std::string::npos) << msg;
   EXPECT_NE(msg.find(problem), std::string::npos) << msg;
 }
 
-TEST_F(ScratchDeck, TheUneditedDeckLoads) { EXPECT_EQ(rejection(), ""); }
+TEST_F(ScratchDeck, TheUneditedDeckLoads) {
+  EXPECT_EQ(rejection(), "");
+}
 
 TEST_F(ScratchDeck, MissingKey) {
   editDeck("  bore_mm: 74.5               # [V]\n", "");
@@ -250,7 +252,8 @@ TEST(ResultWriters, NumbersRoundTrip) {
 }
 
 TEST(ResultWriters, AtomicWriteLeavesNothingOnFailure) {
-  const fs::path dir = fs::temp_directory_path() / ("pistondyn_atomic_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("pistondyn_atomic_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir / "cycle.csv");  // a folder where a file must go: rename fails
   EXPECT_THROW(pistondyn::cli::writeFilesAtomically(dir.string(),

@@ -21,11 +21,21 @@ using pistondyn::cli::EngineDeck;
 struct V2 {
   double x, y;
 };
-V2 operator-(V2 a, V2 b) { return {a.x - b.x, a.y - b.y}; }
-V2 operator+(V2 a, V2 b) { return {a.x + b.x, a.y + b.y}; }
-V2 operator*(double k, V2 a) { return {k * a.x, k * a.y}; }
-double cross(V2 a, V2 b) { return a.x * b.y - a.y * b.x; }
-double dot(V2 a, V2 b) { return a.x * b.x + a.y * b.y; }
+V2 operator-(V2 a, V2 b) {
+  return {a.x - b.x, a.y - b.y};
+}
+V2 operator+(V2 a, V2 b) {
+  return {a.x + b.x, a.y + b.y};
+}
+V2 operator*(double k, V2 a) {
+  return {k * a.x, k * a.y};
+}
+double cross(V2 a, V2 b) {
+  return a.x * b.y - a.y * b.x;
+}
+double dot(V2 a, V2 b) {
+  return a.x * b.x + a.y * b.y;
+}
 
 // Slider-crank with the pin on the line x = e, crank pin C = r(-sin phi, cos phi),
 // crank turning at constant omega. Everything from the loop closure
@@ -44,8 +54,9 @@ struct ClosedForm {
     k.Cdd = {r * s * w * w, -r * c * w * w};
     const double y = k.C.y + std::sqrt(L * L - (e - k.C.x) * (e - k.C.x));
     const double yd = k.Cd.y + (e - k.C.x) * k.Cd.x / (y - k.C.y);
-    const double ydd = k.Cdd.y + ((e - k.C.x) * k.Cdd.x - k.Cd.x * k.Cd.x -
-                                  (yd - k.Cd.y) * (yd - k.Cd.y)) / (y - k.C.y);
+    const double ydd =
+        k.Cdd.y +
+        ((e - k.C.x) * k.Cdd.x - k.Cd.x * k.Cd.x - (yd - k.Cd.y) * (yd - k.Cd.y)) / (y - k.C.y);
     k.P = {e, y};
     k.Pd = {0, yd};
     k.Pdd = {0, ydd};
@@ -107,7 +118,8 @@ std::string deckPath(const Engine& e) {
 // "Not near zero": above 1e-3 of the cycle's largest magnitude.
 double maxAbs(const std::vector<double>& v) {
   double m = 0;
-  for (double x : v) m = std::max(m, std::abs(x));
+  for (double x : v)
+    m = std::max(m, std::abs(x));
   return m;
 }
 
@@ -188,7 +200,8 @@ TEST_P(ClosedFormEngines, KinematicsLoadsAndPowerOver720Degrees) {
     const double scale = maxAbs(ref);
     double worst = 0.0;
     for (std::size_t i = 0; i < ref.size(); ++i) {
-      if (std::abs(ref[i]) < 1e-3 * scale) continue;
+      if (std::abs(ref[i]) < 1e-3 * scale)
+        continue;
       worst = std::max(worst, std::abs(got[i] - ref[i]) / std::abs(ref[i]));
     }
     RecordProperty(std::string("max_rel_error_") + what, std::to_string(worst));
@@ -196,7 +209,8 @@ TEST_P(ClosedFormEngines, KinematicsLoadsAndPowerOver720Degrees) {
     std::printf("  %-16s max relative error %.3e\n", what, worst);
   };
   double worstY = 0.0;
-  for (std::size_t i = 0; i < y.size(); ++i) worstY = std::max(worstY, std::abs(y[i] - yRef[i]));
+  for (std::size_t i = 0; i < y.size(); ++i)
+    worstY = std::max(worstY, std::abs(y[i] - yRef[i]));
   std::printf("  %-16s max |error| %.3e m\n", "piston_y", worstY);
   EXPECT_LE(worstY, 1e-9);
   checkRelative("piston_vy", vy, vRef);
@@ -223,19 +237,22 @@ INSTANTIATE_TEST_SUITE_P(ExampleEngines, ClosedFormEngines,
 // average to zero over a period). imep from the pressure table, torque from Simbody.
 TEST(CycleEnergy, MeanCrankTorqueEqualsIndicatedWork) {
   const EngineDeck deck = pistondyn::cli::loadEngineDeck(
-      std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm/engine.yaml", {});
+      std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm/engine.yaml",
+      {});
   auto model = pistondyn::cli::buildModel(deck);
   pistondyn::plugin::SimulationSettings settings = deck.simulation;
   settings.outputStep_deg = 0.5;
   const auto table = pistondyn::plugin::CycleSimulation(*model, settings).run();
   const auto torque = table.column("crank_torque_Nm");
   double mean = 0.0;  // periodic trapezoid: drop the repeated last row
-  for (std::size_t i = 0; i + 1 < torque.size(); ++i) mean += torque[i];
+  for (std::size_t i = 0; i + 1 < torque.size(); ++i)
+    mean += torque[i];
   mean /= static_cast<double>(torque.size() - 1);
   const pistondyn::mbd::SliderCrank kin(deck.engine.geometry);
   const pistondyn::mbd::CylinderVolume vol(kin, deck.engine.piston.bore_m,
                                            deck.engine.geometry.compressionRatio);
-  const double expected = pistondyn::cli::calcDeckImep_Pa(deck) * vol.displacement_m3() / (4 * M_PI);
+  const double expected =
+      pistondyn::cli::calcDeckImep_Pa(deck) * vol.displacement_m3() / (4 * M_PI);
   std::printf("  mean crank torque %.9f N m, imep * Vd / 4pi %.9f N m\n", mean, expected);
   EXPECT_NEAR(mean, expected, 1e-6 * std::abs(expected));
 }
@@ -243,7 +260,8 @@ TEST(CycleEnergy, MeanCrankTorqueEqualsIndicatedWork) {
 // The deck's pressure table reproduces the thesis' imep (598 kPa) within 0.5 %.
 TEST(CycleEnergy, FiredTableImepMatchesThesisValue) {
   const EngineDeck deck = pistondyn::cli::loadEngineDeck(
-      std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm/engine.yaml", {});
+      std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm/engine.yaml",
+      {});
   ASSERT_TRUE(deck.statedImep_Pa.has_value());
   EXPECT_DOUBLE_EQ(*deck.statedImep_Pa, 598e3);
   EXPECT_NEAR(pistondyn::cli::calcDeckImep_Pa(deck), 598e3, 0.005 * 598e3);

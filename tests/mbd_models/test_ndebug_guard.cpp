@@ -25,15 +25,15 @@ TEST(NdebugGuard, ModelWithMotionAndConstraintRealizes) {
   SimTK::MultibodySystem system;
   SimTK::SimbodyMatterSubsystem matter(system);
   SimTK::GeneralForceSubsystem forces(system);
-  SimTK::MobilizedBody::Pin wheel(matter.Ground(), SimTK::Transform(),
-                                  SimTK::Body::Rigid(SimTK::MassProperties(1, SimTK::Vec3(0),
-                                                                           SimTK::Inertia(1))),
-                                  SimTK::Transform());
+  SimTK::MobilizedBody::Pin wheel(
+      matter.Ground(), SimTK::Transform(),
+      SimTK::Body::Rigid(SimTK::MassProperties(1, SimTK::Vec3(0), SimTK::Inertia(1))),
+      SimTK::Transform());
   SimTK::Motion::Steady(wheel, 2.0);
-  SimTK::MobilizedBody::Slider slider(matter.Ground(), SimTK::Transform(),
-                                      SimTK::Body::Rigid(SimTK::MassProperties(
-                                          1, SimTK::Vec3(0), SimTK::Inertia(1))),
-                                      SimTK::Transform());
+  SimTK::MobilizedBody::Slider slider(
+      matter.Ground(), SimTK::Transform(),
+      SimTK::Body::Rigid(SimTK::MassProperties(1, SimTK::Vec3(0), SimTK::Inertia(1))),
+      SimTK::Transform());
   SimTK::Constraint::ConstantSpeed(slider, 0.5);
   system.realizeTopology();
   SimTK::State s = system.getDefaultState();

@@ -29,10 +29,12 @@ TEST(SliderCrank, TdcAndBdcAreTheExtremaOfThePinHeight) {
   double yMax = -1, yMin = 1, thMax = 0, thMin = 0;
   for (double th = -0.2; th < 2 * M_PI - 0.2; th += 1e-5) {
     const double y = k.calcPinHeight(th).y_m;
-    if (y > yMax) yMax = y, thMax = th;
-    if (y < yMin) yMin = y, thMin = th;
+    if (y > yMax)
+      yMax = y, thMax = th;
+    if (y < yMin)
+      yMin = y, thMin = th;
   }
-  EXPECT_NEAR(thMax, 0.0, 2e-5);                    // theta = 0 is TDC
+  EXPECT_NEAR(thMax, 0.0, 2e-5);  // theta = 0 is TDC
   EXPECT_NEAR(yMax, k.pinHeightAtTdc_m(), 1e-12);
   EXPECT_NEAR(thMin, k.crankAngleAtBdc_rad(), 2e-5);
   EXPECT_NEAR(yMin, k.pinHeightAtBdc_m(), 1e-12);

@@ -138,15 +138,16 @@ TEST(FreeCrank, ConservesEnergyWithoutGasOrLoad) {
   const auto table = plugin::CycleSimulation(m, s).run({}, observe);
   const auto speed = table.column("crank_speed_rpm");
   double worst = 0;
-  for (double E : energy) worst = std::max(worst, std::abs(E - energy.front()));
+  for (double E : energy)
+    worst = std::max(worst, std::abs(E - energy.front()));
   std::printf("  energy drift %.3e J of %.3f J; speed %.2f..%.2f rpm\n", worst, energy.front(),
               *std::min_element(speed.begin(), speed.end()),
               *std::max_element(speed.begin(), speed.end()));
   EXPECT_LE(worst, 1e-7 * energy.front());
   // The speed does fluctuate (the reciprocating inertia), so the crank really is free.
-  EXPECT_GT(*std::max_element(speed.begin(), speed.end()) -
-                *std::min_element(speed.begin(), speed.end()),
-            0.1);
+  EXPECT_GT(
+      *std::max_element(speed.begin(), speed.end()) - *std::min_element(speed.begin(), speed.end()),
+      0.1);
 }
 
 }  // namespace

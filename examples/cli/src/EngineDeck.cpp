@@ -11,10 +11,10 @@
 namespace pistondyn::cli {
 namespace {
 
-constexpr double kMm = 1e-3;        // mm -> m
-constexpr double kGram = 1e-3;      // g -> kg
-constexpr double kKgMm2 = 1e-6;     // kg mm^2 -> kg m^2
-constexpr double kBar = 1e5;        // bar -> Pa
+constexpr double kMm = 1e-3;     // mm -> m
+constexpr double kGram = 1e-3;   // g -> kg
+constexpr double kKgMm2 = 1e-6;  // kg mm^2 -> kg m^2
+constexpr double kBar = 1e5;     // bar -> Pa
 using Sign = YamlDeck::Sign;
 
 mbd::PlanarMassProperties readBody(YamlDeck& d, const std::string& section) {
@@ -28,7 +28,8 @@ mbd::PlanarMassProperties readBody(YamlDeck& d, const std::string& section) {
 
 EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::string>& overrides) {
   YamlDeck d(deckPath);
-  for (const auto& o : overrides) d.applyOverride(o);
+  for (const auto& o : overrides)
+    d.applyOverride(o);
 
   EngineDeck deck;
   deck.deckPath = deckPath;
@@ -64,8 +65,10 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
   e.mass.crank = readBody(d, "crank");
   e.mass.crank.comY_m = d.getNumber("crank.com_radius_mm") * kMm;
 
-  const std::string mode = d.getChoiceOr("drive.mode", {"constant_speed", "free"}, "constant_speed");
-  e.drive.mode = mode == "free" ? mbd::CrankDrive::Mode::Free : mbd::CrankDrive::Mode::ConstantSpeed;
+  const std::string mode =
+      d.getChoiceOr("drive.mode", {"constant_speed", "free"}, "constant_speed");
+  e.drive.mode =
+      mode == "free" ? mbd::CrankDrive::Mode::Free : mbd::CrankDrive::Mode::ConstantSpeed;
   e.drive.speed_radps = d.getNumber("drive.speed_rpm", Sign::Positive) * M_PI / 30.0;
   e.drive.flywheelInertia_kgm2 =
       d.getNumberOr("drive.flywheel_inertia_kg_m2", 0.0, Sign::NonNegative);
@@ -77,7 +80,8 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
       (!table.empty() && table[0] == '/') ? table : d.getDirectory() + table;
   deck.crankcasePressure_Pa =
       d.getNumberOr("gas.crankcase_pressure_bar", 1.01325, Sign::NonNegative) * kBar;
-  if (const auto imep = d.getOptionalNumber("gas.stated_imep_kPa")) deck.statedImep_Pa = *imep * 1e3;
+  if (const auto imep = d.getOptionalNumber("gas.stated_imep_kPa"))
+    deck.statedImep_Pa = *imep * 1e3;
 
   deck.linerModel = d.getChoiceOr("liner.model", {"ideal_guide"}, "ideal_guide");
 
@@ -87,7 +91,7 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
   s.outputStep_deg = d.getNumberOr("simulation.output_step_deg", 1.0, Sign::Positive);
   const std::string integ = d.getChoiceOr("simulation.integrator",
                                           {"rk_merson", "rk_feldberg", "cpodes_bdf"}, "rk_merson");
-  s.integrator = integ == "rk_feldberg"  ? plugin::SimulationSettings::Integrator::RungeKuttaFeldberg
+  s.integrator = integ == "rk_feldberg" ? plugin::SimulationSettings::Integrator::RungeKuttaFeldberg
                  : integ == "cpodes_bdf" ? plugin::SimulationSettings::Integrator::CPodesBDF
                                          : plugin::SimulationSettings::Integrator::RungeKuttaMerson;
   s.accuracy = d.getNumberOr("simulation.accuracy", 1e-9, Sign::Positive);
@@ -107,7 +111,8 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
     if (g.conrodLength_m <= reach) {
       d.addProblem("geometry.conrod_length_mm",
                    "the rod must be longer than half the stroke plus |pin offset + crank "
-                   "offset| = " + std::to_string(reach / kMm) + " mm");
+                   "offset| = " +
+                       std::to_string(reach / kMm) + " mm");
     }
     if (e.piston.skirtTopAbovePin_m > e.piston.compressionHeight_m) {
       d.addProblem("piston.skirt_top_above_pin_mm",
@@ -123,8 +128,8 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
   } catch (const std::invalid_argument& ex) {
     throw DeckError(deckPath + ": " + ex.what());
   }
-  deck.cylinderPressure =
-      std::make_shared<const mbd::CylinderPressureCurve>(readPressureTableCsv(deck.cylinderPressureFile));
+  deck.cylinderPressure = std::make_shared<const mbd::CylinderPressureCurve>(
+      readPressureTableCsv(deck.cylinderPressureFile));
   if (deck.statedImep_Pa) {
     const double imep = calcDeckImep_Pa(deck);
     const double rel = std::abs(imep - *deck.statedImep_Pa) / std::abs(*deck.statedImep_Pa);
@@ -141,7 +146,8 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
 
 double calcDeckImep_Pa(const EngineDeck& deck) {
   const mbd::SliderCrank kin(deck.engine.geometry);
-  const mbd::CylinderVolume vol(kin, deck.engine.piston.bore_m, deck.engine.geometry.compressionRatio);
+  const mbd::CylinderVolume vol(kin, deck.engine.piston.bore_m,
+                                deck.engine.geometry.compressionRatio);
   return mbd::calcImep_Pa(*deck.cylinderPressure, vol);
 }
 

@@ -14,7 +14,8 @@ namespace {
 
 std::string trim(const std::string& s) {
   const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return {};
+  if (b == std::string::npos)
+    return {};
   const auto e = s.find_last_not_of(" \t\r");
   return s.substr(b, e - b + 1);
 }
@@ -23,13 +24,16 @@ std::vector<std::string> splitCsv(const std::string& line) {
   std::vector<std::string> out;
   std::stringstream ss(line);
   std::string f;
-  while (std::getline(ss, f, ',')) out.push_back(trim(f));
-  if (!line.empty() && line.back() == ',') out.emplace_back();
+  while (std::getline(ss, f, ','))
+    out.push_back(trim(f));
+  if (!line.empty() && line.back() == ',')
+    out.emplace_back();
   return out;
 }
 
 bool parseDouble(const std::string& text, double& value) {
-  if (text.empty()) return false;
+  if (text.empty())
+    return false;
   char* end = nullptr;
   errno = 0;
   value = std::strtod(text.c_str(), &end);
@@ -40,7 +44,8 @@ bool parseDouble(const std::string& text, double& value) {
 
 mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath) {
   std::ifstream in(filePath);
-  if (!in) throw DeckError(filePath + ": cannot open the cylinder-pressure table");
+  if (!in)
+    throw DeckError(filePath + ": cannot open the cylinder-pressure table");
   static const std::map<std::string, double> kUnits = {
       {"pressure_Pa", 1.0}, {"pressure_kPa", 1e3}, {"pressure_bar", 1e5}, {"pressure_MPa", 1e6}};
 
@@ -53,13 +58,16 @@ mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath) {
   while (std::getline(in, line)) {
     ++lineNo;
     const std::string t = trim(line);
-    if (t.empty() || t[0] == '#') continue;
+    if (t.empty() || t[0] == '#')
+      continue;
     const std::vector<std::string> f = splitCsv(t);
     const std::string at = filePath + ":" + std::to_string(lineNo) + ": ";
     if (!haveHeader) {
       if (f.size() != 2 || f[0] != "crank_angle_deg" || kUnits.count(f[1]) == 0) {
-        throw DeckError(at + "expected the header 'crank_angle_deg,pressure_<unit>' with unit "
-                             "Pa, kPa, bar or MPa (absolute), found '" + t + "'");
+        throw DeckError(at +
+                        "expected the header 'crank_angle_deg,pressure_<unit>' with unit "
+                        "Pa, kPa, bar or MPa (absolute), found '" +
+                        t + "'");
       }
       toPa = kUnits.at(f[1]);
       haveHeader = true;
@@ -70,8 +78,10 @@ mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath) {
                       std::to_string(f.size()));
     }
     double a = 0.0, p = 0.0;
-    if (!parseDouble(f[0], a)) throw DeckError(at + "crank angle '" + f[0] + "' is not a number");
-    if (!parseDouble(f[1], p)) throw DeckError(at + "pressure '" + f[1] + "' is not a number");
+    if (!parseDouble(f[0], a))
+      throw DeckError(at + "crank angle '" + f[0] + "' is not a number");
+    if (!parseDouble(f[1], p))
+      throw DeckError(at + "pressure '" + f[1] + "' is not a number");
     if (!angle.empty() && !(a > angle.back())) {
       throw DeckError(at + "crank angle " + f[0] + " deg is not greater than the previous row's (" +
                       std::to_string(angle.back()) + " deg); angles must increase");
@@ -83,7 +93,8 @@ mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath) {
     pressure.push_back(p * toPa);
     lineOfRow.push_back(lineNo);
   }
-  if (!haveHeader) throw DeckError(filePath + ": empty table (no header line)");
+  if (!haveHeader)
+    throw DeckError(filePath + ": empty table (no header line)");
   try {
     return mbd::CylinderPressureCurve(std::move(angle), std::move(pressure));
   } catch (const std::invalid_argument& e) {

@@ -10,7 +10,8 @@
 namespace pistondyn::cli {
 
 std::string formatNumber(double v) {
-  if (!std::isfinite(v)) return std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf");
+  if (!std::isfinite(v))
+    return std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf");
   std::array<char, 32> buf{};
   const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), v);
   return std::string(buf.data(), res.ptr);
@@ -18,13 +19,15 @@ std::string formatNumber(double v) {
 
 void writeCsv(std::ostream& out, const plugin::ResultTable& table,
               const std::vector<std::string>& commentLines) {
-  for (const auto& c : commentLines) out << "# " << c << '\n';
+  for (const auto& c : commentLines)
+    out << "# " << c << '\n';
   for (std::size_t j = 0; j < table.columns.size(); ++j) {
     out << (j ? "," : "") << table.columns[j];
   }
   out << '\n';
   for (const auto& row : table.rows) {
-    for (std::size_t j = 0; j < row.size(); ++j) out << (j ? "," : "") << formatNumber(row[j]);
+    for (std::size_t j = 0; j < row.size(); ++j)
+      out << (j ? "," : "") << formatNumber(row[j]);
     out << '\n';
   }
 }
@@ -33,11 +36,21 @@ std::string JsonWriter::quote(const std::string& s) {
   std::string q = "\"";
   for (const char c : s) {
     switch (c) {
-      case '"': q += "\\\""; break;
-      case '\\': q += "\\\\"; break;
-      case '\n': q += "\\n"; break;
-      case '\t': q += "\\t"; break;
-      case '\r': q += "\\r"; break;
+      case '"':
+        q += "\\\"";
+        break;
+      case '\\':
+        q += "\\\\";
+        break;
+      case '\n':
+        q += "\\n";
+        break;
+      case '\t':
+        q += "\\t";
+        break;
+      case '\r':
+        q += "\\r";
+        break;
       default:
         if (static_cast<unsigned char>(c) < 0x20) {
           char buf[8];
@@ -53,11 +66,13 @@ std::string JsonWriter::quote(const std::string& s) {
 
 void JsonWriter::prefix(const std::string& key) {
   if (!first_.empty()) {
-    if (!first_.back()) out_ << ",";
+    if (!first_.back())
+      out_ << ",";
     first_.back() = false;
     out_ << "\n" << std::string(2 * first_.size(), ' ');
   }
-  if (!key.empty()) out_ << quote(key) << ": ";
+  if (!key.empty())
+    out_ << quote(key) << ": ";
 }
 
 JsonWriter& JsonWriter::beginObject(const std::string& key) {
@@ -70,7 +85,8 @@ JsonWriter& JsonWriter::beginObject(const std::string& key) {
 JsonWriter& JsonWriter::endObject() {
   first_.pop_back();
   out_ << "\n" << std::string(2 * first_.size(), ' ') << "}";
-  if (first_.empty()) out_ << "\n";
+  if (first_.empty())
+    out_ << "\n";
   return *this;
 }
 
@@ -112,18 +128,24 @@ JsonWriter& JsonWriter::value(const std::string& key, const std::string& v) {
   return *this;
 }
 
-JsonWriter& JsonWriter::arrayValue(const std::string& v) { return value(std::string(), v); }
-JsonWriter& JsonWriter::arrayValue(double v) { return value(std::string(), v); }
+JsonWriter& JsonWriter::arrayValue(const std::string& v) {
+  return value(std::string(), v);
+}
+JsonWriter& JsonWriter::arrayValue(double v) {
+  return value(std::string(), v);
+}
 
 void writeFilesAtomically(const std::string& dir,
                           const std::vector<std::pair<std::string, std::string>>& files) {
   namespace fs = std::filesystem;
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec) throw std::runtime_error(dir + ": cannot create the output folder: " + ec.message());
+  if (ec)
+    throw std::runtime_error(dir + ": cannot create the output folder: " + ec.message());
   std::vector<fs::path> temps;
   auto cleanup = [&] {
-    for (const auto& t : temps) fs::remove(t, ec);
+    for (const auto& t : temps)
+      fs::remove(t, ec);
   };
   for (const auto& [name, content] : files) {
     const fs::path tmp = fs::path(dir) / ("." + name + ".partial");

@@ -22,10 +22,13 @@ const char* kFrameConvention =
 
 const char* pinJointName(mbd::PinJoint j) {
   switch (j) {
-    case mbd::PinJoint::FixedInRod: return "fixed_in_rod";
-    case mbd::PinJoint::FixedInPiston: return "fixed_in_piston";
+    case mbd::PinJoint::FixedInRod:
+      return "fixed_in_rod";
+    case mbd::PinJoint::FixedInPiston:
+      return "fixed_in_piston";
     case mbd::PinJoint::Floating:
-    default: return "floating";
+    default:
+      return "floating";
   }
 }
 
@@ -44,14 +47,16 @@ CycleSummary summarize(const EngineDeck& deck, const plugin::ResultTable& table,
                        const plugin::SimulationSettings& settings) {
   CycleSummary s;
   const mbd::SliderCrank kin(deck.engine.geometry);
-  const mbd::CylinderVolume vol(kin, deck.engine.piston.bore_m, deck.engine.geometry.compressionRatio);
+  const mbd::CylinderVolume vol(kin, deck.engine.piston.bore_m,
+                                deck.engine.geometry.compressionRatio);
   s.imep_Pa = mbd::calcImep_Pa(*deck.cylinderPressure, vol);
   s.displacement_m3 = vol.displacement_m3();
   s.kinematicStroke_m = kin.stroke_m();
 
   // Last cycle: the final 720/step rows (the first row of the cycle repeats as the
   // last one, so it is left out of the means).
-  const std::size_t perCycle = static_cast<std::size_t>(std::lround(720.0 / settings.outputStep_deg));
+  const std::size_t perCycle =
+      static_cast<std::size_t>(std::lround(720.0 / settings.outputStep_deg));
   const std::size_t end = table.rows.size() - 1, begin = end - perCycle;
   const std::size_t ia = table.columnIndex("crank_angle_deg");
   const std::size_t ip = table.columnIndex("cylinder_pressure_Pa");
@@ -104,7 +109,8 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
   j.value("frame_convention", kFrameConvention);
   j.value("deck_file", deck.deckPath);
   j.beginArray("overrides");
-  for (const auto& ov : deck.overrides) j.arrayValue(ov);
+  for (const auto& ov : deck.overrides)
+    j.arrayValue(ov);
   j.endArray();
 
   j.beginObject("inputs");
@@ -138,7 +144,8 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
   j.beginObject("gas")
       .value("cylinder_pressure_file", deck.cylinderPressureFile)
       .value("crankcase_pressure_Pa", deck.crankcasePressure_Pa);
-  if (deck.statedImep_Pa) j.value("stated_imep_Pa", *deck.statedImep_Pa);
+  if (deck.statedImep_Pa)
+    j.value("stated_imep_Pa", *deck.statedImep_Pa);
   j.endObject();
   j.value("liner_model", deck.linerModel);
   j.beginObject("simulation")
@@ -188,7 +195,8 @@ RunOutcome runDeck(const EngineDeck& deck, const std::string& outDir,
     writeCsv(csv, o.table,
              {std::string("pistondyn ") + PISTONDYN_VERSION + " cycle results for " + deck.deckPath,
               kAngleConvention, kFrameConvention});
-    writeFilesAtomically(outDir, {{"cycle.csv", csv.str()}, {"summary.json", makeSummaryJson(deck, o)}});
+    writeFilesAtomically(outDir,
+                         {{"cycle.csv", csv.str()}, {"summary.json", makeSummaryJson(deck, o)}});
   }
   return o;
 }

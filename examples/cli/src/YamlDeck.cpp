@@ -12,7 +12,8 @@ std::vector<std::string> splitPath(const std::string& path) {
   std::vector<std::string> parts;
   std::stringstream ss(path);
   std::string p;
-  while (std::getline(ss, p, '.')) parts.push_back(p);
+  while (std::getline(ss, p, '.'))
+    parts.push_back(p);
   return parts;
 }
 
@@ -28,8 +29,9 @@ YamlDeck::YamlDeck(std::string filePath) : filePath_(std::move(filePath)) {
                     ": not valid YAML: " + e.msg);
   }
   if (!root_.IsMap()) {
-    throw DeckError(filePath_ + ": the deck must be a YAML mapping of sections (engine:, "
-                                "geometry:, ...)");
+    throw DeckError(filePath_ +
+                    ": the deck must be a YAML mapping of sections (engine:, "
+                    "geometry:, ...)");
   }
 }
 
@@ -55,12 +57,14 @@ void YamlDeck::applyOverride(const std::string& assignment) {
   // yaml-cpp nodes are handles: walk with a copy and assign into the last map.
   YAML::Node node = root_;
   for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
-    if (parts[i].empty()) throw DeckError("--set " + path + ": empty key in the path");
+    if (parts[i].empty())
+      throw DeckError("--set " + path + ": empty key in the path");
     YAML::Node child = node[parts[i]];
     if (child.IsDefined() && !child.IsMap()) {
       throw DeckError("--set " + path + ": '" + parts[i] + "' is a value, not a section");
     }
-    if (!child.IsDefined()) node[parts[i]] = YAML::Node(YAML::NodeType::Map);
+    if (!child.IsDefined())
+      node[parts[i]] = YAML::Node(YAML::NodeType::Map);
     node.reset(node[parts[i]]);
   }
   node[parts.back()] = value;
@@ -71,9 +75,11 @@ YAML::Node YamlDeck::lookup(const std::string& path) const {
   // Walk through const references so a missing key is never inserted.
   YAML::Node cur = root_;
   for (const std::string& p : splitPath(path)) {
-    if (!cur.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
+    if (!cur.IsMap())
+      return YAML::Node(YAML::NodeType::Undefined);
     const YAML::Node next = static_cast<const YAML::Node&>(cur)[p];
-    if (!next.IsDefined()) return YAML::Node(YAML::NodeType::Undefined);
+    if (!next.IsDefined())
+      return YAML::Node(YAML::NodeType::Undefined);
     cur.reset(next);
   }
   return cur;
@@ -85,7 +91,8 @@ bool YamlDeck::has(const std::string& path) const {
 }
 
 std::string YamlDeck::where(const std::string& path) const {
-  if (overridden_.count(path) != 0) return "--set " + path;
+  if (overridden_.count(path) != 0)
+    return "--set " + path;
   const YAML::Node n = lookup(path);
   if (n.IsDefined() && n.Mark().line >= 0) {
     return filePath_ + ":" + std::to_string(n.Mark().line + 1) + ": " + path;
@@ -110,12 +117,13 @@ void YamlDeck::collectUnknown(const YAML::Node& node, const std::string& prefix)
     const std::string key = kv.first.as<std::string>();
     const std::string path = prefix.empty() ? key : prefix + "." + key;
     if (known_.count(path) == 0) {
-      const std::string at = overridden_.count(path) != 0
-                                 ? "--set " + path
-                                 : filePath_ + ":" + std::to_string(kv.first.Mark().line + 1) +
-                                       ": " + path;
-      problems_.push_back(at + ": unknown key (misspelt, or a unit the key does not take? "
-                               "see the deck reference in README.md)");
+      const std::string at =
+          overridden_.count(path) != 0
+              ? "--set " + path
+              : filePath_ + ":" + std::to_string(kv.first.Mark().line + 1) + ": " + path;
+      problems_.push_back(at +
+                          ": unknown key (misspelt, or a unit the key does not take? "
+                          "see the deck reference in README.md)");
     } else if (kv.second.IsMap()) {
       collectUnknown(kv.second, path);
     }
@@ -134,7 +142,8 @@ std::optional<double> YamlDeck::readNumber(const std::string& path, Sign sign, b
   markKnown(path);
   const YAML::Node n = lookup(path);
   if (!n.IsDefined() || n.IsNull()) {
-    if (required) addProblem(path, "missing key (a number is required)");
+    if (required)
+      addProblem(path, "missing key (a number is required)");
     return std::nullopt;
   }
   if (!n.IsScalar()) {
@@ -177,7 +186,8 @@ double YamlDeck::getNumberOr(const std::string& path, double fallback, Sign sign
 
 long YamlDeck::getIntegerOr(const std::string& path, long fallback, long minimum) {
   const std::optional<double> v = readNumber(path, Sign::Any, false);
-  if (!v) return fallback;
+  if (!v)
+    return fallback;
   if (*v != std::floor(*v) || *v < static_cast<double>(minimum)) {
     addProblem(path, "must be a whole number >= " + std::to_string(minimum));
     return fallback;
@@ -207,19 +217,23 @@ std::string YamlDeck::getChoiceOr(const std::string& path, const std::vector<std
   }
   const std::string v = getString(path);
   for (const auto& c : choices) {
-    if (v == c) return v;
+    if (v == c)
+      return v;
   }
   std::string list;
-  for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
+  for (const auto& c : choices)
+    list += (list.empty() ? "" : ", ") + c;
   addProblem(path, "'" + v + "' is not one of: " + list);
   return fallback;
 }
 
 void YamlDeck::finish() {
   collectUnknown(root_, "");
-  if (problems_.empty()) return;
+  if (problems_.empty())
+    return;
   std::string all;
-  for (const auto& p : problems_) all += p + "\n";
+  for (const auto& p : problems_)
+    all += p + "\n";
   all.pop_back();
   throw DeckError(all);
 }

@@ -80,8 +80,8 @@ bool parseArgs(int argc, char** argv, Args& a, std::string& error) {
   return true;
 }
 
-void printSummary(const pistondyn::cli::EngineDeck& deck,
-                  const pistondyn::cli::RunOutcome& o, const std::string& outDir) {
+void printSummary(const pistondyn::cli::EngineDeck& deck, const pistondyn::cli::RunOutcome& o,
+                  const std::string& outDir) {
   const auto& s = o.summary;
   std::printf("pistondyn: %s\n", deck.engine.name.c_str());
   std::printf("  %d cycle(s) at %.0f rpm, %zu rows, %.3f s wall time, %ld integrator steps\n",
@@ -138,7 +138,8 @@ int main(int argc, char** argv) {
       }
     };
     const auto outcome = pistondyn::cli::runDeck(deck, args.outDir, progress);
-    if (!args.quiet) std::fprintf(stderr, "\r");
+    if (!args.quiet)
+      std::fprintf(stderr, "\r");
     printSummary(deck, outcome, args.outDir);
   } catch (const std::exception& e) {
     std::cerr << "\npistondyn: the run failed; no results were written: " << e.what() << "\n";

@@ -88,7 +88,7 @@ class CrankTrain {
   SliderCrank kinematics_;
   const SimTK::SimbodyMatterSubsystem& matter_;
   SimTK::MobilizedBody crank_, conrod_, pin_, piston_;
-  double crankFrameRotation_rad_ = 0.0;   // phi_TDC baked into the crank's inboard frame
+  double crankFrameRotation_rad_ = 0.0;  // phi_TDC baked into the crank's inboard frame
 };
 
 }  // namespace pistondyn::mbd

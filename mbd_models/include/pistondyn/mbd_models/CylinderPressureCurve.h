@@ -38,9 +38,9 @@ class CylinderPressureCurve {
   int findInterval(double wrappedAngle_deg) const;
   double wrap(double crankAngle_deg) const;
 
-  std::vector<double> angle_;   // distinct knots, angle_[0] .. angle_[n-1] < angle_[0] + 720
-  std::vector<double> p_;       // knot values
-  std::vector<double> m_;       // knot second derivatives (periodic spline)
+  std::vector<double> angle_;  // distinct knots, angle_[0] .. angle_[n-1] < angle_[0] + 720
+  std::vector<double> p_;      // knot values
+  std::vector<double> m_;      // knot second derivatives (periodic spline)
   double peak_Pa_ = 0.0, peakAngle_deg_ = 0.0;
 };
 

@@ -21,19 +21,19 @@ enum class PinJoint {
 };
 
 struct CrankTrainGeometry {
-  double crankRadius_m = 0.0;   // r = stroke / 2 (for zero offsets) [m], required > 0
-  double conrodLength_m = 0.0;  // big-end to small-end centre distance L [m], required > r
-  double pinOffset_m = 0.0;     // pin axis x relative to the piston axis, + towards thrust [m]
-  double crankOffset_m = 0.0;   // cylinder axis x relative to the crank axis (desaxe),
-                                // + towards thrust [m]
+  double crankRadius_m = 0.0;      // r = stroke / 2 (for zero offsets) [m], required > 0
+  double conrodLength_m = 0.0;     // big-end to small-end centre distance L [m], required > r
+  double pinOffset_m = 0.0;        // pin axis x relative to the piston axis, + towards thrust [m]
+  double crankOffset_m = 0.0;      // cylinder axis x relative to the crank axis (desaxe),
+                                   // + towards thrust [m]
   double compressionRatio = 10.0;  // (V_d + V_c) / V_c [-], required > 1
 };
 
 struct PistonGeometry {
-  double bore_m = 0.0;                // cylinder bore diameter [m], required > 0
-  double compressionHeight_m = 0.0;   // pin axis to crown top along the piston axis [m], > 0
-  double skirtLength_m = 0.0;         // axial length of the skirt [m], > 0
-  double skirtTopAbovePin_m = 0.0;    // skirt top edge above the pin axis [m] (may be < 0)
+  double bore_m = 0.0;               // cylinder bore diameter [m], required > 0
+  double compressionHeight_m = 0.0;  // pin axis to crown top along the piston axis [m], > 0
+  double skirtLength_m = 0.0;        // axial length of the skirt [m], > 0
+  double skirtTopAbovePin_m = 0.0;   // skirt top edge above the pin axis [m] (may be < 0)
 };
 
 // Mass properties of one body. Only the in-plane (about z) inertia affects the planar
@@ -41,10 +41,10 @@ struct PistonGeometry {
 // other two principal moments are taken equal to Izz (a documented, harmless choice:
 // they only enter out-of-plane reaction moments that are not reported).
 struct PlanarMassProperties {
-  double mass_kg = 0.0;        // > 0
-  double comX_m = 0.0;         // centre of mass in the body frame [m]
-  double comY_m = 0.0;         // centre of mass in the body frame [m]
-  double inertiaZZ_kgm2 = 0.0; // moment of inertia about the z axis through the COM [kg m^2], >= 0
+  double mass_kg = 0.0;         // > 0
+  double comX_m = 0.0;          // centre of mass in the body frame [m]
+  double comY_m = 0.0;          // centre of mass in the body frame [m]
+  double inertiaZZ_kgm2 = 0.0;  // moment of inertia about the z axis through the COM [kg m^2], >= 0
 };
 
 // Body frames:
@@ -53,18 +53,18 @@ struct PlanarMassProperties {
 //   pin    : origin at the pin centre
 //   piston : origin on the piston axis at the pin-axis height, +y towards the crown
 struct CrankTrainMassProperties {
-  PlanarMassProperties crank;    // crank throw incl. counterweights (COM often at comY < 0)
+  PlanarMassProperties crank;  // crank throw incl. counterweights (COM often at comY < 0)
   PlanarMassProperties conrod;
-  PlanarMassProperties pin;      // COM at the pin centre; comX/comY must be 0
-  PlanarMassProperties piston;   // piston without pin and rings' gas loads
+  PlanarMassProperties pin;     // COM at the pin centre; comX/comY must be 0
+  PlanarMassProperties piston;  // piston without pin and rings' gas loads
 };
 
 struct CrankDrive {
   enum class Mode { ConstantSpeed, Free };
   Mode mode = Mode::ConstantSpeed;
-  double speed_radps = 0.0;             // prescribed (ConstantSpeed) or initial (Free) speed, > 0
-  double flywheelInertia_kgm2 = 0.0;    // added to the crank about its axis (Free mode) [kg m^2]
-  double loadTorque_Nm = 0.0;           // constant torque opposing rotation (Free mode) [N m]
+  double speed_radps = 0.0;           // prescribed (ConstantSpeed) or initial (Free) speed, > 0
+  double flywheelInertia_kgm2 = 0.0;  // added to the crank about its axis (Free mode) [kg m^2]
+  double loadTorque_Nm = 0.0;         // constant torque opposing rotation (Free mode) [N m]
 };
 
 struct EngineDescription {

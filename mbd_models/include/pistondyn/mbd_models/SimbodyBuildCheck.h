@@ -7,7 +7,8 @@
 // constraints or motions (DESIGN.md section 5). The pistondyn CMake targets add
 // -UNDEBUG to every consumer; this guard stops a build that defeats that.
 #if defined(NDEBUG) && !defined(PISTONDYN_SIMBODY_BUILT_WITH_NDEBUG)
-#error "pistondyn: a translation unit including Simbody is compiled with NDEBUG, but the \
+#error \
+    "pistondyn: a translation unit including Simbody is compiled with NDEBUG, but the \
 Simbody it links (Debian libsimbody 3.7) was built without it. Remove -DNDEBUG (pistondyn's \
 CMake targets add -UNDEBUG), or define PISTONDYN_SIMBODY_BUILT_WITH_NDEBUG if your Simbody \
 really was built with NDEBUG."

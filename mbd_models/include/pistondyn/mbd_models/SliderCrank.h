@@ -20,7 +20,7 @@ class SliderCrank {
 
   double crankRadius_m() const { return r_; }
   double conrodLength_m() const { return L_; }
-  double pinLineX_m() const { return e_; }           // x of the pin-axis line [m]
+  double pinLineX_m() const { return e_; }  // x of the pin-axis line [m]
   double crankRotationAtTdc_rad() const { return phiTdc_; }
   double pinHeightAtTdc_m() const { return yTdc_; }
   double pinHeightAtBdc_m() const { return yBdc_; }

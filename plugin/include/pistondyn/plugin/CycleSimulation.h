@@ -22,12 +22,12 @@
 namespace pistondyn::plugin {
 
 struct SimulationSettings {
-  double startAngle_deg = 0.0;      // crank angle of the first row [deg]
-  int cycles = 1;                   // number of 720 deg cycles, >= 1
-  double outputStep_deg = 1.0;      // output interval [deg], > 0, must divide 720
+  double startAngle_deg = 0.0;  // crank angle of the first row [deg]
+  int cycles = 1;               // number of 720 deg cycles, >= 1
+  double outputStep_deg = 1.0;  // output interval [deg], > 0, must divide 720
   enum class Integrator { RungeKuttaMerson, RungeKuttaFeldberg, CPodesBDF };
   Integrator integrator = Integrator::RungeKuttaMerson;
-  double accuracy = 1e-9;             // integrator relative accuracy [-]
+  double accuracy = 1e-9;              // integrator relative accuracy [-]
   double constraintTolerance = 1e-11;  // constraint projection tolerance [-]
 };
 

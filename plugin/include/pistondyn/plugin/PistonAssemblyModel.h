@@ -39,7 +39,8 @@ class PistonAssemblyModel {
   template <class T>
   const T& getElementAs(const std::string& name) const {
     const T* e = dynamic_cast<const T*>(&getElement(name));
-    if (e == nullptr) throw std::invalid_argument("element '" + name + "' has another type");
+    if (e == nullptr)
+      throw std::invalid_argument("element '" + name + "' has another type");
     return *e;
   }
   std::vector<std::string> getElementNames() const;

@@ -18,7 +18,7 @@ struct EngineDeck {
   std::string deckPath;
   std::vector<std::string> overrides;  // the --set assignments applied, in order
   mbd::EngineDescription engine;
-  std::string cylinderPressureFile;    // as resolved (relative to the deck's folder)
+  std::string cylinderPressureFile;  // as resolved (relative to the deck's folder)
   std::shared_ptr<const mbd::CylinderPressureCurve> cylinderPressure;
   double crankcasePressure_Pa = 101325.0;
   std::optional<double> statedImep_Pa;  // checked against the table within 0.5 %

@@ -10,16 +10,16 @@ namespace pistondyn::cli {
 
 // Figures of the last simulated 720 deg cycle.
 struct CycleSummary {
-  double imep_Pa = 0.0;                 // from the pressure table
+  double imep_Pa = 0.0;  // from the pressure table
   double displacement_m3 = 0.0;
   double kinematicStroke_m = 0.0;
   double peakCylinderPressure_Pa = 0.0, peakCylinderPressureAngle_deg = 0.0;
   double sideForceMax_N = 0.0, sideForceMaxAngle_deg = 0.0;  // towards thrust
   double sideForceMin_N = 0.0, sideForceMinAngle_deg = 0.0;  // towards anti-thrust (< 0)
   double conrodForceMax_N = 0.0, conrodForceMin_N = 0.0;     // compression > 0
-  double meanCrankTorque_Nm = 0.0;     // rod on crank, cycle mean
+  double meanCrankTorque_Nm = 0.0;                           // rod on crank, cycle mean
   double meanDriveTorque_Nm = 0.0;
-  double indicatedPower_W = 0.0;       // mean crank torque x mean speed
+  double indicatedPower_W = 0.0;  // mean crank torque x mean speed
 };
 
 CycleSummary summarize(const EngineDeck& deck, const plugin::ResultTable& table,

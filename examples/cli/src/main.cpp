@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "pistondyn/cli/DeckError.h"
 #include "pistondyn/cli/EngineDeck.h"
 #include "pistondyn/cli/RunDeck.h"
@@ -129,10 +131,12 @@ int main(int argc, char** argv) {
     return 0;
   }
   try {
+    // A progress line only makes sense on a terminal; logs get the summary alone.
+    const bool showProgress = !args.quiet && isatty(fileno(stderr)) != 0;
     int lastPercent = -1;
     auto progress = [&](double f) {
       const int p = static_cast<int>(f * 100.0);
-      if (!args.quiet && p / 10 != lastPercent / 10) {
+      if (showProgress && p / 10 != lastPercent / 10) {
         std::fprintf(stderr, "\rpistondyn: %3d %%", p);
         lastPercent = p;
       }

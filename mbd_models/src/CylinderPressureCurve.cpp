@@ -140,27 +140,30 @@ int CylinderPressureCurve::findInterval(double w) const {
   return static_cast<int>(it - angle_.begin()) - 1;  // >= 0 because w >= angle_[0]
 }
 
-double CylinderPressureCurve::calcPressure_Pa(double crankAngle_deg) const {
-  if (!std::isfinite(crankAngle_deg))
-    fail("calcPressure_Pa: crank angle is not finite");
+CylinderPressureCurve::Segment CylinderPressureCurve::locate(double crankAngle_deg) const {
+  if (!std::isfinite(crankAngle_deg)) fail("crank angle is not finite");
   const double w = wrap(crankAngle_deg);
   const std::size_t n = angle_.size();
-  const std::size_t i = static_cast<std::size_t>(findInterval(w)), j = (i + 1) % n;
-  const double x1 = (i + 1 < n) ? angle_[i + 1] : angle_[0] + kCycle_deg;
-  const double h = x1 - angle_[i];
-  const double A = (x1 - w) / h, B = 1.0 - A;
-  return A * p_[i] + B * p_[j] + ((A * A * A - A) * m_[i] + (B * B * B - B) * m_[j]) * h * h / 6.0;
+  Segment g;
+  g.i = static_cast<std::size_t>(findInterval(w));
+  g.j = (g.i + 1) % n;
+  const double x1 = (g.i + 1 < n) ? angle_[g.i + 1] : angle_[0] + kCycle_deg;
+  g.h = x1 - angle_[g.i];
+  g.a = (x1 - w) / g.h;
+  g.b = 1.0 - g.a;
+  return g;
+}
+
+double CylinderPressureCurve::calcPressure_Pa(double crankAngle_deg) const {
+  const Segment g = locate(crankAngle_deg);
+  return g.a * p_[g.i] + g.b * p_[g.j] +
+         ((g.a * g.a * g.a - g.a) * m_[g.i] + (g.b * g.b * g.b - g.b) * m_[g.j]) * g.h * g.h / 6.0;
 }
 
 double CylinderPressureCurve::calcPressureSlope_Paperdeg(double crankAngle_deg) const {
-  const double w = wrap(crankAngle_deg);
-  const std::size_t n = angle_.size();
-  const std::size_t i = static_cast<std::size_t>(findInterval(w)), j = (i + 1) % n;
-  const double x1 = (i + 1 < n) ? angle_[i + 1] : angle_[0] + kCycle_deg;
-  const double h = x1 - angle_[i];
-  const double A = (x1 - w) / h, B = 1.0 - A;
-  return (p_[j] - p_[i]) / h - (3.0 * A * A - 1.0) / 6.0 * h * m_[i] +
-         (3.0 * B * B - 1.0) / 6.0 * h * m_[j];
+  const Segment g = locate(crankAngle_deg);
+  return (p_[g.j] - p_[g.i]) / g.h - (3.0 * g.a * g.a - 1.0) / 6.0 * g.h * m_[g.i] +
+         (3.0 * g.b * g.b - 1.0) / 6.0 * g.h * m_[g.j];
 }
 
 double calcImep_Pa(const CylinderPressureCurve& pressure, const CylinderVolume& volume) {

@@ -35,6 +35,13 @@ class CylinderPressureCurve {
   const std::vector<double>& getPressures_Pa() const { return p_; }
 
  private:
+  // Spline interval holding an angle: knots i, j (periodic), width h and the
+  // interpolation weights a (towards knot i) and b = 1 - a.
+  struct Segment {
+    std::size_t i, j;
+    double h, a, b;
+  };
+  Segment locate(double crankAngle_deg) const;
   int findInterval(double wrappedAngle_deg) const;
   double wrap(double crankAngle_deg) const;
 

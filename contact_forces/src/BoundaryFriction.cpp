@@ -103,8 +103,8 @@ Eigen::Matrix2d BoundaryFriction::calcShearStressVelocityJacobian(
 void BoundaryFriction::calcShearStressField(
     const Eigen::Ref<const Eigen::ArrayXXd>& contactPressure_Pa,
     const Eigen::Ref<const Eigen::ArrayXXd>& slidingVelocityX_mps,
-    const Eigen::Ref<const Eigen::ArrayXXd>& slidingVelocityY_mps,
-    Eigen::ArrayXXd& shearStressX_Pa, Eigen::ArrayXXd& shearStressY_Pa) const {
+    const Eigen::Ref<const Eigen::ArrayXXd>& slidingVelocityY_mps, Eigen::ArrayXXd& shearStressX_Pa,
+    Eigen::ArrayXXd& shearStressY_Pa) const {
   const Eigen::Index rows = contactPressure_Pa.rows();
   const Eigen::Index cols = contactPressure_Pa.cols();
   if (slidingVelocityX_mps.rows() != rows || slidingVelocityX_mps.cols() != cols ||
@@ -122,13 +122,13 @@ void BoundaryFriction::calcShearStressField(
       if (!(p >= 0.0) || !std::isfinite(p) || !std::isfinite(vx) || !std::isfinite(vy)) {
         const std::string at = "(" + std::to_string(i) + ", " + std::to_string(j) + ")";
         if (!(p >= 0.0) || !std::isfinite(p)) {
-          detail::throwInvalid("BoundaryFriction::calcShearStressField",
-                               "contactPressure_Pa" + at, p, "Pa", "non-negative and finite");
+          detail::throwInvalid("BoundaryFriction::calcShearStressField", "contactPressure_Pa" + at,
+                               p, "Pa", "non-negative and finite");
         }
-        detail::throwInvalid("BoundaryFriction::calcShearStressField",
-                             (std::isfinite(vx) ? "slidingVelocityY_mps" : "slidingVelocityX_mps") +
-                                 at,
-                             std::isfinite(vx) ? vy : vx, "m/s", "finite");
+        detail::throwInvalid(
+            "BoundaryFriction::calcShearStressField",
+            (std::isfinite(vx) ? "slidingVelocityY_mps" : "slidingVelocityX_mps") + at,
+            std::isfinite(vx) ? vy : vx, "m/s", "finite");
       }
     }
   }

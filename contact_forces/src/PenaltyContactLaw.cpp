@@ -53,7 +53,7 @@ PressureAndSlope PenaltyContactLaw::evalPressureAndSlope(double gap_m) const {
   const Step s = cubicStep(penetration / p.transitionDepth_m);
   const double relative = penetration / p.referencePenetration_m;
   const double power = std::pow(relative, p.exponent);  // (δ/δ_ref)^e
-  const double powerSlope =                              // d/dδ (δ/δ_ref)^e
+  const double powerSlope =                             // d/dδ (δ/δ_ref)^e
       p.exponent * std::pow(relative, p.exponent - 1.0) / p.referencePenetration_m;
   const double pressure = p.referencePressure_Pa * power * s.value;
   const double dPressure_dPenetration =

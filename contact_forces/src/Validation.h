@@ -36,8 +36,7 @@ inline void requireNonNegativeFinite(double value, const char* where, const char
   }
 }
 
-inline void requireFinite(double value, const char* where, const char* argument,
-                          const char* unit) {
+inline void requireFinite(double value, const char* where, const char* argument, const char* unit) {
   if (!std::isfinite(value)) {
     throwInvalid(where, argument, value, unit, "finite");
   }

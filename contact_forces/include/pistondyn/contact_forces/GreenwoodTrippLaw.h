@@ -36,17 +36,17 @@ enum class TailIntegralModel {
 };
 
 struct GreenwoodTrippParameters {
-  double roughnessSurface1_m = 0.4e-6;  // RMS roughness Rq of surface 1 (skirt) [m], ≥ 0
-  double roughnessSurface2_m = 0.3e-6;  // RMS roughness Rq of surface 2 (liner) [m], ≥ 0
+  double roughnessSurface1_m = 0.4e-6;          // RMS roughness Rq of surface 1 (skirt) [m], ≥ 0
+  double roughnessSurface2_m = 0.3e-6;          // RMS roughness Rq of surface 2 (liner) [m], ≥ 0
   ElasticMaterial surface1 = kPistonAluminium;  // E [Pa], ν [-] of surface 1; 75 GPa, 0.33
   ElasticMaterial surface2 = kCastIronLiner;    // E [Pa], ν [-] of surface 2; 115 GPa, 0.26
-  double roughnessParameter = 0.04;  // ηβσ [-], > 0; 0.04 as in many ring-pack papers
-  double sigmaOverBeta = 0.001;      // σ/β [-], > 0; 0.001 as in many ring-pack papers
+  double roughnessParameter = 0.04;             // ηβσ [-], > 0; 0.04 as in many ring-pack papers
+  double sigmaOverBeta = 0.001;                 // σ/β [-], > 0; 0.001 as in many ring-pack papers
   TailIntegralModel tailModel = TailIntegralModel::Exact;  // default exact integrals
-  PowerLawTailFit powerLawF52 = kPowerLawFitF52;     // used with PowerLawFit
-  PowerLawTailFit powerLawF2 = kPowerLawQuotedF2;    // used with PowerLawFit
-  PolynomialTailFit polynomialF52 = kPolynomialFitF52;  // used with PolynomialFit
-  PolynomialTailFit polynomialF2 = kPolynomialFitF2;    // used with PolynomialFit
+  PowerLawTailFit powerLawF52 = kPowerLawFitF52;           // used with PowerLawFit
+  PowerLawTailFit powerLawF2 = kPowerLawQuotedF2;          // used with PowerLawFit
+  PolynomialTailFit polynomialF52 = kPolynomialFitF52;     // used with PolynomialFit
+  PolynomialTailFit polynomialF2 = kPolynomialFitF2;       // used with PolynomialFit
 };
 
 // K = (8√2/15)·π·(ηβσ)²·√(σ/β) [-].
@@ -63,7 +63,7 @@ class GreenwoodTrippLaw final : public AsperityContactLaw {
 
   const GreenwoodTrippParameters& parameters() const { return parameters_; }
   double effectiveModulus_Pa() const { return effectiveModulus_Pa_; }  // E′ [Pa]
-  double coefficientK() const { return coefficientK_; }                 // K [-]
+  double coefficientK() const { return coefficientK_; }                // K [-]
   // K·E′ [Pa]: pressure per unit F_{5/2}.
   double pressureScale_Pa() const { return pressureScale_Pa_; }
 

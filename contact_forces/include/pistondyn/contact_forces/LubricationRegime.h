@@ -12,7 +12,7 @@ namespace pistondyn::contact {
 enum class LubricationRegime : std::uint8_t { Hydrodynamic = 0, Mixed = 1, Boundary = 2 };
 
 // Film-ratio bounds between the regimes [-].
-inline constexpr double kMixedRegimeUpperFilmRatio = 3.0;     // h/σ ≤ 3 is no longer hydrodynamic
+inline constexpr double kMixedRegimeUpperFilmRatio = 3.0;  // h/σ ≤ 3 is no longer hydrodynamic
 inline constexpr double kBoundaryRegimeUpperFilmRatio = 1.0;  // h/σ ≤ 1 is boundary
 
 // Regime of one node.

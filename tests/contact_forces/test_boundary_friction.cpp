@@ -11,6 +11,7 @@
 namespace pc = pistondyn::contact;
 
 namespace {
+constexpr double kPi = 3.14159265358979323846;
 const pc::FrictionRegularisation kBoth[] = {pc::FrictionRegularisation::Algebraic,
                                             pc::FrictionRegularisation::Tanh};
 
@@ -76,7 +77,7 @@ TEST(BoundaryFriction, ContinuousAtZeroSpeed) {
     const double p = 1e6;
     EXPECT_EQ(friction.calcShearStress_Pa(p, Eigen::Vector2d::Zero()).norm(), 0.0);
     for (int k = 0; k < 16; ++k) {
-      const double angle = 2.0 * M_PI * k / 16.0;
+      const double angle = 2.0 * kPi * k / 16.0;
       const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
       for (double speed : {1e-3, 1e-6, 1e-9, 1e-12, 1e-15}) {
         const double magnitude = friction.calcShearStress_Pa(p, speed * direction).norm();
@@ -96,7 +97,7 @@ TEST(BoundaryFriction, ContinuousAtZeroSpeed) {
 // 100 v_ε in random directions; step 1e-6 of the speed scale.
 TEST(BoundaryFriction, JacobianMatchesCentralDifference) {
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * kPi);
   for (auto kind : kBoth) {
     const pc::BoundaryFriction friction = makeFriction(kind);
     const double p = 3e6;

@@ -12,8 +12,8 @@
 // special-function form F_n(λ) = Γ(n+1)/√(2π) · e^(−λ²/4) · U(n+½, λ), U = parabolic
 // cylinder function (DLMF 12.5.1), cross-checked there against direct quadrature:
 //   - −32 ≤ λ < 37: piecewise Chebyshev series of degree 15 on unit intervals; relative
-//     error below 32·ε·max(1, |log F_n|) (ε = 2.2e-16): measured ≤ 3e-14 for |λ| ≤ 8 and
-//     ≤ 2e-13 up to λ = 37 against long-double quadrature. The bound grows with |log F_n|
+//     error below 32·ε·max(1, |log F_n|) (ε = 2.2e-16): measured ≤ 5e-15 for |λ| ≤ 8 and
+//     ≤ 1.1e-13 up to λ = 37 against long-double quadrature. The bound grows with |log F_n|
 //     because exp() turns the rounding of log F_n into a relative error of F_n;
 //   - λ < −32 (surfaces deep in overlap): the Gaussian-moment expansion
 //     F_n(−a) = Σ_k C(n,2k)(2k−1)!! a^(n−2k) with 8 terms (exact for integer n; the

@@ -1,0 +1,99 @@
+#pragma once
+// Strategy interface for asperity (solid-to-solid) contact laws.
+//
+// A law maps the nominal gap h between the two surfaces (mean-plane separation, m; h < 0
+// means the mean planes overlap) to the asperity contact pressure, its slope with respect
+// to the gap (for implicit and Newton-type solvers), the real-contact area fraction and
+// the lubrication regime. The film solver and the skirt–liner force element hold a
+// `std::shared_ptr<const AsperityContactLaw>` and never know which law is behind it, so a
+// user swaps Greenwood–Tripp for a dry penalty law (or their own) without touching them.
+//
+// Laws are immutable after construction: every method is const and touches no shared
+// mutable state, so one law object may be used by any number of threads at once.
+//
+// Calls come in two shapes:
+//   - per node:  calcPressure(h), calcPressureAndSlope(h), calcNode(h) — for loops
+//                inside solvers;
+//   - per field: calcField(gap, out) over a whole grid (any shape; Eigen array), filling
+//                a reusable ContactField (no allocation after the first call at a size).
+// Inputs are checked here (non-virtual interface); implementations override the eval*
+// hooks, which may assume a gap that is not NaN and not −inf.
+
+#include <Eigen/Core>
+#include <limits>
+
+#include "pistondyn/contact_forces/LubricationRegime.h"
+
+namespace pistondyn::contact {
+
+// Everything a law says about one node.
+struct ContactNodeState {
+  double pressure_Pa = 0.0;            // asperity contact pressure p_c ≥ 0 [Pa]
+  double dPressure_dGap_PaPerM = 0.0;  // ∂p_c/∂h ≤ 0 [Pa/m]
+  double realAreaFraction = 0.0;       // A_c/A in [0, 1] [-]
+  double filmRatio = std::numeric_limits<double>::infinity();  // h/σ [-]
+  LubricationRegime regime = LubricationRegime::Hydrodynamic;
+};
+
+// Per-node results on a grid, same shape as the gap field. Keep one per solver and pass
+// it to every call: it is resized only when the grid size changes.
+struct ContactField {
+  Eigen::ArrayXXd pressure_Pa;            // [Pa]
+  Eigen::ArrayXXd dPressure_dGap_PaPerM;  // [Pa/m]
+  Eigen::ArrayXXd realAreaFraction;       // [-]
+  Eigen::ArrayXXd filmRatio;              // h/σ [-]
+  Eigen::Array<LubricationRegime, Eigen::Dynamic, Eigen::Dynamic> regime;
+
+  // Resize all members to rows × cols (no-op when already that size).
+  void resize(Eigen::Index rows, Eigen::Index cols);
+};
+
+// Pressure and its slope at one node.
+struct PressureAndSlope {
+  double pressure_Pa = 0.0;            // [Pa]
+  double dPressure_dGap_PaPerM = 0.0;  // [Pa/m]
+};
+
+class AsperityContactLaw {
+ public:
+  virtual ~AsperityContactLaw() = default;
+
+  // Short name of the law, e.g. "GreenwoodTripp".
+  virtual const char* name() const = 0;
+
+  // Composite RMS roughness σ used for h/σ and the regime [m] (> 0).
+  virtual double compositeSigma_m() const = 0;
+
+  // Asperity pressure at gap h.
+  // Inputs:  gap_m  nominal gap h [m]; NaN and −inf throw std::invalid_argument,
+  //                 +inf means "far apart" (no contact)
+  // Outputs: p_c [Pa] ≥ 0
+  double calcPressure(double gap_m) const;
+
+  // Pressure and ∂p_c/∂h at gap h (same inputs as calcPressure).
+  PressureAndSlope calcPressureAndSlope(double gap_m) const;
+
+  // Pressure, slope, area fraction, h/σ and regime at gap h (same inputs).
+  ContactNodeState calcNode(double gap_m) const;
+
+  // All of calcNode over a gap field of any shape (a column ArrayXd binds too).
+  // Inputs:  gap_m  nominal gap per node [m]; a NaN or −inf entry throws
+  //                 std::invalid_argument naming its index
+  // Outputs: out    resized to the shape of gap_m and filled
+  void calcField(const Eigen::Ref<const Eigen::ArrayXXd>& gap_m, ContactField& out) const;
+
+  // Regime at gap h (h/σ with this law's σ).
+  LubricationRegime classify(double gap_m) const;
+
+ protected:
+  // Hooks: gap_m is never NaN or −inf here.
+  virtual double evalPressure(double gap_m) const = 0;
+  virtual PressureAndSlope evalPressureAndSlope(double gap_m) const = 0;
+  // Real-contact area fraction in [0, 1].
+  virtual double evalAreaFraction(double gap_m) const = 0;
+  // Default: evalPressureAndSlope + evalAreaFraction + regime. Override when the three can
+  // share work.
+  virtual ContactNodeState evalNode(double gap_m) const;
+};
+
+}  // namespace pistondyn::contact

@@ -1,0 +1,87 @@
+#pragma once
+// Greenwood–Tripp asperity contact of two nominally flat rough surfaces
+// (J.A. Greenwood & J.H. Tripp, "The contact of two nominally flat rough surfaces",
+// Proc. IMechE 185 (1970–71) 625–633), in the form used by the ring-pack and skirt
+// literature:
+//
+//   p_c(h)   = K · E′ · F_{5/2}(h/σ),     K = (8√2/15) · π · (ηβσ)² · √(σ/β)
+//   A_c/A    = π² · (ηβσ)² · F_2(h/σ)
+//   ∂p_c/∂h  = −(5/2) · K · E′ · F_{3/2}(h/σ) / σ
+//
+// σ  composite RMS roughness √(Rq1² + Rq2²);  η asperity density;  β asperity radius;
+// E′ = 2 / [(1−ν1²)/E1 + (1−ν2²)/E2] = 2E* (see SurfacePair.h).
+//
+// Why K goes with E′ = 2E*: for a pair of asperities (radius β each, so Hertz radius β/2)
+// whose summits are offset laterally by r and overlap by w0 − r²/(4β), Hertz gives the
+// load (4/3)E*(β/2)^½ (w0 − r²/4β)^{3/2}. Summing over partners (η per unit area each
+// surface, η·2πr dr partners at offset r) gives (8π/5)·β·w0^{5/2} per asperity times
+// (4/3)E*(β/2)^½·η², and averaging over the Gaussian sum of the two heights (σ composite)
+// gives p_c = (16√2/15)·π·(ηβσ)²·√(σ/β)·E*·F_{5/2} = K·(2E*)·F_{5/2}. The same sum over
+// Hertz areas π(β/2)(w0 − r²/4β) gives π²(ηβσ)²F_2 for the area.
+//
+// The integrals are exact by default (GaussianTailIntegrals.h); the power-law and
+// polynomial fits of other codes can be selected for comparison.
+
+#include "pistondyn/contact_forces/AsperityContactLaw.h"
+#include "pistondyn/contact_forces/GaussianTailIntegrals.h"
+#include "pistondyn/contact_forces/SurfacePair.h"
+
+namespace pistondyn::contact {
+
+// How F_{5/2} and F_2 are evaluated.
+enum class TailIntegralModel {
+  Exact,          // exact integrals (default)
+  PowerLawFit,    // powerLawF52 / powerLawF2 below
+  PolynomialFit,  // polynomialF52 / polynomialF2 below
+};
+
+struct GreenwoodTrippParameters {
+  double roughnessSurface1_m = 0.4e-6;          // RMS roughness Rq of surface 1 (skirt) [m], ≥ 0
+  double roughnessSurface2_m = 0.3e-6;          // RMS roughness Rq of surface 2 (liner) [m], ≥ 0
+  ElasticMaterial surface1 = kPistonAluminium;  // E [Pa], ν [-] of surface 1; 75 GPa, 0.33
+  ElasticMaterial surface2 = kCastIronLiner;    // E [Pa], ν [-] of surface 2; 115 GPa, 0.26
+  double roughnessParameter = 0.04;             // ηβσ [-], > 0; 0.04 as in many ring-pack papers
+  double sigmaOverBeta = 0.001;                 // σ/β [-], > 0; 0.001 as in many ring-pack papers
+  TailIntegralModel tailModel = TailIntegralModel::Exact;  // default exact integrals
+  PowerLawTailFit powerLawF52 = kPowerLawFitF52;           // used with PowerLawFit
+  PowerLawTailFit powerLawF2 = kPowerLawQuotedF2;          // used with PowerLawFit
+  PolynomialTailFit polynomialF52 = kPolynomialFitF52;     // used with PolynomialFit
+  PolynomialTailFit polynomialF2 = kPolynomialFitF2;       // used with PolynomialFit
+};
+
+// K = (8√2/15)·π·(ηβσ)²·√(σ/β) [-].
+// Throws std::invalid_argument when either argument is ≤ 0 or not finite.
+double greenwoodTrippCoefficient(double roughnessParameter, double sigmaOverBeta);
+
+class GreenwoodTrippLaw final : public AsperityContactLaw {
+ public:
+  // Checks every parameter; throws std::invalid_argument naming the bad one.
+  explicit GreenwoodTrippLaw(const GreenwoodTrippParameters& parameters = {});
+
+  const char* name() const override { return "GreenwoodTripp"; }
+  double compositeSigma_m() const override { return sigma_m_; }
+
+  const GreenwoodTrippParameters& parameters() const { return parameters_; }
+  double effectiveModulus_Pa() const { return effectiveModulus_Pa_; }  // E′ [Pa]
+  double coefficientK() const { return coefficientK_; }                // K [-]
+  // K·E′ [Pa]: pressure per unit F_{5/2}.
+  double pressureScale_Pa() const { return pressureScale_Pa_; }
+
+ protected:
+  double evalPressure(double gap_m) const override;
+  PressureAndSlope evalPressureAndSlope(double gap_m) const override;
+  double evalAreaFraction(double gap_m) const override;
+
+ private:
+  TailValueAndSlope evalF52(double lambda) const;
+  double evalF2(double lambda) const;
+
+  GreenwoodTrippParameters parameters_;
+  double sigma_m_ = 0.0;
+  double effectiveModulus_Pa_ = 0.0;
+  double coefficientK_ = 0.0;
+  double pressureScale_Pa_ = 0.0;
+  double areaScale_ = 0.0;  // π²(ηβσ)²
+};
+
+}  // namespace pistondyn::contact

@@ -1,0 +1,121 @@
+#include "pistondyn/contact_forces/GreenwoodTrippLaw.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "Validation.h"
+
+namespace pistondyn::contact {
+namespace {
+
+constexpr const char* kWhere = "GreenwoodTrippLaw";
+constexpr double kPi = 3.14159265358979323846;
+
+void validatePowerLaw(const PowerLawTailFit& fit, const char* name) {
+  const std::string n(name);
+  detail::requirePositiveFinite(fit.coefficient, kWhere, (n + ".coefficient").c_str(), "");
+  detail::requirePositiveFinite(fit.exponent, kWhere, (n + ".exponent").c_str(), "");
+  detail::requireFinite(fit.lambdaMax, kWhere, (n + ".lambdaMax").c_str(), "");
+}
+
+void validatePolynomial(const PolynomialTailFit& fit, const char* name) {
+  const std::string n(name);
+  for (std::size_t k = 0; k < fit.coefficients.size(); ++k) {
+    detail::requireFinite(fit.coefficients[k], kWhere,
+                          (n + ".coefficients[" + std::to_string(k) + "]").c_str(), "");
+  }
+  detail::requireFinite(fit.lambdaEnd, kWhere, (n + ".lambdaEnd").c_str(), "");
+}
+
+}  // namespace
+
+double greenwoodTrippCoefficient(double roughnessParameter, double sigmaOverBeta) {
+  detail::requirePositiveFinite(roughnessParameter, "greenwoodTrippCoefficient",
+                                "roughnessParameter (eta*beta*sigma)", "");
+  detail::requirePositiveFinite(sigmaOverBeta, "greenwoodTrippCoefficient",
+                                "sigmaOverBeta (sigma/beta)", "");
+  return 8.0 * std::sqrt(2.0) / 15.0 * kPi * roughnessParameter * roughnessParameter *
+         std::sqrt(sigmaOverBeta);
+}
+
+GreenwoodTrippLaw::GreenwoodTrippLaw(const GreenwoodTrippParameters& parameters)
+    : parameters_(parameters) {
+  const GreenwoodTrippParameters& p = parameters_;
+  detail::requireNonNegativeFinite(p.roughnessSurface1_m, kWhere, "roughnessSurface1_m", "m");
+  detail::requireNonNegativeFinite(p.roughnessSurface2_m, kWhere, "roughnessSurface2_m", "m");
+  validateMaterial(p.surface1, kWhere, "surface1");
+  validateMaterial(p.surface2, kWhere, "surface2");
+  detail::requirePositiveFinite(p.roughnessParameter, kWhere, "roughnessParameter (eta*beta*sigma)",
+                                "");
+  detail::requirePositiveFinite(p.sigmaOverBeta, kWhere, "sigmaOverBeta (sigma/beta)", "");
+  switch (p.tailModel) {
+    case TailIntegralModel::Exact:
+      break;
+    case TailIntegralModel::PowerLawFit:
+      validatePowerLaw(p.powerLawF52, "powerLawF52");
+      validatePowerLaw(p.powerLawF2, "powerLawF2");
+      break;
+    case TailIntegralModel::PolynomialFit:
+      validatePolynomial(p.polynomialF52, "polynomialF52");
+      validatePolynomial(p.polynomialF2, "polynomialF2");
+      break;
+    default:
+      throw std::invalid_argument("GreenwoodTrippLaw: tailModel is not a TailIntegralModel value");
+  }
+  sigma_m_ = compositeRoughness_m(p.roughnessSurface1_m, p.roughnessSurface2_m);
+  effectiveModulus_Pa_ = contact::effectiveModulus_Pa(p.surface1, p.surface2);
+  coefficientK_ = greenwoodTrippCoefficient(p.roughnessParameter, p.sigmaOverBeta);
+  pressureScale_Pa_ = coefficientK_ * effectiveModulus_Pa_;
+  areaScale_ = kPi * kPi * p.roughnessParameter * p.roughnessParameter;
+}
+
+TailValueAndSlope GreenwoodTrippLaw::evalF52(double lambda) const {
+  switch (parameters_.tailModel) {
+    case TailIntegralModel::PowerLawFit:
+      return {parameters_.powerLawF52.value(lambda), parameters_.powerLawF52.slope(lambda)};
+    case TailIntegralModel::PolynomialFit:
+      return {parameters_.polynomialF52.value(lambda), parameters_.polynomialF52.slope(lambda)};
+    case TailIntegralModel::Exact:
+    default:
+      return greenwoodTrippF52WithSlope(lambda);
+  }
+}
+
+double GreenwoodTrippLaw::evalF2(double lambda) const {
+  switch (parameters_.tailModel) {
+    case TailIntegralModel::PowerLawFit:
+      return parameters_.powerLawF2.value(lambda);
+    case TailIntegralModel::PolynomialFit:
+      return parameters_.polynomialF2.value(lambda);
+    case TailIntegralModel::Exact:
+    default:
+      return greenwoodTrippF2(lambda);
+  }
+}
+
+double GreenwoodTrippLaw::evalPressure(double gap_m) const {
+  const double lambda = gap_m / sigma_m_;
+  switch (parameters_.tailModel) {
+    case TailIntegralModel::PowerLawFit:
+      return pressureScale_Pa_ * parameters_.powerLawF52.value(lambda);
+    case TailIntegralModel::PolynomialFit:
+      return pressureScale_Pa_ * parameters_.polynomialF52.value(lambda);
+    case TailIntegralModel::Exact:
+    default:
+      return pressureScale_Pa_ * greenwoodTrippF52(lambda);
+  }
+}
+
+PressureAndSlope GreenwoodTrippLaw::evalPressureAndSlope(double gap_m) const {
+  const TailValueAndSlope f = evalF52(gap_m / sigma_m_);
+  return {pressureScale_Pa_ * f.value, pressureScale_Pa_ * f.slope / sigma_m_};
+}
+
+double GreenwoodTrippLaw::evalAreaFraction(double gap_m) const {
+  // The statistical model gives A_c/A > 1 only for overlaps of many σ, where it no longer
+  // describes anything physical; the fraction is capped at 1.
+  return std::min(1.0, areaScale_ * evalF2(gap_m / sigma_m_));
+}
+
+}  // namespace pistondyn::contact

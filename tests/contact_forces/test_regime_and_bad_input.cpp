@@ -1,0 +1,169 @@
+// Regime bounds (definition: boundary h/σ ≤ 1 < mixed ≤ 3 < hydrodynamic) and the bad
+// inputs the issue lists: each must throw std::invalid_argument naming the argument.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "pistondyn/contact_forces/BoundaryFriction.h"
+#include "pistondyn/contact_forces/GreenwoodTrippLaw.h"
+#include "pistondyn/contact_forces/PenaltyContactLaw.h"
+
+namespace pc = pistondyn::contact;
+using pc::LubricationRegime;
+
+namespace {
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+const double kInf = std::numeric_limits<double>::infinity();
+
+void expectInvalidArgumentNaming(const std::function<void()>& call, const std::string& name) {
+  try {
+    call();
+    ADD_FAILURE() << "no exception; expected one naming '" << name << "'";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find(name), std::string::npos)
+        << "message '" << e.what() << "' does not name '" << name << "'";
+  }
+}
+}  // namespace
+
+TEST(Regime, BoundariesAtOneAndThree) {
+  EXPECT_EQ(pc::classifyRegime(-2.0), LubricationRegime::Boundary);
+  EXPECT_EQ(pc::classifyRegime(1.0), LubricationRegime::Boundary);
+  EXPECT_EQ(pc::classifyRegime(std::nextafter(1.0, 2.0)), LubricationRegime::Mixed);
+  EXPECT_EQ(pc::classifyRegime(3.0), LubricationRegime::Mixed);
+  EXPECT_EQ(pc::classifyRegime(std::nextafter(3.0, 4.0)), LubricationRegime::Hydrodynamic);
+  EXPECT_EQ(pc::classifyRegime(kInf), LubricationRegime::Hydrodynamic);
+  EXPECT_EQ(pc::classifyRegime(-kInf), LubricationRegime::Boundary);
+  EXPECT_STREQ(pc::toString(LubricationRegime::Mixed), "mixed");
+
+  // Through a law: σ = 2^-21 m exactly (Rq2 = 0), so h = σ and h = 3σ are exact ratios.
+  pc::GreenwoodTrippParameters p;
+  p.roughnessSurface1_m = std::ldexp(1.0, -21);
+  p.roughnessSurface2_m = 0.0;
+  const pc::GreenwoodTrippLaw law(p);
+  const double sigma = law.compositeSigma_m();
+  EXPECT_EQ(sigma, std::ldexp(1.0, -21));
+  EXPECT_EQ(law.calcNode(sigma).regime, LubricationRegime::Boundary);
+  EXPECT_EQ(law.calcNode(std::nextafter(sigma, 1.0)).regime, LubricationRegime::Mixed);
+  EXPECT_EQ(law.calcNode(3.0 * sigma).regime, LubricationRegime::Mixed);
+  EXPECT_EQ(law.calcNode(std::nextafter(3.0 * sigma, 1.0)).regime, LubricationRegime::Hydrodynamic);
+  EXPECT_EQ(law.classify(3.0 * sigma), LubricationRegime::Mixed);
+}
+
+TEST(BadInput, GreenwoodTrippParameters) {
+  auto with = [](const std::function<void(pc::GreenwoodTrippParameters&)>& edit) {
+    return [edit] {
+      pc::GreenwoodTrippParameters p;
+      edit(p);
+      const pc::GreenwoodTrippLaw law(p);
+    };
+  };
+  expectInvalidArgumentNaming(with([](auto& p) { p.roughnessSurface1_m = -1e-7; }),
+                              "roughnessSurface1_m");
+  expectInvalidArgumentNaming(with([](auto& p) { p.roughnessSurface2_m = kNaN; }),
+                              "roughnessSurface2_m");
+  expectInvalidArgumentNaming(with([](auto& p) {
+                                p.roughnessSurface1_m = 0.0;
+                                p.roughnessSurface2_m = 0.0;
+                              }),
+                              "rq1_m^2 + rq2_m^2");
+  expectInvalidArgumentNaming(with([](auto& p) { p.surface1.youngsModulus_Pa = -70e9; }),
+                              "surface1.youngsModulus_Pa");
+  expectInvalidArgumentNaming(with([](auto& p) { p.surface2.youngsModulus_Pa = 0.0; }),
+                              "surface2.youngsModulus_Pa");
+  for (double nu : {-1.0, 0.5, 0.7, -3.0, kNaN}) {
+    expectInvalidArgumentNaming(with([nu](auto& p) { p.surface2.poissonRatio = nu; }),
+                                "surface2.poissonRatio");
+  }
+  expectInvalidArgumentNaming(with([](auto& p) { p.roughnessParameter = 0.0; }),
+                              "roughnessParameter");
+  expectInvalidArgumentNaming(with([](auto& p) { p.roughnessParameter = -0.04; }),
+                              "roughnessParameter");
+  expectInvalidArgumentNaming(with([](auto& p) { p.sigmaOverBeta = 0.0; }), "sigmaOverBeta");
+  expectInvalidArgumentNaming(with([](auto& p) { p.sigmaOverBeta = -1e-3; }), "sigmaOverBeta");
+  expectInvalidArgumentNaming(with([](auto& p) {
+                                p.tailModel = pc::TailIntegralModel::PowerLawFit;
+                                p.powerLawF52.coefficient = -1.0;
+                              }),
+                              "powerLawF52.coefficient");
+  // Valid edge values construct.
+  EXPECT_NO_THROW(with([](auto& p) { p.surface1.poissonRatio = 0.4999; })());
+  EXPECT_NO_THROW(with([](auto& p) { p.roughnessSurface2_m = 0.0; })());
+}
+
+TEST(BadInput, FreeFunctions) {
+  expectInvalidArgumentNaming([] { pc::compositeRoughness_m(-1e-7, 1e-7); }, "rq1_m");
+  expectInvalidArgumentNaming(
+      [] {
+        pc::effectiveModulus_Pa({200e9, 0.3}, {-1.0, 0.3});
+      },
+      "surface2.youngsModulus_Pa");
+  expectInvalidArgumentNaming(
+      [] {
+        pc::reducedModulusHertz_Pa({200e9, 0.5}, {200e9, 0.3});
+      },
+      "surface1.poissonRatio");
+  expectInvalidArgumentNaming([] { pc::greenwoodTrippCoefficient(0.04, 0.0); }, "sigmaOverBeta");
+  expectInvalidArgumentNaming([] { pc::classifyRegime(kNaN); }, "filmRatio");
+}
+
+TEST(BadInput, NanGaps) {
+  const pc::GreenwoodTrippLaw law;
+  expectInvalidArgumentNaming([&] { law.calcPressure(kNaN); }, "gap_m");
+  expectInvalidArgumentNaming([&] { law.calcPressureAndSlope(kNaN); }, "gap_m");
+  expectInvalidArgumentNaming([&] { law.calcNode(-kInf); }, "gap_m");
+  expectInvalidArgumentNaming([&] { law.classify(kNaN); }, "gap_m");
+  Eigen::ArrayXXd gap = Eigen::ArrayXXd::Constant(4, 3, 1e-6);
+  gap(2, 1) = kNaN;
+  pc::ContactField field;
+  expectInvalidArgumentNaming([&] { law.calcField(gap, field); }, "gap_m(2, 1)");
+  const pc::PenaltyContactLaw penalty;
+  expectInvalidArgumentNaming([&] { penalty.calcPressure(kNaN); }, "Penalty::calcPressure");
+}
+
+TEST(BadInput, PenaltyAndFrictionParameters) {
+  auto penalty = [](const std::function<void(pc::PenaltyContactParameters&)>& edit) {
+    return [edit] {
+      pc::PenaltyContactParameters p;
+      edit(p);
+      const pc::PenaltyContactLaw law(p);
+    };
+  };
+  expectInvalidArgumentNaming(penalty([](auto& p) { p.referencePressure_Pa = 0.0; }),
+                              "referencePressure_Pa");
+  expectInvalidArgumentNaming(penalty([](auto& p) { p.exponent = 0.5; }), "exponent");
+  expectInvalidArgumentNaming(penalty([](auto& p) { p.transitionDepth_m = 0.0; }),
+                              "transitionDepth_m");
+  expectInvalidArgumentNaming(penalty([](auto& p) { p.compositeRoughness_m = -1e-6; }),
+                              "compositeRoughness_m");
+  expectInvalidArgumentNaming(penalty([](auto& p) { p.onsetGap_m = kNaN; }), "onsetGap_m");
+
+  auto friction = [](const std::function<void(pc::BoundaryFrictionParameters&)>& edit) {
+    return [edit] {
+      pc::BoundaryFrictionParameters p;
+      edit(p);
+      const pc::BoundaryFriction f(p);
+    };
+  };
+  expectInvalidArgumentNaming(friction([](auto& p) { p.frictionCoefficient = -0.1; }),
+                              "frictionCoefficient");
+  expectInvalidArgumentNaming(friction([](auto& p) { p.regularisationSpeed_mps = 0.0; }),
+                              "regularisationSpeed_mps");
+  const pc::BoundaryFriction f;
+  expectInvalidArgumentNaming([&] { f.calcShearStress_Pa(-1.0, Eigen::Vector2d(1, 0)); },
+                              "contactPressure_Pa");
+  expectInvalidArgumentNaming([&] { f.calcShearStress_Pa(1.0, Eigen::Vector2d(kNaN, 0)); },
+                              "slidingVelocity_mps");
+  Eigen::ArrayXXd p = Eigen::ArrayXXd::Constant(2, 2, 1e5);
+  Eigen::ArrayXXd vx = Eigen::ArrayXXd::Zero(2, 2);
+  Eigen::ArrayXXd vy = Eigen::ArrayXXd::Zero(2, 2);
+  Eigen::ArrayXXd tx, ty;
+  vy(1, 0) = kInf;
+  expectInvalidArgumentNaming([&] { f.calcShearStressField(p, vx, vy, tx, ty); },
+                              "slidingVelocityY_mps(1, 0)");
+}

@@ -134,6 +134,19 @@ void calcHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceClosed,
   out.insideIntegral.setZero(ns, 3);
   out.outsideIntegral.setZero(ns, 3);
   std::vector<HatOverlap1D::Entry>& column = out.columnScratch;
+  // Upper bounds, so that rebuilding for another offset never reallocates: the source and
+  // target breakpoints cut the overlap into at most ns + nt + 2 pieces, on each of which
+  // at most 2 source and 2 target basis functions are non-zero (<= 4 entries per piece);
+  // one column's unmerged pieces are at most 2 sides x 2 turns x (target cells + 1) x 2.
+  const size_t maxEntries = 4 * (static_cast<size_t>(ns + nt) + 2);
+  out.inner.reserve(maxEntries);
+  out.value.reserve(maxEntries);
+  if (withTrig) {
+    out.valueCos.reserve(maxEntries);
+    out.valueSin.reserve(maxEntries);
+  }
+  out.outer.reserve(static_cast<size_t>(ns) + 1);
+  column.reserve(8 * (static_cast<size_t>(nt) + 2));
 
   const double t0 = tgt.node(0), t1 = tgt.end();
   const int targetCells = tgt.cells();

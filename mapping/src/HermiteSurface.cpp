@@ -59,8 +59,8 @@ HermiteSurface::HermiteSurface(CylinderGrid grid, const Eigen::Ref<const Eigen::
       dY_(grid_.nodeCount()),
       dPhiDY_(grid_.nodeCount()),
       coeff_(16 * static_cast<size_t>(grid_.phiCellCount() * grid_.yCellCount())),
-      lineScratch_(grid_.nY(), grid_.nPhi()),
-      slopeScratch_(grid_.nY(), grid_.nPhi()) {
+      phiLineScratch_(grid_.nY()),
+      yLineScratch_(grid_.nPhi()) {
   updateValues(values);
 }
 
@@ -78,8 +78,8 @@ HermiteSurface::HermiteSurface(CylinderGrid grid, const Eigen::Ref<const Eigen::
       dY_(grid_.nodeCount()),
       dPhiDY_(grid_.nodeCount()),
       coeff_(16 * static_cast<size_t>(grid_.phiCellCount() * grid_.yCellCount())),
-      lineScratch_(grid_.nY(), grid_.nPhi()),
-      slopeScratch_(grid_.nY(), grid_.nPhi()) {
+      phiLineScratch_(grid_.nY()),
+      yLineScratch_(grid_.nPhi()) {
   updateValues(values, dPhi, dY, dPhiDY);
 }
 
@@ -112,20 +112,18 @@ void HermiteSurface::updateValues(const Eigen::Ref<const Eigen::VectorXd>& value
 }
 
 void HermiteSurface::calcSplineSlopes() {
+  using Lines = detail::SplineSlopes::Lines;
   const int nPhi = grid_.nPhi(), nY = grid_.nY();
   using MapM = Eigen::Map<Eigen::MatrixXd>;
   using MapCM = Eigen::Map<const Eigen::MatrixXd>;
   const MapCM f(values_.data(), nPhi, nY);
-  // Along phi: the columns of the nPhi x nY matrix are phi-lines.
-  phiSlopes_.calcSlopes(f, MapM(dPhi_.data(), nPhi, nY));
-  // Along y: transpose so that y-lines are columns.
-  lineScratch_ = f.transpose();
-  ySlopes_.calcSlopes(lineScratch_, slopeScratch_);
-  MapM(dY_.data(), nPhi, nY) = slopeScratch_.transpose();
+  // Node (i, j) is entry (i, j) of the nPhi x nY matrix: phi-lines are its columns,
+  // y-lines its rows.
+  phiSlopes_.calcSlopes(f, MapM(dPhi_.data(), nPhi, nY), Lines::InColumns, phiLineScratch_);
+  ySlopes_.calcSlopes(f, MapM(dY_.data(), nPhi, nY), Lines::InRows, yLineScratch_);
   // Cross derivative: y-spline slopes of the phi-slopes (the operators commute).
-  lineScratch_ = MapCM(dPhi_.data(), nPhi, nY).transpose();
-  ySlopes_.calcSlopes(lineScratch_, slopeScratch_);
-  MapM(dPhiDY_.data(), nPhi, nY) = slopeScratch_.transpose();
+  ySlopes_.calcSlopes(MapCM(dPhi_.data(), nPhi, nY), MapM(dPhiDY_.data(), nPhi, nY), Lines::InRows,
+                      yLineScratch_);
 }
 
 void HermiteSurface::calcCellCoefficients() {

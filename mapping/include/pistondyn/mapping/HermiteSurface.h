@@ -144,7 +144,7 @@ class HermiteSurface {
   Eigen::VectorXd phiCellWidth_, yCellWidth_;
   Eigen::VectorXd values_, dPhi_, dY_, dPhiDY_;
   std::vector<double> coeff_;  // G of eq. 9, 16 per cell, cell (i, j) at i + phiCellCount*j
-  Eigen::MatrixXd lineScratch_, slopeScratch_;  // y-lines as columns (nY x nPhi)
+  Eigen::VectorXd phiLineScratch_, yLineScratch_;  // one entry per line (spline solves)
 };
 
 }  // namespace pistondyn::mapping

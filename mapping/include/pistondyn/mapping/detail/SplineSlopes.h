@@ -12,6 +12,9 @@
 //   open lines, n == 2: slope of the chord;
 //   closed lines, n >= 3: periodic spline (C2 across the seam), cyclic tridiagonal
 //                       system solved by Sherman-Morrison on a Thomas factorisation.
+//
+// All lines are processed together, one node position at a time (vector operations over
+// the lines), so the serial recurrences of the Thomas algorithm are vectorised.
 
 #include <vector>
 
@@ -21,28 +24,39 @@ namespace pistondyn::mapping::detail {
 
 class SplineSlopes {
  public:
+  // How the lines lie in the matrices passed to calcSlopes().
+  enum class Lines {
+    InColumns,  // node index = row, one line per column
+    InRows,     // node index = column, one line per row
+  };
+
   SplineSlopes() = default;
   // x: strictly increasing nodes; closed: the line closes with a cell of width
   // x[0] + period - x[n-1].
   SplineSlopes(const Eigen::VectorXd& x, bool closed, double period);
 
-  // f: n x lines (one line per column); slopes: n x lines, same shape as f.
-  void calcSlopes(const Eigen::Ref<const Eigen::MatrixXd>& f,
-                  Eigen::Ref<Eigen::MatrixXd> slopes) const;
+  // slopes (same shape as f) of every line of f. `scratch` (caller-owned, resized to the
+  // number of lines if needed) is used for closed lines only.
+  void calcSlopes(const Eigen::Ref<const Eigen::MatrixXd>& f, Eigen::Ref<Eigen::MatrixXd> slopes,
+                  Lines lines, Eigen::VectorXd& scratch) const;
 
  private:
-  void rhs(const double* f, double* b) const;
-  void solveTridiagonal(double* d) const;  // in place, factors of the (modified) matrix
+  template <class Node>
+  void run(const Eigen::Ref<const Eigen::MatrixXd>& f, Eigen::Ref<Eigen::MatrixXd>& m, Node node,
+           Eigen::VectorXd& scratch) const;
 
   int n_ = 0;
   bool closed_ = false;
-  std::vector<double> h_;      // cell widths (n-1 open, n closed)
-  std::vector<double> lower_;  // Thomas multipliers l_i = a_i / piv_{i-1}
-  std::vector<double> pivot_;  // Thomas pivots
-  std::vector<double> upper_;  // super-diagonal c_i
-  std::vector<double> smZ_;    // Sherman-Morrison: solution z of T' z = u
+  bool solve_ = false;  // false: the stencil gives the slopes directly (open, n <= 3)
+  // Right-hand side b_i = sum_s coeff_[3i+s] * f[index_[3i+s]] (3-point stencils).
+  std::vector<int> index_;
+  std::vector<double> coeff_;
+  std::vector<double> lower_;     // Thomas multipliers l_i = a_i / piv_{i-1}
+  std::vector<double> invPivot_;  // 1 / piv_i
+  std::vector<double> upper_;     // super-diagonal c_i
+  std::vector<double> smZ_;       // Sherman-Morrison: solution z of T' z = u
   double smBetaOverGamma_ = 0.0;
-  double smDenominator_ = 1.0;  // 1 + v.z
+  double smInvDenominator_ = 1.0;  // 1 / (1 + v.z)
 };
 
 }  // namespace pistondyn::mapping::detail

@@ -42,4 +42,18 @@ inline void requireFiniteVector(const char* function, const char* argument,
                          " must be finite");
 }
 
+// Node coordinates: at least minCount entries, finite, strictly increasing.
+inline void requireIncreasingNodes(const char* function, const char* argument,
+                                   const Eigen::Ref<const Eigen::VectorXd>& x, int minCount) {
+  if (x.size() < minCount)
+    fail(function, std::string(argument) + " has " + std::to_string(x.size()) +
+                       " nodes, at least " + std::to_string(minCount) + " needed");
+  requireFiniteVector(function, argument, x, x.size());
+  for (Eigen::Index k = 1; k < x.size(); ++k)
+    if (!(x[k] > x[k - 1]))
+      fail(function, std::string(argument) + "[" + std::to_string(k) + "] = " + str(x[k]) +
+                         " must be greater than " + argument + "[" + std::to_string(k - 1) +
+                         "] = " + str(x[k - 1]) + " (strictly increasing)");
+}
+
 }  // namespace pistondyn::mapping::detail

@@ -11,21 +11,6 @@ namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925286766559;
 
-// Finite, at least minCount entries, strictly increasing.
-void checkNodes(const char* function, const char* argument, const Eigen::VectorXd& x,
-                int minCount) {
-  if (x.size() < minCount)
-    detail::fail(function, std::string(argument) + " has " + std::to_string(x.size()) +
-                               " nodes, at least " + std::to_string(minCount) + " needed");
-  detail::requireFiniteVector(function, argument, x, x.size());
-  for (Eigen::Index k = 1; k < x.size(); ++k)
-    if (!(x[k] > x[k - 1]))
-      detail::fail(function, std::string(argument) + "[" + std::to_string(k) +
-                                 "] = " + detail::str(x[k]) + " must be greater than " + argument +
-                                 "[" + std::to_string(k - 1) + "] = " + detail::str(x[k - 1]) +
-                                 " (strictly increasing)");
-}
-
 void checkRadius(const char* function, double radius_m) {
   if (!(std::isfinite(radius_m) && radius_m > 0.0))
     detail::fail(function, "radius_m = " + detail::str(radius_m) + " must be positive and finite");
@@ -54,8 +39,8 @@ CylinderGrid CylinderGrid::sector(double radius_m, const Eigen::VectorXd& phi_ra
                                   const Eigen::VectorXd& y_m) {
   const char* fn = "CylinderGrid::sector";
   checkRadius(fn, radius_m);
-  checkNodes(fn, "phi_rad", phi_rad, 2);
-  checkNodes(fn, "y_m", y_m, 2);
+  detail::requireIncreasingNodes(fn, "phi_rad", phi_rad, 2);
+  detail::requireIncreasingNodes(fn, "y_m", y_m, 2);
   const double span = phi_rad[phi_rad.size() - 1] - phi_rad[0];
   if (!(span < kTwoPi))
     detail::fail(fn, "phi_rad spans " + detail::str(span) +
@@ -67,8 +52,8 @@ CylinderGrid CylinderGrid::fullCircle(double radius_m, const Eigen::VectorXd& ph
                                       const Eigen::VectorXd& y_m) {
   const char* fn = "CylinderGrid::fullCircle";
   checkRadius(fn, radius_m);
-  checkNodes(fn, "phi_rad", phi_rad, 3);
-  checkNodes(fn, "y_m", y_m, 2);
+  detail::requireIncreasingNodes(fn, "phi_rad", phi_rad, 3);
+  detail::requireIncreasingNodes(fn, "y_m", y_m, 2);
   const double span = phi_rad[phi_rad.size() - 1] - phi_rad[0];
   if (!(span < kTwoPi))
     detail::fail(fn, "phi_rad spans " + detail::str(span) +

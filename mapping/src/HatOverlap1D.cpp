@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "Checks.h"
 
@@ -116,8 +117,18 @@ void calcHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceClosed,
                       double offset, LoadRule rule, bool withTrig, HatOverlap1D& out) {
   const char* fn = "calcHatOverlap1D";
   detail::requireFiniteScalar(fn, "offset", offset);
+  detail::requireFiniteScalar(fn, "period", period);
   if ((sourceClosed || targetClosed) && !(period > 0.0))
     detail::fail(fn, "period = " + detail::str(period) + " must be positive for a closed grid");
+  detail::requireIncreasingNodes(fn, "sourceNodes", sourceNodes, sourceClosed ? 3 : 2);
+  detail::requireIncreasingNodes(fn, "targetNodes", targetNodes, targetClosed ? 3 : 2);
+  auto requireSpan = [&](const char* argument, const Eigen::VectorXd& x) {
+    if (period > 0.0 && !(x[x.size() - 1] - x[0] < period))
+      detail::fail(fn, std::string(argument) + " spans " + detail::str(x[x.size() - 1] - x[0]) +
+                           ", must be less than period = " + detail::str(period));
+  };
+  requireSpan("sourceNodes", sourceNodes);
+  requireSpan("targetNodes", targetNodes);
   const Axis src{sourceNodes, sourceClosed, period};
   const Axis tgt{targetNodes, targetClosed, period};
   const int ns = src.n(), nt = tgt.n();

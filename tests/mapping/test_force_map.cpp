@@ -422,3 +422,34 @@ TEST(ForceMap, RejectsBadInputNamingTheArgument) {
   expectInvalid([&] { tensor.setAxialOffset(nan, ws); }, "yOffset_m");
   expectInvalid([&] { pm::TensorForceMap(src, tgt, nan); }, "phiOffset_rad");
 }
+
+// The 1-D building block checks its own arguments (it is public).
+TEST(HatOverlap1D, RejectsBadNodesNamingTheArgument) {
+  pm::HatOverlap1D out;
+  Eigen::VectorXd good = pm::uniformNodes(0.0, 1.0, 5), bad = good;
+  bad[3] = bad[2];
+  expectInvalid(
+      [&] {
+        pm::calcHatOverlap1D(bad, false, good, false, 0.0, 0.0, pm::LoadRule::Consistent, false,
+                             out);
+      },
+      "sourceNodes[3]");
+  expectInvalid(
+      [&] {
+        pm::calcHatOverlap1D(good, false, Eigen::VectorXd::Zero(1), false, 0.0, 0.0,
+                             pm::LoadRule::Consistent, false, out);
+      },
+      "targetNodes has 1 nodes");
+  expectInvalid(
+      [&] {
+        pm::calcHatOverlap1D(good, true, good, false, 0.0, 0.0, pm::LoadRule::Consistent, false,
+                             out);
+      },
+      "period");
+  expectInvalid(
+      [&] {
+        pm::calcHatOverlap1D(pm::uniformNodes(0.0, 0.4, 3), false, good, true, 0.5, 0.0,
+                             pm::LoadRule::Consistent, false, out);
+      },
+      "targetNodes spans");
+}

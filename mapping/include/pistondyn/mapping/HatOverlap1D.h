@@ -78,7 +78,9 @@ struct HatOverlap1D {
 //   offset                     a source point x lies at x + offset in the target frame
 //   rule                       target basis (hat or half-cell indicator)
 //   withTrig                   also compute the cos/sin-weighted integrals (angles only)
-// Node vectors are not re-validated here (CylinderGrid did that); offset must be finite.
+// Throws std::invalid_argument naming the argument: nodes not finite or not strictly
+// increasing, fewer than 2 (3 when closed), spanning a period or more; non-finite offset
+// or period; period <= 0 with a closed grid.
 void calcHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceClosed,
                       const Eigen::VectorXd& targetNodes, bool targetClosed, double period,
                       double offset, LoadRule rule, bool withTrig, HatOverlap1D& out);

@@ -40,6 +40,14 @@ Eigen::VectorXd contactPressure(const pm::CylinderGrid& g) {
   return p;
 }
 
+// A deformation-like field on the structural grid [m].
+Eigen::VectorXd structuralField(const pm::CylinderGrid& g) {
+  Eigen::VectorXd v(g.nodeCount());
+  for (int k = 0; k < v.size(); ++k)
+    v[k] = 1e-5 * std::sin(0.37 * k);
+  return v;
+}
+
 // Piston position in the liner frame at step k of a stroke sampled in 360 steps.
 double pistonPosition_m(int k) {
   return 0.045 + 0.0435 * std::cos(2.0 * 3.14159265358979 * (k % 360) / 360.0);
@@ -147,10 +155,7 @@ BENCHMARK(BM_ForceMap_ContactToLiner_FullRebuildPerStep);
 // Hermite surface: values only, and values with d/dphi, d/dy.
 void BM_Hermite_StructuralToContact_Values(benchmark::State& state) {
   const auto contact = contactGrid(), structural = structuralGrid();
-  Eigen::VectorXd v(structural.nodeCount());
-  for (int k = 0; k < v.size(); ++k)
-    v[k] = 1e-5 * std::sin(0.37 * k);
-  const pm::HermiteSurface surface(structural, v);
+  const pm::HermiteSurface surface(structural, structuralField(structural));
   pm::HermiteGridWorkspace ws;
   Eigen::VectorXd out(contact.nodeCount());
   for (auto _ : state) {
@@ -162,10 +167,7 @@ BENCHMARK(BM_Hermite_StructuralToContact_Values);
 
 void BM_Hermite_StructuralToContact_ValuesAndDerivatives(benchmark::State& state) {
   const auto contact = contactGrid(), structural = structuralGrid();
-  Eigen::VectorXd v(structural.nodeCount());
-  for (int k = 0; k < v.size(); ++k)
-    v[k] = 1e-5 * std::sin(0.37 * k);
-  const pm::HermiteSurface surface(structural, v);
+  const pm::HermiteSurface surface(structural, structuralField(structural));
   pm::HermiteGridWorkspace ws;
   Eigen::VectorXd out(contact.nodeCount()), dPhi(contact.nodeCount()), dY(contact.nodeCount());
   for (auto _ : state) {
@@ -179,9 +181,7 @@ BENCHMARK(BM_Hermite_StructuralToContact_ValuesAndDerivatives);
 // cell matrices recomputed with the stored factorisations.
 void BM_Hermite_Structural_UpdateValues(benchmark::State& state) {
   const auto structural = structuralGrid();
-  Eigen::VectorXd v(structural.nodeCount());
-  for (int k = 0; k < v.size(); ++k)
-    v[k] = 1e-5 * std::sin(0.37 * k);
+  Eigen::VectorXd v = structuralField(structural);
   pm::HermiteSurface surface(structural, v);
   for (auto _ : state) {
     v *= 1.0000001;

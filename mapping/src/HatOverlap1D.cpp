@@ -15,38 +15,32 @@ namespace {
 // (int cos = 2 sin w; the odd moments of cos and even of sin vanish). Below w = 1 the
 // closed forms cancel (C2 ~ 2w^3/3 from O(w) terms), so the alternating series is used;
 // its terms fall by w^2/((2k+1)(2k+2)) <= 1/2 per step and it stops at full precision.
-double momentC2(double w) {
-  if (w >= 1.0)
-    return 2.0 * (w * w * std::sin(w) + 2.0 * w * std::cos(w) - 2.0 * std::sin(w));
+// 2 * sum_k (-1)^k w^(2k+3) / ((2k+o)! (2k+3)): C2 for o = 0, S1 for o = 1.
+double momentSeries(double w, int o) {
   const double w2 = w * w;
-  double power = w2 * w, factorial = 1.0, sum = 0.0, sign = 1.0;  // (2k)!
+  double power = w2 * w, factorial = 1.0, sum = 0.0, sign = 1.0;  // factorial = (2k+o)!
   for (int k = 0; k < 30; ++k) {
     const double term = power / (factorial * (2 * k + 3));
     sum += sign * term;
     if (term <= 1e-18 * std::abs(sum))
       break;
     power *= w2;
-    factorial *= (2.0 * k + 1.0) * (2.0 * k + 2.0);
+    factorial *= (2.0 * k + 1.0 + o) * (2.0 * k + 2.0 + o);
     sign = -sign;
   }
   return 2.0 * sum;
 }
 
+double momentC2(double w) {
+  if (w >= 1.0)
+    return 2.0 * (w * w * std::sin(w) + 2.0 * w * std::cos(w) - 2.0 * std::sin(w));
+  return momentSeries(w, 0);
+}
+
 double momentS1(double w) {
   if (w >= 1.0)
     return 2.0 * (std::sin(w) - w * std::cos(w));
-  const double w2 = w * w;
-  double power = w2 * w, factorial = 1.0, sum = 0.0, sign = 1.0;  // (2k+1)!
-  for (int k = 0; k < 30; ++k) {
-    const double term = power / (factorial * (2 * k + 3));
-    sum += sign * term;
-    if (term <= 1e-18 * std::abs(sum))
-      break;
-    power *= w2;
-    factorial *= (2.0 * k + 2.0) * (2.0 * k + 3.0);
-    sign = -sign;
-  }
-  return 2.0 * sum;
+  return momentSeries(w, 1);
 }
 
 // Integrals of u*v*{1, cos x, sin x} over [p, q] for u, v linear with end values

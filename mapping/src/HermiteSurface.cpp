@@ -48,7 +48,7 @@ int findCell(const Eigen::VectorXd& nodes, int cells, double x) {
 
 }  // namespace
 
-HermiteSurface::HermiteSurface(CylinderGrid grid, const Eigen::Ref<const Eigen::VectorXd>& values)
+HermiteSurface::HermiteSurface(CylinderGrid grid)
     : grid_(std::move(grid)),
       phiSlopes_(grid_.phi_rad(), grid_.isClosed(), kTwoPi),
       ySlopes_(grid_.y_m(), false, 0.0),
@@ -60,7 +60,10 @@ HermiteSurface::HermiteSurface(CylinderGrid grid, const Eigen::Ref<const Eigen::
       dPhiDY_(grid_.nodeCount()),
       coeff_(16 * static_cast<size_t>(grid_.phiCellCount() * grid_.yCellCount())),
       phiLineScratch_(grid_.nY()),
-      yLineScratch_(grid_.nPhi()) {
+      yLineScratch_(grid_.nPhi()) {}
+
+HermiteSurface::HermiteSurface(CylinderGrid grid, const Eigen::Ref<const Eigen::VectorXd>& values)
+    : HermiteSurface(std::move(grid)) {
   updateValues(values);
 }
 
@@ -68,18 +71,7 @@ HermiteSurface::HermiteSurface(CylinderGrid grid, const Eigen::Ref<const Eigen::
                                const Eigen::Ref<const Eigen::VectorXd>& dPhi,
                                const Eigen::Ref<const Eigen::VectorXd>& dY,
                                const Eigen::Ref<const Eigen::VectorXd>& dPhiDY)
-    : grid_(std::move(grid)),
-      phiSlopes_(grid_.phi_rad(), grid_.isClosed(), kTwoPi),
-      ySlopes_(grid_.y_m(), false, 0.0),
-      phiCellWidth_(cellWidths(grid_.phi_rad(), grid_.phiCellCount(), grid_.phiEnd_rad())),
-      yCellWidth_(cellWidths(grid_.y_m(), grid_.yCellCount(), 0.0)),
-      values_(grid_.nodeCount()),
-      dPhi_(grid_.nodeCount()),
-      dY_(grid_.nodeCount()),
-      dPhiDY_(grid_.nodeCount()),
-      coeff_(16 * static_cast<size_t>(grid_.phiCellCount() * grid_.yCellCount())),
-      phiLineScratch_(grid_.nY()),
-      yLineScratch_(grid_.nPhi()) {
+    : HermiteSurface(std::move(grid)) {
   updateValues(values, dPhi, dY, dPhiDY);
 }
 

@@ -1,10 +1,13 @@
 #pragma once
 // Helpers for the mapping tests that do not use the library under test: Gauss-Legendre
 // rules (Newton iteration on the Legendre recurrence), random graded node vectors, the
-// bilinear interpolant of one cell, and an exception-message check.
+// bilinear interpolant of one cell, a loop over grid cells clipped to a rectangle, and an
+// exception-message check.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -88,6 +91,25 @@ inline double bilinear(double x0, double x1, double y0, double y1, double f00, d
                        double f01, double f11, double x, double y) {
   const double t = (x - x0) / (x1 - x0), u = (y - y0) / (y1 - y0);
   return (1 - t) * (1 - u) * f00 + t * (1 - u) * f10 + (1 - t) * u * f01 + t * u * f11;
+}
+
+// Calls f(i, j, cell, clip) for every cell (i, j) of an open grid with nodes (x, y)
+// shifted by (dx, dy), where cell = {a, b, c, d} is the shifted cell [a, b] x [c, d] and
+// clip = {lo, hi, ylo, yhi} its non-empty intersection with [xLo, xHi] x [yLo, yHi];
+// cells outside are skipped.
+template <class F>
+void forEachClippedCell(const Eigen::VectorXd& x, const Eigen::VectorXd& y, double dx, double dy,
+                        double xLo, double xHi, double yLo, double yHi, F&& f) {
+  for (Eigen::Index j = 0; j + 1 < y.size(); ++j)
+    for (Eigen::Index i = 0; i + 1 < x.size(); ++i) {
+      const double a = x[i] + dx, b = x[i + 1] + dx, c = y[j] + dy, d = y[j + 1] + dy;
+      const double lo = std::max(a, xLo), hi = std::min(b, xHi);
+      const double ylo = std::max(c, yLo), yhi = std::min(d, yHi);
+      if (!(hi > lo && yhi > ylo))
+        continue;
+      f(static_cast<int>(i), static_cast<int>(j), std::array<double, 4>{a, b, c, d},
+        std::array<double, 4>{lo, hi, ylo, yhi});
+    }
 }
 
 // Expects std::invalid_argument whose message contains `needle` (the argument's name).

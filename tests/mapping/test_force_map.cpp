@@ -39,27 +39,24 @@ Integrals integrateSource(const pm::CylinderGrid& src, const Eigen::VectorXd& p,
                           double phiLo, double phiHi, double yLo, double yHi) {
   const double r = src.radius_m();
   Integrals out;
-  for (int j = 0; j + 1 < src.nY(); ++j)
-    for (int i = 0; i + 1 < src.nPhi(); ++i) {
-      const double a = src.phi_rad()[i] + off.phi_rad, b = src.phi_rad()[i + 1] + off.phi_rad;
-      const double c = src.y_m()[j] + off.y_m, d = src.y_m()[j + 1] + off.y_m;
-      const double lo = std::max(a, phiLo), hi = std::min(b, phiHi);
-      const double ylo = std::max(c, yLo), yhi = std::min(d, yHi);
-      if (!(hi > lo && yhi > ylo))
-        continue;
-      const double f00 = p[src.index(i, j)], f10 = p[src.index(i + 1, j)],
-                   f01 = p[src.index(i, j + 1)], f11 = p[src.index(i + 1, j + 1)];
-      auto ph = [&](double x, double y) {
-        return pm::test::bilinear(a, b, c, d, f00, f10, f01, f11, x, y);
-      };
-      out.force += r * pm::test::integrateRectangle(lo, hi, ylo, yhi, 3, 3, ph);
-      out.momentS +=
-          r * pm::test::integrateRectangle(lo, hi, ylo, yhi, 3, 3,
-                                           [&](double x, double y) { return r * x * ph(x, y); });
-      out.momentY +=
-          r * pm::test::integrateRectangle(lo, hi, ylo, yhi, 3, 3,
-                                           [&](double x, double y) { return y * ph(x, y); });
-    }
+  pm::test::forEachClippedCell(
+      src.phi_rad(), src.y_m(), off.phi_rad, off.y_m, phiLo, phiHi, yLo, yHi,
+      [&](int i, int j, std::array<double, 4> cell, std::array<double, 4> clip) {
+        const double a = cell[0], b = cell[1], c = cell[2], d = cell[3];
+        const double lo = clip[0], hi = clip[1], ylo = clip[2], yhi = clip[3];
+        const double f00 = p[src.index(i, j)], f10 = p[src.index(i + 1, j)],
+                     f01 = p[src.index(i, j + 1)], f11 = p[src.index(i + 1, j + 1)];
+        auto ph = [&](double x, double y) {
+          return pm::test::bilinear(a, b, c, d, f00, f10, f01, f11, x, y);
+        };
+        out.force += r * pm::test::integrateRectangle(lo, hi, ylo, yhi, 3, 3, ph);
+        out.momentS +=
+            r * pm::test::integrateRectangle(lo, hi, ylo, yhi, 3, 3,
+                                             [&](double x, double y) { return r * x * ph(x, y); });
+        out.momentY +=
+            r * pm::test::integrateRectangle(lo, hi, ylo, yhi, 3, 3,
+                                             [&](double x, double y) { return y * ph(x, y); });
+      });
   return out;
 }
 
@@ -154,7 +151,8 @@ TEST(ForceMap, StaticEquivalenceOnRandomGridPairs) {
     const pm::LoadBalance bs = map.apply(ts, fs);
     const pm::LoadBalance by = map.apply(ty, fy);
 
-    const auto [phiLo, phiHi, yLo, yHi] = targetRectangle(tgt);
+    const std::array<double, 4> rect = targetRectangle(tgt);
+    const double phiLo = rect[0], phiHi = rect[1], yLo = rect[2], yHi = rect[3];
     auto inside = [&](const Eigen::VectorXd& p) {
       return integrateSource(src, p, pr.offset, phiLo, phiHi, yLo, yHi);
     };

@@ -9,8 +9,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -46,38 +49,38 @@ Resultant referenceResultant(const pm::CylinderGrid& src, const Traction& f, pm:
   const double r = src.radius_m();
   Resultant out;
   Scales sc;
-  const auto [gx, wx] = pm::test::gaussLegendre(16);
-  const auto [gy, wy] = pm::test::gaussLegendre(3);
-  for (int j = 0; j + 1 < src.nY(); ++j)
-    for (int i = 0; i + 1 < src.nPhi(); ++i) {
-      const double a = src.phi_rad()[i] + off.phi_rad, b = src.phi_rad()[i + 1] + off.phi_rad;
-      const double c = src.y_m()[j] + off.y_m, d = src.y_m()[j + 1] + off.y_m;
-      const double lo = std::max(a, phiLo), hi = std::min(b, phiHi);
-      const double ylo = std::max(c, yLo), yhi = std::min(d, yHi);
-      if (!(hi > lo && yhi > ylo))
-        continue;
-      const int k00 = src.index(i, j), k10 = src.index(i + 1, j), k01 = src.index(i, j + 1),
-                k11 = src.index(i + 1, j + 1);
-      auto interp = [&](const Eigen::VectorXd& v, double x, double y) {
-        return pm::test::bilinear(a, b, c, d, v[k00], v[k10], v[k01], v[k11], x, y);
-      };
-      for (size_t q = 0; q < gx.size(); ++q)
-        for (size_t s = 0; s < gy.size(); ++s) {
-          const double x = 0.5 * (lo + hi) + 0.5 * (hi - lo) * gx[q];
-          const double y = 0.5 * (ylo + yhi) + 0.5 * (yhi - ylo) * gy[s];
-          const double w = wx[q] * wy[s] * 0.25 * (hi - lo) * (yhi - ylo) * r;  // dA
-          const double fn = interp(f.normal, x, y), fs = interp(f.circumferential, x, y),
-                       fy = interp(f.axial, x, y);
-          const Eigen::Vector3d n(std::cos(x), 0.0, std::sin(x)), t(-std::sin(x), 0.0, std::cos(x));
-          const Eigen::Vector3d density = fn * n + fs * t + fy * Eigen::Vector3d::UnitY();
-          const Eigen::Vector3d pos(r * std::cos(x), y, r * std::sin(x));
-          out.force += w * density;
-          out.moment += w * (pos - point).cross(density);
-          const Eigen::Vector3d absF(std::abs(fn), std::abs(fs), std::abs(fy));
-          sc.absTraction += w * absF;
-          sc.moment += w * absF.sum() * (pos - point).norm();
-        }
-    }
+  const std::pair<std::vector<double>, std::vector<double>> ruleX = pm::test::gaussLegendre(16),
+                                                            ruleY = pm::test::gaussLegendre(3);
+  const std::vector<double>&gx = ruleX.first, &wx = ruleX.second, &gy = ruleY.first,
+        &wy = ruleY.second;
+  pm::test::forEachClippedCell(
+      src.phi_rad(), src.y_m(), off.phi_rad, off.y_m, phiLo, phiHi, yLo, yHi,
+      [&](int i, int j, std::array<double, 4> cell, std::array<double, 4> clip) {
+        const double a = cell[0], b = cell[1], c = cell[2], d = cell[3];
+        const double lo = clip[0], hi = clip[1], ylo = clip[2], yhi = clip[3];
+        const int k00 = src.index(i, j), k10 = src.index(i + 1, j), k01 = src.index(i, j + 1),
+                  k11 = src.index(i + 1, j + 1);
+        auto interp = [&](const Eigen::VectorXd& v, double x, double y) {
+          return pm::test::bilinear(a, b, c, d, v[k00], v[k10], v[k01], v[k11], x, y);
+        };
+        for (size_t q = 0; q < gx.size(); ++q)
+          for (size_t s = 0; s < gy.size(); ++s) {
+            const double x = 0.5 * (lo + hi) + 0.5 * (hi - lo) * gx[q];
+            const double y = 0.5 * (ylo + yhi) + 0.5 * (yhi - ylo) * gy[s];
+            const double w = wx[q] * wy[s] * 0.25 * (hi - lo) * (yhi - ylo) * r;  // dA
+            const double fn = interp(f.normal, x, y), fs = interp(f.circumferential, x, y),
+                         fy = interp(f.axial, x, y);
+            const Eigen::Vector3d n(std::cos(x), 0.0, std::sin(x)),
+                t(-std::sin(x), 0.0, std::cos(x));
+            const Eigen::Vector3d density = fn * n + fs * t + fy * Eigen::Vector3d::UnitY();
+            const Eigen::Vector3d pos(r * std::cos(x), y, r * std::sin(x));
+            out.force += w * density;
+            out.moment += w * (pos - point).cross(density);
+            const Eigen::Vector3d absF(std::abs(fn), std::abs(fs), std::abs(fy));
+            sc.absTraction += w * absF;
+            sc.moment += w * absF.sum() * (pos - point).norm();
+          }
+      });
   if (scales)
     *scales = sc;
   return out;

@@ -73,6 +73,19 @@ pm::CylinderGrid gradedSector(std::mt19937& rng, int nPhi, int nY) {
                                   pm::test::randomNodes(rng, 0.002, 0.041, nY));
 }
 
+// Errors of the surface against the bicubic at `count` random points of the graded
+// sectors' domain [-0.6, 0.7] x [0.002, 0.041].
+MaxErrors errorsAtRandomPoints(const Bicubic& f, const pm::HermiteSurface& surface,
+                               std::mt19937& rng, int count) {
+  std::uniform_real_distribution<double> phi(-0.6, 0.7), y(0.002, 0.041);
+  MaxErrors e;
+  for (int s = 0; s < count; ++s) {
+    const double p = phi(rng), q = y(rng);
+    e.add(f.at(p, q), surface.evaluate(p, q));
+  }
+  return e;
+}
+
 }  // namespace
 
 // Reference: the bicubic polynomial itself. The not-a-knot spline slopes are exact for
@@ -84,13 +97,7 @@ TEST(HermiteSurface, ReproducesBicubicPolynomialsExactlyWithSplineDerivatives) {
     const pm::CylinderGrid grid = gradedSector(rng, 4 + 3 * trial, 5 + 4 * trial);
     const Bicubic f = randomBicubic(rng, 0.04);
     const pm::HermiteSurface surface(grid, f.nodal(grid, &pm::HermiteSample::value));
-    std::uniform_real_distribution<double> phi(-0.6, 0.7), y(0.002, 0.041);
-    MaxErrors e;
-    for (int s = 0; s < 300; ++s) {
-      const double p = phi(rng), q = y(rng);
-      e.add(f.at(p, q), surface.evaluate(p, q));
-    }
-    e.expectRelativeBelow(1e-12);
+    errorsAtRandomPoints(f, surface, rng, 300).expectRelativeBelow(1e-12);
   }
 }
 
@@ -102,13 +109,7 @@ TEST(HermiteSurface, ReproducesBicubicPolynomialsExactlyWithSuppliedDerivatives)
   const pm::HermiteSurface surface(
       grid, f.nodal(grid, &pm::HermiteSample::value), f.nodal(grid, &pm::HermiteSample::dPhi),
       f.nodal(grid, &pm::HermiteSample::dY), f.nodal(grid, &pm::HermiteSample::dPhiDY));
-  std::uniform_real_distribution<double> phi(-0.6, 0.7), y(0.002, 0.041);
-  MaxErrors e;
-  for (int s = 0; s < 300; ++s) {
-    const double p = phi(rng), q = y(rng);
-    e.add(f.at(p, q), surface.evaluate(p, q));
-  }
-  e.expectRelativeBelow(1e-12);
+  errorsAtRandomPoints(f, surface, rng, 300).expectRelativeBelow(1e-12);
 }
 
 // updateValues() keeps the grid's factorisations: a surface built for other data and then
@@ -120,13 +121,7 @@ TEST(HermiteSurface, UpdateValuesReproducesTheNewData) {
   for (int step = 0; step < 3; ++step) {
     const Bicubic f = randomBicubic(rng, 0.04);
     surface.updateValues(f.nodal(grid, &pm::HermiteSample::value));
-    std::uniform_real_distribution<double> phi(-0.6, 0.7), y(0.002, 0.041);
-    MaxErrors e;
-    for (int s = 0; s < 200; ++s) {
-      const double p = phi(rng), q = y(rng);
-      e.add(f.at(p, q), surface.evaluate(p, q));
-    }
-    e.expectRelativeBelow(1e-12);
+    errorsAtRandomPoints(f, surface, rng, 200).expectRelativeBelow(1e-12);
   }
 }
 

@@ -130,6 +130,8 @@ class HermiteSurface {
                       OutsidePolicy outside = OutsidePolicy::Throw) const;
 
  private:
+  // Grid, factorisations and storage; values set by the public constructors.
+  explicit HermiteSurface(CylinderGrid grid);
   void checkValues(const char* function, const Eigen::Ref<const Eigen::VectorXd>& values) const;
   void calcSplineSlopes();
   void calcCellCoefficients();

@@ -15,7 +15,8 @@
 // for a fixed pair of grids and offset; TensorForceMap keeps the factors so that a new
 // axial offset (the piston moving in the liner) rebuilds only the 1-D axial factor.
 //
-// Static equivalence (tests/mapping/test_force_map.cpp), Consistent rule:
+// Static equivalence, Consistent rule (tests/mapping/test_force_map.cpp and
+// test_force_map_cylinder.cpp; details in mapping/README.md):
 // - developed surface (s = R phi, y), any traction component mapped by the same matrix:
 //   total force and the first moments int s p_h dA, int y p_h dA are exact over the
 //   overlapped region, hence all three forces and all three moments of a traction

@@ -1,0 +1,149 @@
+#pragma once
+// Force mapping by analytical integration (thesis eq. 10, DESIGN.md §4): a pressure (or
+// any force per area) known at the nodes of a source grid, read as its bilinear
+// interpolant p_h, becomes nodal forces on a target grid,
+//
+//   F_J = integral p_h(phi, y) * N_J(phi, y) dA,   dA = R_source dphi dy,
+//
+// with N_J the target's bilinear shape function (LoadRule::Consistent) or the indicator
+// of its half-cells (LoadRule::HalfCell). The integral is exact (see HatOverlap1D.h).
+// Both grids are tensor grids on the same cylinder axis, so the map factorises:
+//
+//   F = R_source * kron(A_y, A_phi) * p,   i.e.   F_mat = R * A_phi * P_mat * A_y^T
+//
+// (P_mat, F_mat the nPhi x nY node matrices). ForceMap assembles the sparse matrix once
+// for a fixed pair of grids and offset; TensorForceMap keeps the factors so that a new
+// axial offset (the piston moving in the liner) rebuilds only the 1-D axial factor.
+//
+// Static equivalence, Consistent rule (tests/mapping/test_force_map.cpp and
+// test_force_map_cylinder.cpp; details in mapping/README.md):
+// - developed surface (s = R phi, y), any traction component mapped by the same matrix:
+//   total force and the first moments int s p_h dA, int y p_h dA are exact over the
+//   overlapped region, hence all three forces and all three moments of a traction
+//   vector (normal, circumferential, axial components). HalfCell conserves the total
+//   force only.
+// - curved cylinder, TensorForceMap::applyTraction (exact n(phi), t(phi) in the
+//   integrand): the total 3-D force is exact; the moments about the x and z axes
+//   through any point on the cylinder axis are exact for the normal and
+//   circumferential components; the axial component's x/z moments and the moment
+//   about the cylinder axis are not exact (errors bounded in mapping/README.md).
+//
+// Partial overlap: source cells (parts of cells) outside the target grid cannot be
+// mapped; their force is reported in LoadBalance::unmapped_N, never dropped silently.
+//
+// Thread safety: ForceMap and TensorForceMap are immutable after construction and can be
+// shared between threads; TensorForceMap's per-step state and scratch live in the
+// caller's TensorForceMap::Workspace (one per thread).
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "pistondyn/mapping/CylinderGrid.h"
+#include "pistondyn/mapping/HatOverlap1D.h"
+
+namespace pistondyn::mapping {
+
+// Force bookkeeping of one scalar mapping.
+struct LoadBalance {
+  double sourceTotal_N = 0.0;  // integral of p_h over the whole source grid [N]
+  double unmapped_N = 0.0;     // part of it on source regions outside the target grid [N]
+  // The mapped target forces sum to sourceTotal_N - unmapped_N (exactly, up to rounding).
+  double mapped_N() const { return sourceTotal_N - unmapped_N; }
+};
+
+// Force bookkeeping of a 3-D traction mapping, components in the target frame [N].
+struct CartesianLoadBalance {
+  Eigen::Vector3d sourceTotal_N = Eigen::Vector3d::Zero();
+  Eigen::Vector3d unmapped_N = Eigen::Vector3d::Zero();
+};
+
+class TensorForceMap;
+
+class ForceMap {
+ public:
+  // Inputs:
+  //   source         grid of the nodal pressures (e.g. the fine contact grid)
+  //   target         grid receiving nodal forces (structural or liner grid)
+  //   sourceInTarget a source node (phi, y) lies at (phi + phi_rad, y + y_m) of the target
+  //   rule           Consistent (default) or HalfCell
+  // Throws std::invalid_argument for non-finite offsets.
+  ForceMap(const CylinderGrid& source, const CylinderGrid& target, GridOffset sourceInTarget,
+           LoadRule rule = LoadRule::Consistent);
+
+  // targetForce_N = matrix() * sourcePressure_Pa (nodal forces [N] from nodal pressures
+  // [Pa]); entries are areas [m^2]. Row = target node, column = source node.
+  const Eigen::SparseMatrix<double, Eigen::RowMajor>& matrix() const { return matrix_; }
+  // Per source node: integral of its shape function over the whole source grid [m^2]
+  // (= source.nodeArea_m2()), and over the part outside the target grid [m^2]. The
+  // unmapped nodal loads are unmappedArea_m2().cwiseProduct(p).
+  const Eigen::VectorXd& sourceArea_m2() const { return sourceArea_m2_; }
+  const Eigen::VectorXd& unmappedArea_m2() const { return unmappedArea_m2_; }
+
+  // Maps nodal pressures [Pa] (source.nodeCount()) to nodal forces [N]
+  // (target.nodeCount(), overwritten). Throws std::invalid_argument on wrong sizes or
+  // non-finite pressures. No allocation.
+  [[nodiscard]] LoadBalance apply(const Eigen::Ref<const Eigen::VectorXd>& sourcePressure_Pa,
+                                  Eigen::Ref<Eigen::VectorXd> targetForce_N) const;
+
+ private:
+  Eigen::SparseMatrix<double, Eigen::RowMajor> matrix_;
+  Eigen::VectorXd sourceArea_m2_, unmappedArea_m2_;
+};
+
+class TensorForceMap {
+ public:
+  // Per-caller state: the axial factor for the current axial offset, and scratch.
+  struct Workspace {
+    HatOverlap1D axial;          // A_y for the offset set last
+    double yOffset_m = 0.0;      // that offset
+    bool ready = false;          // setAxialOffset() was called
+    Eigen::MatrixXd q0, q1, q2;  // A_phi * P products (target nPhi x source nY)
+  };
+
+  // Builds the circumferential factors (plain, and cos/sin-weighted for applyTraction);
+  // a source node (phi, y) lies at phi + phiOffset_rad of the target frame.
+  TensorForceMap(const CylinderGrid& source, const CylinderGrid& target, double phiOffset_rad,
+                 LoadRule rule = LoadRule::Consistent);
+
+  // New axial offset (source node y lies at y + yOffset_m of the target): rebuilds the
+  // 1-D axial factor only, O(source nY + target nodes it touches); no allocation once
+  // the workspace has seen a similar overlap.
+  void setAxialOffset(double yOffset_m, Workspace& ws) const;
+
+  // Same result as ForceMap(source, target, {phiOffset, ws.yOffset_m}, rule).apply(...),
+  // computed as R * A_phi * P * A_y^T. Throws std::invalid_argument on wrong sizes,
+  // non-finite pressures or a workspace without setAxialOffset().
+  [[nodiscard]] LoadBalance apply(Workspace& ws,
+                                  const Eigen::Ref<const Eigen::VectorXd>& sourcePressure_Pa,
+                                  Eigen::Ref<Eigen::VectorXd> targetForce_N) const;
+
+  // 3-D nodal forces on the curved cylinder. The source carries a force per area [Pa]
+  //   f = normal * n(phi) + circumferential * t(phi) + axial * e_y,
+  //   n = (cos phi, 0, sin phi) (outward), t = (-sin phi, 0, cos phi), e_y = (0, 1, 0),
+  // in the target frame (x = thrust side at phi = 0, y = cylinder axis, z = pin axis at
+  // phi = pi/2). Target nodal forces F_J = integral f N_J dA with n, t exact in the
+  // integrand. E.g. film pressure p pushing the liner outwards: normal = +p on the liner.
+  [[nodiscard]] CartesianLoadBalance applyTraction(
+      Workspace& ws, const Eigen::Ref<const Eigen::VectorXd>& normal_Pa,
+      const Eigen::Ref<const Eigen::VectorXd>& circumferential_Pa,
+      const Eigen::Ref<const Eigen::VectorXd>& axial_Pa, Eigen::Ref<Eigen::VectorXd> forceX_N,
+      Eigen::Ref<Eigen::VectorXd> forceY_N, Eigen::Ref<Eigen::VectorXd> forceZ_N) const;
+
+  const CylinderGrid& source() const { return source_; }
+  const CylinderGrid& target() const { return target_; }
+  double phiOffset_rad() const { return phiOffset_rad_; }
+  LoadRule rule() const { return rule_; }
+  // The circumferential factor A_phi (target nPhi x source nPhi, [rad]).
+  const HatOverlap1D& circumferentialFactor() const { return phi_; }
+
+ private:
+  friend class ForceMap;
+  void checkWorkspace(const char* fn, const Workspace& ws) const;
+
+  CylinderGrid source_, target_;
+  double phiOffset_rad_;
+  LoadRule rule_;
+  HatOverlap1D phi_;  // with cos/sin weights
+};
+
+}  // namespace pistondyn::mapping

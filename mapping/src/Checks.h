@@ -1,0 +1,59 @@
+#pragma once
+// Argument checks shared by the mapping sources. Every failure throws
+// std::invalid_argument whose message names the function and the argument.
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/Core>
+
+namespace pistondyn::mapping::detail {
+
+[[noreturn]] inline void fail(const char* function, const std::string& what) {
+  throw std::invalid_argument(std::string(function) + ": " + what);
+}
+
+inline std::string str(double v) {
+  std::ostringstream os;
+  os.precision(17);
+  os << v;
+  return os.str();
+}
+
+inline void requireFiniteScalar(const char* function, const char* argument, double v) {
+  if (!std::isfinite(v))
+    fail(function, std::string(argument) + " = " + str(v) + " must be finite");
+}
+
+// Size check, then every entry finite (the first offending index is named).
+inline void requireFiniteVector(const char* function, const char* argument,
+                                const Eigen::Ref<const Eigen::VectorXd>& v,
+                                Eigen::Index expectedSize) {
+  if (v.size() != expectedSize)
+    fail(function, std::string(argument) + " has " + std::to_string(v.size()) +
+                       " entries, expected " + std::to_string(expectedSize));
+  if (v.allFinite())
+    return;
+  for (Eigen::Index k = 0; k < v.size(); ++k)
+    if (!std::isfinite(v[k]))
+      fail(function, std::string(argument) + "[" + std::to_string(k) + "] = " + str(v[k]) +
+                         " must be finite");
+}
+
+// Node coordinates: at least minCount entries, finite, strictly increasing.
+inline void requireIncreasingNodes(const char* function, const char* argument,
+                                   const Eigen::Ref<const Eigen::VectorXd>& x, int minCount) {
+  if (x.size() < minCount)
+    fail(function, std::string(argument) + " has " + std::to_string(x.size()) +
+                       " nodes, at least " + std::to_string(minCount) + " needed");
+  requireFiniteVector(function, argument, x, x.size());
+  for (Eigen::Index k = 1; k < x.size(); ++k)
+    if (!(x[k] > x[k - 1]))
+      fail(function, std::string(argument) + "[" + std::to_string(k) + "] = " + str(x[k]) +
+                         " must be greater than " + argument + "[" + std::to_string(k - 1) +
+                         "] = " + str(x[k - 1]) + " (strictly increasing)");
+}
+
+}  // namespace pistondyn::mapping::detail

@@ -1,0 +1,105 @@
+#include "pistondyn/mapping/CylinderGrid.h"
+
+#include <cmath>
+#include <string>
+
+#include "Checks.h"
+
+namespace pistondyn::mapping {
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+
+void checkRadius(const char* function, double radius_m) {
+  if (!(std::isfinite(radius_m) && radius_m > 0.0))
+    detail::fail(function, "radius_m = " + detail::str(radius_m) + " must be positive and finite");
+}
+
+// Trapezoid weights: integral of each 1-D hat function over its support.
+Eigen::VectorXd hatIntegrals(const Eigen::VectorXd& x, bool closed, double period) {
+  const Eigen::Index n = x.size();
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index c = 0; c + 1 < n; ++c) {
+    const double h = x[c + 1] - x[c];
+    w[c] += 0.5 * h;
+    w[c + 1] += 0.5 * h;
+  }
+  if (closed) {
+    const double h = x[0] + period - x[n - 1];
+    w[n - 1] += 0.5 * h;
+    w[0] += 0.5 * h;
+  }
+  return w;
+}
+
+}  // namespace
+
+CylinderGrid CylinderGrid::sector(double radius_m, const Eigen::VectorXd& phi_rad,
+                                  const Eigen::VectorXd& y_m) {
+  const char* fn = "CylinderGrid::sector";
+  checkRadius(fn, radius_m);
+  detail::requireIncreasingNodes(fn, "phi_rad", phi_rad, 2);
+  detail::requireIncreasingNodes(fn, "y_m", y_m, 2);
+  const double span = phi_rad[phi_rad.size() - 1] - phi_rad[0];
+  if (!(span < kTwoPi))
+    detail::fail(fn, "phi_rad spans " + detail::str(span) +
+                         " rad, a sector must span less than 2*pi (use CylinderGrid::fullCircle)");
+  return CylinderGrid(radius_m, phi_rad, y_m, false);
+}
+
+CylinderGrid CylinderGrid::fullCircle(double radius_m, const Eigen::VectorXd& phi_rad,
+                                      const Eigen::VectorXd& y_m) {
+  const char* fn = "CylinderGrid::fullCircle";
+  checkRadius(fn, radius_m);
+  detail::requireIncreasingNodes(fn, "phi_rad", phi_rad, 3);
+  detail::requireIncreasingNodes(fn, "y_m", y_m, 2);
+  const double span = phi_rad[phi_rad.size() - 1] - phi_rad[0];
+  if (!(span < kTwoPi))
+    detail::fail(fn, "phi_rad spans " + detail::str(span) +
+                         " rad; the closing node phi_rad[0] + 2*pi must not be repeated");
+  return CylinderGrid(radius_m, phi_rad, y_m, true);
+}
+
+double CylinderGrid::phiEnd_rad() const {
+  return closed_ ? phi_rad_[0] + kTwoPi : phi_rad_[phi_rad_.size() - 1];
+}
+
+Eigen::VectorXd CylinderGrid::nodeArea_m2() const {
+  const Eigen::VectorXd wPhi = hatIntegrals(phi_rad_, closed_, kTwoPi);
+  const Eigen::VectorXd wY = hatIntegrals(y_m_, false, 0.0);
+  Eigen::VectorXd area(nodeCount());
+  for (int j = 0; j < nY(); ++j)
+    for (int i = 0; i < nPhi(); ++i)
+      area[index(i, j)] = radius_m_ * wPhi[i] * wY[j];
+  return area;
+}
+
+Eigen::VectorXd uniformNodes(double first, double last, int count) {
+  const char* fn = "uniformNodes";
+  if (count < 2)
+    detail::fail(fn, "count = " + std::to_string(count) + " must be at least 2");
+  detail::requireFiniteScalar(fn, "first", first);
+  detail::requireFiniteScalar(fn, "last", last);
+  if (!(last > first))
+    detail::fail(
+        fn, "last = " + detail::str(last) + " must be greater than first = " + detail::str(first));
+  Eigen::VectorXd x(count);
+  for (int k = 0; k < count; ++k)
+    x[k] = first + (last - first) * k / (count - 1);
+  x[count - 1] = last;
+  return x;
+}
+
+Eigen::VectorXd fullCircleNodes_rad(int count, double phi0_rad) {
+  const char* fn = "fullCircleNodes_rad";
+  if (count < 3)
+    detail::fail(fn, "count = " + std::to_string(count) + " must be at least 3");
+  detail::requireFiniteScalar(fn, "phi0_rad", phi0_rad);
+  Eigen::VectorXd x(count);
+  for (int k = 0; k < count; ++k)
+    x[k] = phi0_rad + kTwoPi * k / count;
+  return x;
+}
+
+}  // namespace pistondyn::mapping

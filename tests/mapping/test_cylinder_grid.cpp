@@ -1,0 +1,92 @@
+// CylinderGrid: construction checks and the node areas (trapezoid weights).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "TestSupport.h"
+#include "pistondyn/mapping/CylinderGrid.h"
+
+namespace pm = pistondyn::mapping;
+using pm::test::expectInvalid;
+using pm::test::kPi;
+
+namespace {
+
+Eigen::VectorXd vec(std::initializer_list<double> v) {
+  Eigen::VectorXd x(static_cast<Eigen::Index>(v.size()));
+  int k = 0;
+  for (double d : v)
+    x[k++] = d;
+  return x;
+}
+
+}  // namespace
+
+TEST(CylinderGrid, RejectsBadNodesNamingTheArgument) {
+  const Eigen::VectorXd y = vec({0.0, 0.01, 0.02});
+  expectInvalid(
+      [&] {
+        pm::CylinderGrid::sector(0.03, vec({0.0, 0.2, 0.1, 0.3}), y);
+      },
+      "phi_rad[2]");
+  expectInvalid(
+      [&] {
+        pm::CylinderGrid::sector(0.03, vec({0.0, 0.1}), vec({0.0, 0.0}));
+      },
+      "y_m[1]");
+  expectInvalid([&] { pm::CylinderGrid::sector(0.03, vec({0.0}), y); }, "phi_rad has 1 nodes");
+  expectInvalid(
+      [&] {
+        pm::CylinderGrid::sector(0.03, vec({0.0, 0.1}), vec({0.01}));
+      },
+      "y_m has 1 nodes");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  expectInvalid(
+      [&] {
+        pm::CylinderGrid::sector(0.03, vec({0.0, 0.1}), vec({0.0, nan}));
+      },
+      "y_m[1]");
+  expectInvalid([&] { pm::CylinderGrid::sector(0.0, vec({0.0, 0.1}), y); }, "radius_m");
+  expectInvalid([&] { pm::CylinderGrid::sector(nan, vec({0.0, 0.1}), y); }, "radius_m");
+  // A sector of 2*pi or more repeats a node: that is a full circle.
+  expectInvalid(
+      [&] {
+        pm::CylinderGrid::sector(0.03, vec({0.0, kPi, 2 * kPi}), y);
+      },
+      "phi_rad spans");
+  expectInvalid(
+      [&] {
+        pm::CylinderGrid::fullCircle(0.03, vec({0.0, kPi, 2 * kPi}), y);
+      },
+      "phi_rad spans");
+  expectInvalid(
+      [&] {
+        pm::CylinderGrid::fullCircle(0.03, vec({0.0, kPi}), y);
+      },
+      "phi_rad has 2 nodes");
+  expectInvalid([] { pm::uniformNodes(0.0, 1.0, 1); }, "count");
+  expectInvalid([] { pm::fullCircleNodes_rad(2); }, "count");
+}
+
+// Independent reference: the grid's area in closed form, R * (angle range) * length;
+// the node areas are the integrals of the shape functions, which sum to it.
+TEST(CylinderGrid, NodeAreasSumToTheGridArea) {
+  std::mt19937 rng(7);
+  const double r = 0.0325;
+  const Eigen::VectorXd phi = pm::test::randomNodes(rng, -0.7, 0.9, 11);
+  const Eigen::VectorXd y = pm::test::randomNodes(rng, 0.001, 0.043, 17);
+  const auto sector = pm::CylinderGrid::sector(r, phi, y);
+  const double sectorArea = r * 1.6 * 0.042;
+  EXPECT_NEAR(sector.nodeArea_m2().sum(), sectorArea, 1e-14 * sectorArea);
+
+  const auto ring = pm::CylinderGrid::fullCircle(r, pm::test::randomNodes(rng, 0.3, 6.0, 13), y);
+  const double ringArea = r * 2 * kPi * 0.042;
+  EXPECT_NEAR(ring.nodeArea_m2().sum(), ringArea, 1e-14 * ringArea);
+  EXPECT_EQ(ring.phiCellCount(), 13);
+  EXPECT_EQ(sector.phiCellCount(), 10);
+  EXPECT_DOUBLE_EQ(ring.phiEnd_rad(), 0.3 + 2 * kPi);
+}

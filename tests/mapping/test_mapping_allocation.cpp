@@ -1,0 +1,120 @@
+// CONVENTIONS.md: code that runs every force evaluation allocates nothing after the first
+// call at a given size. Reference: this executable interposes glibc's malloc, calloc and
+// realloc (Eigen allocates with malloc, operator new ends there too) and counts the calls
+// made while a flag is set.
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstddef>
+#include <vector>
+
+#include "pistondyn/mapping/ForceMap.h"
+#include "pistondyn/mapping/HermiteSurface.h"
+
+namespace {
+std::atomic<bool> counting{false};
+std::atomic<long> allocations{0};
+}  // namespace
+
+extern "C" {
+void* __libc_malloc(std::size_t);
+void* __libc_calloc(std::size_t, std::size_t);
+void* __libc_realloc(void*, std::size_t);
+void __libc_free(void*);
+
+void* malloc(std::size_t size) {
+  if (counting.load())
+    ++allocations;
+  return __libc_malloc(size);
+}
+void* calloc(std::size_t count, std::size_t size) {
+  if (counting.load())
+    ++allocations;
+  return __libc_calloc(count, size);
+}
+void* realloc(void* p, std::size_t size) {
+  if (counting.load())
+    ++allocations;
+  return __libc_realloc(p, size);
+}
+void free(void* p) {
+  __libc_free(p);
+}
+}
+
+namespace pm = pistondyn::mapping;
+
+namespace {
+// Allocations made by f().
+template <class F>
+long allocationsDuring(F&& f) {
+  allocations = 0;
+  counting = true;
+  f();
+  counting = false;
+  return allocations.load();
+}
+
+const double kR = 0.0325;
+pm::CylinderGrid contactGrid() {
+  return pm::CylinderGrid::sector(kR, pm::uniformNodes(-0.7, 0.7, 64),
+                                  pm::uniformNodes(0.0, 0.03, 48));
+}
+}  // namespace
+
+TEST(MappingAllocation, PerStepCallsDoNotAllocate) {
+  // The counter sees Eigen's and the standard library's allocations (otherwise the
+  // zeros below would prove nothing); the volatile sink keeps them from being elided.
+  volatile double sink = 0.0;
+  EXPECT_GT(allocationsDuring([&] {
+              Eigen::VectorXd big = Eigen::VectorXd::Ones(1000);
+              sink = sink + big[999];
+            }),
+            0);
+  EXPECT_GT(allocationsDuring([&] {
+              std::vector<double> v(1000, 1.0);
+              sink = sink + v[999];
+            }),
+            0);
+
+  const auto contact = contactGrid();
+  const auto structural = pm::CylinderGrid::sector(kR, pm::uniformNodes(-1.0, 1.0, 17),
+                                                   pm::uniformNodes(-0.002, 0.034, 30));
+  const auto liner = pm::CylinderGrid::fullCircle(kR, pm::fullCircleNodes_rad(36),
+                                                  pm::uniformNodes(0.0, 0.12, 400));
+  const Eigen::VectorXd p = Eigen::VectorXd::LinSpaced(contact.nodeCount(), 1e5, 2e6);
+  Eigen::VectorXd fs(structural.nodeCount()), fl(liner.nodeCount()), fx(liner.nodeCount()),
+      fy(liner.nodeCount()), fz(liner.nodeCount());
+
+  const pm::ForceMap toStructure(contact, structural, {});
+  EXPECT_EQ(allocationsDuring([&] { (void)toStructure.apply(p, fs); }), 0);
+
+  const pm::TensorForceMap toLiner(contact, liner, 0.0);
+  pm::TensorForceMap::Workspace ws;
+  toLiner.setAxialOffset(0.0, ws);  // first call at this size: may allocate
+  (void)toLiner.apply(ws, p, fl);
+  (void)toLiner.applyTraction(ws, p, p, p, fx, fy, fz);
+  EXPECT_EQ(allocationsDuring([&] {
+              for (int step = 0; step < 50; ++step) {
+                toLiner.setAxialOffset(0.0017 * step, ws);
+                (void)toLiner.apply(ws, p, fl);
+                (void)toLiner.applyTraction(ws, p, p, p, fx, fy, fz);
+              }
+            }),
+            0);
+
+  Eigen::VectorXd v = Eigen::VectorXd::LinSpaced(structural.nodeCount(), 0.0, 1e-5);
+  pm::HermiteSurface surface(structural, v);
+  pm::HermiteGridWorkspace hws;
+  Eigen::VectorXd out(contact.nodeCount()), dPhi(contact.nodeCount()), dY(contact.nodeCount());
+  surface.evaluateOnGrid(contact, {}, out, hws);
+  EXPECT_EQ(allocationsDuring([&] {
+              v *= 1.01;
+              surface.updateValues(v);
+              surface.evaluateOnGrid(contact, {0.01, 0.001}, out, hws);
+              surface.evaluateOnGrid(contact, {0.01, 0.001}, out, dPhi, dY, hws);
+              (void)surface.evaluate(0.1, 0.01);
+            }),
+            0);
+}

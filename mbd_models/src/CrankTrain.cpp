@@ -74,23 +74,30 @@ CrankTrain::CrankTrain(SimTK::SimbodyMatterSubsystem& matter, SimTK::GeneralForc
                             SimTK::Body::Rigid(toSimbody(engine_.mass.conrod)), Transform());
   conrod_ = conrod;
 
+  // Tertiary motion (along the pin axis) lives in the joint that lets the piston side
+  // slide: a floating pin is held axially by circlips in the piston and a pin fixed in
+  // the piston moves with it, so for both the small end slides on the pin (Cylinder
+  // joint rod -> pin); a pin clamped in the rod stays with the rod and the piston bosses
+  // slide on it (Cylinder joint pin -> piston).
   const SimTK::Body::Rigid pinBody(toSimbody(engine_.mass.pin));
-  if (engine_.pinJoint == PinJoint::FixedInRod) {
-    pin_ = MobilizedBody::Weld(conrod_, Transform(Vec3(0, L, 0)), pinBody, Transform());
-  } else {
-    pin_ = MobilizedBody::Pin(conrod_, Transform(Vec3(0, L, 0)), pinBody, Transform());
-  }
-
   const SimTK::Body::Rigid pistonBody(toSimbody(engine_.mass.piston));
-  const Vec3 pinInPiston = getPinAxisInPiston();
-  if (engine_.pinJoint == PinJoint::FixedInPiston) {
-    // Slider translates along the common x axis of F and M: turn x onto the pin axis z.
-    const Rotation xToZ(-SimTK::Pi / 2, SimTK::YAxis);
-    piston_ = MobilizedBody::Slider(pin_, Transform(uprightFrame * xToZ, Vec3(0)), pistonBody,
-                                    Transform(xToZ, pinInPiston));
-  } else {
-    piston_ = MobilizedBody::Cylinder(pin_, Transform(uprightFrame, Vec3(0)), pistonBody,
-                                      Transform(pinInPiston));
+  const Transform smallEnd(Vec3(0, L, 0));
+  const Transform pistonOnPin(uprightFrame, Vec3(0));
+  const Transform pinInPiston(getPinAxisInPiston());
+  switch (engine_.pinJoint) {
+    case PinJoint::FixedInRod:
+      pin_ = MobilizedBody::Weld(conrod_, smallEnd, pinBody, Transform());
+      piston_ = MobilizedBody::Cylinder(pin_, pistonOnPin, pistonBody, pinInPiston);
+      break;
+    case PinJoint::FixedInPiston:
+      pin_ = MobilizedBody::Cylinder(conrod_, smallEnd, pinBody, Transform());
+      piston_ = MobilizedBody::Weld(pin_, pistonOnPin, pistonBody, pinInPiston);
+      break;
+    case PinJoint::Floating:
+    default:
+      pin_ = MobilizedBody::Cylinder(conrod_, smallEnd, pinBody, Transform());
+      piston_ = MobilizedBody::Pin(pin_, pistonOnPin, pistonBody, pinInPiston);
+      break;
   }
 
   if (engine_.drive.mode == CrankDrive::Mode::ConstantSpeed) {
@@ -150,21 +157,31 @@ void CrankTrain::setPose(SimTK::State& s, double theta, double uLat, double tilt
   const double dy = std::sqrt(L * L - dx * dx);
   const double psiRod = std::atan2(-dx, dy);
 
+  if (engine_.drive.mode == CrankDrive::Mode::ConstantSpeed) {
+    // The drive prescribes theta = omega t: the crank angle is set through the clock.
+    s.setTime(theta / engine_.drive.speed_radps);
+  }
   crank_.setOneQ(s, SimTK::MobilizerQIndex(0), theta);
   conrod_.setOneQ(s, SimTK::MobilizerQIndex(0), psiRod - psiCrank);
-  double psiPin = psiRod;
-  if (engine_.pinJoint == PinJoint::Floating) {
-    pin_.setOneQ(s, SimTK::MobilizerQIndex(0), 0.0);
-  } else if (engine_.pinJoint == PinJoint::FixedInPiston) {
-    psiPin = a + crankFrameRotation_rad_;
-    pin_.setOneQ(s, SimTK::MobilizerQIndex(0), psiPin - psiRod);
+  // Pin rotation: a floating pin does not spin (pin angle = rod angle), a pin fixed in
+  // the piston turns with it.
+  const double psiPin =
+      engine_.pinJoint == PinJoint::FixedInPiston ? a + crankFrameRotation_rad_ : psiRod;
+  const SimTK::MobilizedBody& slider = engine_.pinJoint == PinJoint::FixedInRod ? piston_ : pin_;
+  switch (engine_.pinJoint) {
+    case PinJoint::FixedInRod:
+      piston_.setOneQ(s, SimTK::MobilizerQIndex(0), a - psiPin + crankFrameRotation_rad_);
+      break;
+    case PinJoint::FixedInPiston:
+      pin_.setOneQ(s, SimTK::MobilizerQIndex(0), psiPin - psiRod);
+      break;
+    case PinJoint::Floating:
+    default:
+      pin_.setOneQ(s, SimTK::MobilizerQIndex(0), 0.0);
+      piston_.setOneQ(s, SimTK::MobilizerQIndex(0), a - psiPin + crankFrameRotation_rad_);
+      break;
   }
-  if (engine_.pinJoint == PinJoint::FixedInPiston) {
-    piston_.setOneQ(s, SimTK::MobilizerQIndex(0), uTran);
-  } else {
-    piston_.setOneQ(s, SimTK::MobilizerQIndex(0), a - psiPin + crankFrameRotation_rad_);
-    piston_.setOneQ(s, SimTK::MobilizerQIndex(1), uTran);
-  }
+  slider.setOneQ(s, SimTK::MobilizerQIndex(1), uTran);
 }
 
 void CrankTrain::setRates(SimTK::State& s, double omega, double uLatDot, double tiltDot,
@@ -175,10 +192,9 @@ void CrankTrain::setRates(SimTK::State& s, double omega, double uLatDot, double 
   const double cy = g.crankRadius_m * std::cos(psiCrank);
   const double psiRod = psiCrank + conrod_.getOneQ(s, SimTK::MobilizerQIndex(0));
   const double relY = g.conrodLength_m * std::cos(psiRod);  // (P - C)_y > 0
-  double psiPin = psiRod;
-  if (engine_.pinJoint != PinJoint::FixedInRod)
-    psiPin += pin_.getOneQ(s, SimTK::MobilizerQIndex(0));
-  double pistonAngle = psiPin - crankFrameRotation_rad_;  // rotation about +z = -tilt
+  // Piston rotation about +z (= -tilt) from the chain of joint angles.
+  double pistonAngle = psiRod - crankFrameRotation_rad_;
+  if (engine_.pinJoint != PinJoint::FixedInRod) pistonAngle += pin_.getOneQ(s, SimTK::MobilizerQIndex(0));
   if (engine_.pinJoint != PinJoint::FixedInPiston) {
     pistonAngle += piston_.getOneQ(s, SimTK::MobilizerQIndex(0));
   }
@@ -191,20 +207,21 @@ void CrankTrain::setRates(SimTK::State& s, double omega, double uLatDot, double 
 
   crank_.setOneU(s, SimTK::MobilizerUIndex(0), omega);
   conrod_.setOneU(s, SimTK::MobilizerUIndex(0), omegaRod - omega);
-  double omegaPin = omegaRod;
-  if (engine_.pinJoint == PinJoint::Floating) {
-    omegaPin = 0.0;  // a floating pin starts without spin
-    pin_.setOneU(s, SimTK::MobilizerUIndex(0), -omegaRod);
-  } else if (engine_.pinJoint == PinJoint::FixedInPiston) {
-    omegaPin = aDot;
-    pin_.setOneU(s, SimTK::MobilizerUIndex(0), aDot - omegaRod);
+  const SimTK::MobilizedBody& slider = engine_.pinJoint == PinJoint::FixedInRod ? piston_ : pin_;
+  switch (engine_.pinJoint) {
+    case PinJoint::FixedInRod:
+      piston_.setOneU(s, SimTK::MobilizerUIndex(0), aDot - omegaRod);
+      break;
+    case PinJoint::FixedInPiston:
+      pin_.setOneU(s, SimTK::MobilizerUIndex(0), aDot - omegaRod);
+      break;
+    case PinJoint::Floating:
+    default:
+      pin_.setOneU(s, SimTK::MobilizerUIndex(0), -omegaRod);  // a floating pin starts without spin
+      piston_.setOneU(s, SimTK::MobilizerUIndex(0), aDot);
+      break;
   }
-  if (engine_.pinJoint == PinJoint::FixedInPiston) {
-    piston_.setOneU(s, SimTK::MobilizerUIndex(0), uTranDot);
-  } else {
-    piston_.setOneU(s, SimTK::MobilizerUIndex(0), aDot - omegaPin);
-    piston_.setOneU(s, SimTK::MobilizerUIndex(1), uTranDot);
-  }
+  slider.setOneU(s, SimTK::MobilizerUIndex(1), uTranDot);
 }
 
 double CrankTrain::getDriveTorque_Nm(const SimTK::State& s) const {

@@ -45,12 +45,6 @@ SliderCrank::PinHeight SliderCrank::calcPinHeight(double theta) const {
   return h;
 }
 
-double SliderCrank::calcPinHeightWithLateral(double theta, double uLat_m) const {
-  const double phi = theta + phiTdc_;
-  const double dx = e_ + uLat_m + r_ * std::sin(phi);
-  return r_ * std::cos(phi) + std::sqrt(L_ * L_ - dx * dx);
-}
-
 CylinderVolume::CylinderVolume(const SliderCrank& kinematics, double bore_m,
                                double compressionRatio)
     : kin_(kinematics) {

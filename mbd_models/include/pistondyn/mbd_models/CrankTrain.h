@@ -1,8 +1,12 @@
 #pragma once
 // The crank train as Simbody bodies: crank, connecting rod, piston pin and piston.
 //
-//   Ground --Pin(z)--> crank --Pin(z)--> conrod --Pin(z) | Weld--> pin
-//          --Cylinder(z) | Slider(z)--> piston
+//   Ground --Pin(z)--> crank --Pin(z)--> conrod --[small end]--> pin --> piston
+//     floating pin:        conrod --Cylinder(z)--> pin --Pin(z)--> piston
+//     pin fixed in piston: conrod --Cylinder(z)--> pin --Weld-->   piston
+//     pin fixed in rod:    conrod --Weld-->        pin --Cylinder(z)--> piston
+// (Cylinder = rotation about and translation along the pin axis: the tertiary motion
+// sits where the piston side slides, so a floating pin moves axially with the piston.)
 //
 // The piston has its own rotation (tilt) and translation along the pin axis (tertiary
 // motion) as mobilities, and the rod angle gives its lateral position: the piston is
@@ -62,7 +66,10 @@ class CrankTrain {
 
   // ---- assembly ------------------------------------------------------------------
   // Sets every q so that the crank is at theta, the piston axis is displaced by
-  // uLat_m, tilted by tilt_rad and shifted by uTran_m; sets every u so that the crank
+  // uLat_m, tilted by tilt_rad and shifted by uTran_m. With a constant-speed drive the
+  // crank angle is prescribed as theta = omega t, so setPose also sets the state's time
+  // to theta / omega (otherwise the integrator would move the crank back to omega t
+  // while the rod kept the angle computed for theta). setRates sets every u so that the crank
   // turns at crankSpeed_radps and the piston has the given lateral, tilt and
   // transverse rates. Closed-form; no iteration. The pin (Floating) does not spin.
   void setPose(SimTK::State& s, double crankAngle_rad, double uLat_m = 0.0, double tilt_rad = 0.0,
@@ -74,9 +81,11 @@ class CrankTrain {
   // the direction of rotation (Stage::Acceleration). For a free crank: minus the load.
   double getDriveTorque_Nm(const SimTK::State& s) const;
 
-  // Axial force in the connecting rod at the small end [N], + compression: the force
-  // the rod exerts on the pin along the rod axis (with the pin fixed in the rod: the
-  // force the rod-and-pin exerts on the piston). Stage::Acceleration.
+  // Axial force in the connecting rod at the small end [N], + compression: the component
+  // along the rod axis of the force the rod side exerts on the piston side across the
+  // small-end interface. The pin belongs to the piston side when it floats or is fixed
+  // in the piston (force of the rod on the pin) and to the rod side when it is fixed in
+  // the rod (force of the pin on the piston bosses). Stage::Acceleration.
   double getConrodAxialForce_N(const SimTK::State& s) const;
   // Torque the connecting rod exerts on the crank about the crank axis [N m], + in the
   // direction of rotation (the engine's indicated torque at the crank pin).

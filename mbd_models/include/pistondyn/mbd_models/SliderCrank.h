@@ -41,10 +41,6 @@ class SliderCrank {
   };
   RodAngle calcRodAngle(double crankAngle_rad) const;
 
-  // Pin-axis height when the pin line is displaced laterally by uLat_m (secondary
-  // motion); used to assemble a piston that is not centred.
-  double calcPinHeightWithLateral(double crankAngle_rad, double uLat_m) const;
-
  private:
   double r_, L_, e_, phiTdc_, yTdc_, yBdc_, thetaBdc_;
 };

@@ -5,10 +5,21 @@
 //
 //   const Results& r = cache_.getOrCalc(s, [&](Results& out) { ...compute... });
 //
-// The entry is invalidated by Simbody whenever the state changes at or below
-// `dependsOn` (default Stage::Velocity: results depend on positions and speeds).
+// `dependsOn` is the stage whose invalidation must discard the results. The default,
+// Stage::Dynamics, is the safe choice for anything computed in calcForces(): it is
+// invalidated by changes of q, u AND of auxiliary state variables z (Simbody's updZ()
+// only backs the state up to Dynamics-1), which is where film fill fraction or wear
+// will live. Use an earlier stage only for results that depend on nothing else (e.g.
+// Stage::Position for a function of the crank angle alone).
+//
+// Inside calcForces() the state is still at Stage::Velocity, so a Dynamics-dependent
+// entry is computed on each call there (once per force evaluation) and reads as valid
+// from the moment the state reaches Stage::Dynamics (reports, other elements).
 
+#include "pistondyn/mbd_models/SimbodyBuildCheck.h"
+// clang-format off (the NDEBUG guard must come before Simbody)
 #include <Simbody.h>
+// clang-format on
 
 #include <stdexcept>
 
@@ -18,7 +29,7 @@ template <class T>
 class ElementCache {
  public:
   void allocate(SimTK::State& s, const SimTK::Subsystem& subsystem,
-                SimTK::Stage dependsOn = SimTK::Stage::Velocity) const {
+                SimTK::Stage dependsOn = SimTK::Stage::Dynamics) const {
     subsystem_ = &subsystem;
     index_ = subsystem.allocateLazyCacheEntry(s, dependsOn, new SimTK::Value<T>());
   }
@@ -28,11 +39,14 @@ class ElementCache {
     if (subsystem_ == nullptr) {
       throw std::logic_error("ElementCache: used before realizeTopology() allocated it");
     }
+    // updCacheEntry: readable below the entry's stage (inside calcForces), unlike
+    // getCacheEntry which checks the stage.
+    T& value = SimTK::Value<T>::updDowncast(subsystem_->updCacheEntry(s, index_)).upd();
     if (!subsystem_->isCacheValueRealized(s, index_)) {
-      calc(SimTK::Value<T>::updDowncast(subsystem_->updCacheEntry(s, index_)).upd());
+      calc(value);
       subsystem_->markCacheValueRealized(s, index_);
     }
-    return SimTK::Value<T>::downcast(subsystem_->getCacheEntry(s, index_)).get();
+    return value;
   }
 
  private:

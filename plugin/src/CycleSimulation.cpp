@@ -9,19 +9,26 @@ namespace pistondyn::plugin {
 
 void validate(const SimulationSettings& s) {
   auto fail = [](const std::string& m) { throw std::invalid_argument("SimulationSettings: " + m); };
-  if (!std::isfinite(s.startAngle_deg))
-    fail("startAngle_deg must be finite");
-  if (s.cycles < 1)
-    fail("cycles must be >= 1");
-  if (!(s.outputStep_deg > 0.0) || !std::isfinite(s.outputStep_deg)) {
-    fail("outputStep_deg must be positive");
+  if (!std::isfinite(s.startAngle_deg) || std::abs(s.startAngle_deg) > 720.0) {
+    fail("startAngle_deg must be within [-720, 720] deg");
+  }
+  if (s.cycles < 1 || s.cycles > SimulationSettings::kMaxCycles) {
+    fail("cycles must be between 1 and " + std::to_string(SimulationSettings::kMaxCycles));
+  }
+  if (!(s.outputStep_deg >= SimulationSettings::kMinOutputStep_deg) ||
+      !std::isfinite(s.outputStep_deg) || s.outputStep_deg > 720.0) {
+    fail("outputStep_deg must be between " + std::to_string(SimulationSettings::kMinOutputStep_deg) +
+         " and 720 deg");
   }
   const double perCycle = 720.0 / s.outputStep_deg;
   if (std::abs(perCycle - std::round(perCycle)) > 1e-9 * perCycle) {
     fail("outputStep_deg must divide 720 deg into a whole number of steps");
   }
-  if (!(s.accuracy > 0.0 && s.accuracy < 1.0))
-    fail("accuracy must be in (0, 1)");
+  if (perCycle * s.cycles > SimulationSettings::kMaxRows) {
+    fail("cycles x 720 / outputStep_deg exceeds " +
+         std::to_string(static_cast<long>(SimulationSettings::kMaxRows)) + " output rows");
+  }
+  if (!(s.accuracy > 0.0 && s.accuracy < 1.0)) fail("accuracy must be in (0, 1)");
   if (!(s.constraintTolerance > 0.0 && s.constraintTolerance < 1.0)) {
     fail("constraintTolerance must be in (0, 1)");
   }
@@ -88,6 +95,45 @@ std::unique_ptr<SimTK::Integrator> makeIntegrator(const SimTK::MultibodySystem& 
   }
 }
 
+void advanceTo(SimTK::Integrator& integ, double tOut) {
+  while (integ.getTime() < tOut) {
+    if (integ.stepTo(tOut) == SimTK::Integrator::EndOfSimulation) {
+      throw std::runtime_error("CycleSimulation: integrator stopped: " +
+                               integ.getTerminationReasonString(integ.getTerminationReason()));
+    }
+  }
+}
+
+// Free crank: advance until the crank angle equals thetaTarget (to 1e-12 rad), by a
+// secant/Newton iteration on the time using the crank speed. An overshoot restarts
+// the integrator from the previous row's state. Returns the steps of abandoned runs.
+long landOnCrankAngle(SimTK::Integrator& integ, const mbd::CrankTrain& ct, double thetaTarget) {
+  const SimTK::State start = integ.getState();
+  const double tol = 1e-12 * std::max(1.0, std::abs(thetaTarget));
+  long abandonedSteps = 0;
+  double t = start.getTime() +
+             (thetaTarget - ct.getCrankAngle_rad(start)) / ct.getCrankSpeed_radps(start);
+  for (int iter = 0; iter < 50; ++iter) {
+    if (t < integ.getTime()) {
+      abandonedSteps += integ.getNumStepsTaken();
+      integ.initialize(start);
+    }
+    advanceTo(integ, t);
+    const SimTK::State& s = integ.getState();
+    const double err = thetaTarget - ct.getCrankAngle_rad(s);
+    if (std::abs(err) <= tol) return abandonedSteps;
+    const double speed = ct.getCrankSpeed_radps(s);
+    if (!(speed > 0.0)) {
+      throw std::runtime_error(
+          "CycleSimulation: the free crank stopped or reversed (speed " + std::to_string(speed) +
+          " rad/s at t = " + std::to_string(s.getTime()) + " s); raise the speed or lower the load");
+    }
+    t = s.getTime() + err / speed;
+  }
+  throw std::runtime_error("CycleSimulation: could not land on crank angle " +
+                           std::to_string(thetaTarget * 180.0 / M_PI) + " deg");
+}
+
 }  // namespace
 
 ResultTable CycleSimulation::run(const Progress& progress, const RowObserver& observer) {
@@ -99,11 +145,11 @@ ResultTable CycleSimulation::run(const Progress& progress, const RowObserver& ob
   const double omega = drive.speed_radps;
   const double theta0 = settings_.startAngle_deg * M_PI / 180.0;
 
-  // Constant speed: the Motion prescribes theta = omega t, so start at t0 = theta0/omega.
+  // Constant speed: the Motion prescribes theta = omega t, so setPose puts the state at
+  // t0 = theta0 / omega; a free crank starts at t = 0.
   const bool prescribed = drive.mode == mbd::CrankDrive::Mode::ConstantSpeed;
-  const double t0 = prescribed ? theta0 / omega : 0.0;
-  state.setTime(t0);
   ct.setPose(state, theta0);
+  const double t0 = state.getTime();
   ct.setRates(state, omega);
 
   std::unique_ptr<SimTK::Integrator> integ = makeIntegrator(system, settings_.integrator);
@@ -118,39 +164,37 @@ ResultTable CycleSimulation::run(const Progress& progress, const RowObserver& ob
 
   const long stepsPerCycle = std::lround(720.0 / settings_.outputStep_deg);
   const long nRows = stepsPerCycle * settings_.cycles + 1;
-  const double dt = settings_.outputStep_deg * M_PI / 180.0 / omega;
+  const double dTheta = settings_.outputStep_deg * M_PI / 180.0;
   table.rows.reserve(static_cast<std::size_t>(nRows));
+  long stepsBeforeRestarts = 0;
   for (long k = 0; k < nRows; ++k) {
+    const double thetaTarget = theta0 + static_cast<double>(k) * dTheta;
     if (k > 0) {
-      const double tOut = t0 + static_cast<double>(k) * dt;
-      while (integ->getTime() < tOut) {
-        const SimTK::Integrator::SuccessfulStepStatus status = integ->stepTo(tOut);
-        if (status == SimTK::Integrator::EndOfSimulation) {
-          throw std::runtime_error(
-              "CycleSimulation: integrator stopped: " +
-              integ->getTerminationReasonString(integ->getTerminationReason()));
-        }
+      if (prescribed) {
+        // theta = omega t exactly: step to the row's time.
+        advanceTo(*integ, t0 + static_cast<double>(k) * dTheta / omega);
+      } else {
+        stepsBeforeRestarts += landOnCrankAngle(*integ, ct, thetaTarget);
       }
     }
     const SimTK::State& s = integ->getState();
     system.realize(s, SimTK::Stage::Acceleration);
-    if (observer)
-      observer(s);
+    if (observer) observer(s);
     std::vector<double> row;
     row.reserve(table.columns.size());
     calcCrankTrainRow(ct, s, row);
+    row[1] = thetaTarget * 180.0 / M_PI;  // the nominal angle the row was taken at
     model_.calcElementReports(s, row);
     for (double v : row) {
       if (!std::isfinite(v)) {
-        throw std::runtime_error(
-            "CycleSimulation: non-finite result at t = " + std::to_string(s.getTime()) + " s");
+        throw std::runtime_error("CycleSimulation: non-finite result at crank angle " +
+                                 std::to_string(row[1]) + " deg");
       }
     }
     table.rows.push_back(std::move(row));
-    if (progress)
-      progress(static_cast<double>(k) / static_cast<double>(nRows - 1));
+    if (progress) progress(static_cast<double>(k) / static_cast<double>(nRows - 1));
   }
-  stats_.integratorSteps = integ->getNumStepsTaken();
+  stats_.integratorSteps = stepsBeforeRestarts + integ->getNumStepsTaken();
   stats_.realizations = integ->getNumRealizations();
   stats_.wallTime_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();

@@ -10,8 +10,10 @@
 //   crank_torque_Nm (rod on crank, + along rotation), drive_torque_Nm (drive on crank,
 //   + along rotation).
 //
-// Constant-speed crank: rows at exact crank angles start + k * step. Free crank: rows
-// at equal time intervals step / nominal speed; crank_angle_deg is the actual angle.
+// Rows are taken at the crank angles start + k * step: with a constant-speed crank at
+// the matching times, with a free crank by iterating the time until the crank angle
+// is reached to 1e-12 rad. crank_angle_deg holds that nominal angle, unwrapped (it
+// keeps growing past 720 deg over several cycles).
 
 #include <functional>
 #include <string>
@@ -22,6 +24,10 @@
 namespace pistondyn::plugin {
 
 struct SimulationSettings {
+  static constexpr int kMaxCycles = 1000;
+  static constexpr double kMinOutputStep_deg = 1e-3;
+  static constexpr double kMaxRows = 1e7;  // rows are kept in memory
+
   double startAngle_deg = 0.0;  // crank angle of the first row [deg]
   int cycles = 1;               // number of 720 deg cycles, >= 1
   double outputStep_deg = 1.0;  // output interval [deg], > 0, must divide 720

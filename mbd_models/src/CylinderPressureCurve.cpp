@@ -123,6 +123,7 @@ CylinderPressureCurve::CylinderPressureCurve(std::vector<double> angle, std::vec
   angle_ = std::move(angle);
   p_ = std::move(p);
   m_ = periodicSplineSecondDerivatives(angle_, p_, kCycle_deg);
+  requirePositiveBetweenKnots();
   const auto it = std::max_element(p_.begin(), p_.end());
   peak_Pa_ = *it;
   peakAngle_deg_ = angle_[static_cast<std::size_t>(it - p_.begin())];
@@ -138,6 +139,41 @@ double CylinderPressureCurve::wrap(double a) const {
 int CylinderPressureCurve::findInterval(double w) const {
   const auto it = std::upper_bound(angle_.begin(), angle_.end(), w);
   return static_cast<int>(it - angle_.begin()) - 1;  // >= 0 because w >= angle_[0]
+}
+
+void CylinderPressureCurve::requirePositiveBetweenKnots() const {
+  // A cubic spline can undershoot between knots (e.g. around a sharp peak in a coarse
+  // table). Find each interval's minimum where the slope vanishes and reject <= 0.
+  const std::size_t n = angle_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = angle_[i];
+    const double b = (i + 1 < n) ? angle_[i + 1] : angle_[0] + kCycle_deg;
+    // Slope is quadratic in the angle: sample it finely enough to bracket its roots.
+    constexpr int kSamples = 16;
+    double prevX = a, prevSlope = calcPressureSlope_Paperdeg(a);
+    for (int k = 1; k <= kSamples; ++k) {
+      const double x = a + (b - a) * k / kSamples;
+      const double slope = calcPressureSlope_Paperdeg(x);
+      if (prevSlope < 0.0 && slope >= 0.0) {
+        double lo = prevX, hi = x;  // a local minimum lies in [lo, hi]
+        for (int it = 0; it < 60; ++it) {
+          const double mid = 0.5 * (lo + hi);
+          (calcPressureSlope_Paperdeg(mid) < 0.0 ? lo : hi) = mid;
+        }
+        const double pMin = calcPressure_Pa(0.5 * (lo + hi));
+        if (!(pMin > 0.0)) {
+          std::ostringstream msg;
+          msg << "the interpolated pressure falls to " << pMin << " Pa at "
+              << std::fmod(0.5 * (lo + hi), kCycle_deg) << " deg, between row " << i << " ("
+              << angle_[i] << " deg) and the next; the table is too coarse around a steep "
+              << "change - give more points there";
+          fail(msg.str());
+        }
+      }
+      prevX = x;
+      prevSlope = slope;
+    }
+  }
 }
 
 CylinderPressureCurve::Segment CylinderPressureCurve::locate(double crankAngle_deg) const {

@@ -251,17 +251,109 @@ TEST(ResultWriters, NumbersRoundTrip) {
   EXPECT_EQ(std::strtod(pistondyn::cli::formatNumber(y + 3e-13).c_str(), nullptr), y + 3e-13);
 }
 
-TEST(ResultWriters, AtomicWriteLeavesNothingOnFailure) {
+// All-or-nothing: if any file cannot be placed, the folder is left exactly as it was
+// (old results intact, no new or temporary files), whichever file fails.
+TEST(ResultWriters, AtomicWriteLeavesTheFolderAsItWasOnFailure) {
   const fs::path dir =
       fs::temp_directory_path() / ("pistondyn_atomic_" + std::to_string(::getpid()));
+  for (const char* blocked : {"cycle.csv", "summary.json"}) {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ofstream(dir / "cycle.csv") << "old cycle";
+    std::ofstream(dir / "summary.json") << "old summary";
+    fs::remove(dir / blocked);
+    fs::create_directories(dir / blocked);  // a folder where a result file must go
+    EXPECT_THROW(pistondyn::cli::writeFilesAtomically(
+                     dir.string(), {{"cycle.csv", "new cycle"}, {"summary.json", "new summary"}}),
+                 std::runtime_error);
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename());
+    EXPECT_EQ(names.size(), 2u) << blocked;
+    EXPECT_TRUE(fs::is_directory(dir / blocked));
+    const std::string other = std::string(blocked) == "cycle.csv" ? "summary.json" : "cycle.csv";
+    EXPECT_EQ(readFile(dir / other),
+              other == "cycle.csv" ? "old cycle" : "old summary") << blocked;
+  }
+  // And the success path replaces old results.
   fs::remove_all(dir);
-  fs::create_directories(dir / "cycle.csv");  // a folder where a file must go: rename fails
-  EXPECT_THROW(pistondyn::cli::writeFilesAtomically(dir.string(),
-                                                    {{"summary.json", "{}"}, {"cycle.csv", "x"}}),
-               std::runtime_error);
-  EXPECT_FALSE(fs::exists(dir / ".summary.json.partial"));
-  EXPECT_FALSE(fs::exists(dir / ".cycle.csv.partial"));
+  fs::create_directories(dir);
+  std::ofstream(dir / "cycle.csv") << "old cycle";
+  pistondyn::cli::writeFilesAtomically(dir.string(), {{"cycle.csv", "new"}, {"summary.json", "s"}});
+  EXPECT_EQ(readFile(dir / "cycle.csv"), "new");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 2);
   fs::remove_all(dir);
+}
+
+TEST_F(ScratchDeck, PressureTableWithBomAndUnderflowIsReadNanIsNot) {
+  writeTable("\xEF\xBB\xBF" + readFile(kEngineDir + "/" + kTable));
+  EXPECT_EQ(rejection(), "");
+  writeTable("crank_angle_deg,pressure_bar\n0,1\n180,1e-400\n360,1\n540,1\n");
+  EXPECT_NE(rejection().find(":3: pressure 1e-400 must be positive"), std::string::npos)
+      << rejection();
+  writeTable("crank_angle_deg,pressure_bar\nnan,1\n180,1\n360,1\n540,1\n");
+  EXPECT_NE(rejection().find(":2: crank angle 'nan' is not a number"), std::string::npos)
+      << rejection();
+}
+
+// A coarse table around a sharp peak makes the cubic spline undershoot below zero
+// absolute pressure between knots: rejected, naming the interval.
+TEST_F(ScratchDeck, PressureTableWhoseSplineUndershootsIsRejected) {
+  std::string t = "crank_angle_deg,pressure_bar\n";
+  for (int a = 0; a < 720; a += 30) t += std::to_string(a) + "," + (a == 360 ? "60" : "1") + "\n";
+  writeTable(t);
+  const std::string m = rejection();
+  EXPECT_NE(m.find("the interpolated pressure falls to"), std::string::npos) << m;
+  EXPECT_NE(m.find("too coarse"), std::string::npos) << m;
+}
+
+// Inputs that used to crash, hang or be silently misread.
+TEST_F(ScratchDeck, HostileInputsAreRejectedCleanly) {
+  // a complex (list) key
+  editDeck("engine:\n", "[a, b]: 1\nengine:\n");
+  EXPECT_NE(rejection().find("keys must be plain names"), std::string::npos) << rejection();
+  SetUp();
+  // a duplicate section
+  std::ofstream(deck(), std::ios::app) << "geometry:\n  bore_mm: 80\n";
+  EXPECT_NE(rejection().find("duplicate key"), std::string::npos) << rejection();
+  SetUp();
+  EXPECT_NE(rejection({"geometry.bore_mm.=1"}).find("empty key in the path"), std::string::npos);
+  EXPECT_NE(rejection({".=1"}).find("empty key in the path"), std::string::npos);
+  EXPECT_NE(rejection({"simulation.cycles=4294967297"}).find("simulation.cycles: must be a whole"),
+            std::string::npos);
+  EXPECT_NE(rejection({"simulation.cycles=1e300"}).find("simulation.cycles: must be a whole"),
+            std::string::npos);
+  EXPECT_NE(rejection({"drive.speed_rpm=1e-10"}).find("drive.speed_rpm: must be between"),
+            std::string::npos);
+  EXPECT_NE(rejection({"simulation.output_step_deg=1e-7"}).find("simulation.output_step_deg"),
+            std::string::npos);
+  EXPECT_NE(rejection({"simulation.output_step_deg=0.7"}).find("must divide 720"),
+            std::string::npos);
+  EXPECT_NE(rejection({"simulation.start_angle_deg=1e12"}).find("simulation.start_angle_deg"),
+            std::string::npos);
+  // a section replaced by a value on the command line is named as the --set
+  EXPECT_NE(rejection({"geometry=5"}).find("--set geometry: geometry.bore_mm"), std::string::npos)
+      << rejection({"geometry=5"});
+  // a key created by --set has no line number
+  const std::string m = rejection({"foo.bar=1"});
+  EXPECT_NE(m.find("--set foo.bar: unknown key"), std::string::npos) << m;
+  EXPECT_EQ(m.find(":0:"), std::string::npos) << m;
+}
+
+TEST_F(ScratchDeck, DeckPathThatIsAFolderIsRejected) {
+  try {
+    pistondyn::cli::loadEngineDeck(dir_.string(), {});
+    ADD_FAILURE() << "accepted a folder as deck";
+  } catch (const pistondyn::cli::DeckError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(ScratchDeck, ProgramRefusesAnOutputPathThatIsAFileBeforeSimulating) {
+  const fs::path out = dir_ / "a_file";
+  std::ofstream(out) << "keep me";
+  EXPECT_EQ(runProgram("", out), 2);
+  EXPECT_NE(programStderr().find("is not a folder"), std::string::npos) << programStderr();
+  EXPECT_EQ(readFile(out), "keep me");
 }
 
 }  // namespace

@@ -69,11 +69,16 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
       d.getChoiceOr("drive.mode", {"constant_speed", "free"}, "constant_speed");
   e.drive.mode =
       mode == "free" ? mbd::CrankDrive::Mode::Free : mbd::CrankDrive::Mode::ConstantSpeed;
-  e.drive.speed_radps = d.getNumber("drive.speed_rpm", Sign::Positive) * M_PI / 30.0;
+  // 1 .. 50,000 rpm: outside this range the deck is almost surely in the wrong unit,
+  // and near zero speed one cycle would take forever to simulate.
+  e.drive.speed_radps =
+      d.getNumberInRange("drive.speed_rpm", true, 1.0, 50000.0, "rpm").value_or(1000.0) * M_PI /
+      30.0;
   e.drive.flywheelInertia_kgm2 =
       d.getNumberOr("drive.flywheel_inertia_kg_m2", 0.0, Sign::NonNegative);
   e.drive.loadTorque_Nm = d.getNumberOr("drive.load_torque_Nm", 0.0);
-  e.gravity_mps2 = d.getNumberOr("simulation.gravity_mps2", 9.80665, Sign::NonNegative);
+  e.gravity_mps2 =
+      d.getNumberInRange("simulation.gravity_mps2", false, 0.0, 100.0, "m/s^2").value_or(9.80665);
 
   const std::string table = d.getString("gas.cylinder_pressure_file");
   deck.cylinderPressureFile =
@@ -85,21 +90,29 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
 
   deck.linerModel = d.getChoiceOr("liner.model", {"ideal_guide"}, "ideal_guide");
 
-  plugin::SimulationSettings& s = deck.simulation;
-  s.startAngle_deg = d.getNumberOr("simulation.start_angle_deg", 0.0);
-  s.cycles = static_cast<int>(d.getIntegerOr("simulation.cycles", 1, 1));
-  s.outputStep_deg = d.getNumberOr("simulation.output_step_deg", 1.0, Sign::Positive);
+  using Settings = plugin::SimulationSettings;
+  Settings& s = deck.simulation;
+  s.startAngle_deg =
+      d.getNumberInRange("simulation.start_angle_deg", false, -720.0, 720.0, "deg").value_or(0.0);
+  s.cycles = static_cast<int>(d.getIntegerOr("simulation.cycles", 1, 1, Settings::kMaxCycles));
+  s.outputStep_deg = d.getNumberInRange("simulation.output_step_deg", false,
+                                        Settings::kMinOutputStep_deg, 720.0, "deg")
+                         .value_or(1.0);
+  const double stepsPerCycle = 720.0 / s.outputStep_deg;
+  if (std::abs(stepsPerCycle - std::round(stepsPerCycle)) > 1e-9 * stepsPerCycle) {
+    d.addProblem("simulation.output_step_deg", "must divide 720 deg into a whole number of steps");
+  } else if (stepsPerCycle * s.cycles > Settings::kMaxRows) {
+    d.addProblem("simulation.output_step_deg",
+                 "with simulation.cycles this makes more than " +
+                     std::to_string(static_cast<long>(Settings::kMaxRows)) +
+                     " output rows (they are kept in memory); use a coarser step");
+  }
   const std::string integ = d.getChoiceOr("simulation.integrator",
                                           {"rk_merson", "rk_feldberg", "cpodes_bdf"}, "rk_merson");
-  s.integrator = integ == "rk_feldberg" ? plugin::SimulationSettings::Integrator::RungeKuttaFeldberg
-                 : integ == "cpodes_bdf" ? plugin::SimulationSettings::Integrator::CPodesBDF
-                                         : plugin::SimulationSettings::Integrator::RungeKuttaMerson;
-  s.accuracy = d.getNumberOr("simulation.accuracy", 1e-9, Sign::Positive);
-  try {
-    plugin::validate(s);
-  } catch (const std::invalid_argument& ex) {
-    d.addProblem("simulation", ex.what());
-  }
+  s.integrator = integ == "rk_feldberg"  ? Settings::Integrator::RungeKuttaFeldberg
+                 : integ == "cpodes_bdf" ? Settings::Integrator::CPodesBDF
+                                         : Settings::Integrator::RungeKuttaMerson;
+  s.accuracy = d.getNumberInRange("simulation.accuracy", false, 1e-14, 1e-2, "").value_or(1e-9);
 
   // Cross-key checks, only on values that are individually valid (a failed read
   // leaves a placeholder that would only produce a second, confusing message).
@@ -122,9 +135,11 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
   // Every key is read; report unknown keys and all problems together.
   d.finish();
 
-  // Cross-checks that need a consistent description.
+  // Safety net: the library's own checks (every deck-level problem above should have
+  // caught these first, with a key and a line).
   try {
     mbd::validate(e);
+    plugin::validate(s);
   } catch (const std::invalid_argument& ex) {
     throw DeckError(deckPath + ": " + ex.what());
   }
@@ -132,6 +147,10 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
       readPressureTableCsv(deck.cylinderPressureFile));
   if (deck.statedImep_Pa) {
     const double imep = calcDeckImep_Pa(deck);
+    if (!std::isfinite(imep)) {
+      throw DeckError(deckPath + ": gas.stated_imep_kPa: the imep of the pressure table cannot be "
+                                 "computed with this geometry (check the geometry keys' units)");
+    }
     const double rel = std::abs(imep - *deck.statedImep_Pa) / std::abs(*deck.statedImep_Pa);
     if (!(rel <= 0.005)) {
       throw DeckError(deckPath + ": gas.stated_imep_kPa: the pressure table " +

@@ -1,6 +1,7 @@
 #include "pistondyn/cli/PressureTableCsv.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -31,13 +32,15 @@ std::vector<std::string> splitCsv(const std::string& line) {
   return out;
 }
 
+// A finite number filling the whole field. Underflow (e.g. 1e-400) reads as 0 or a
+// subnormal and is accepted as that value; overflow, "nan" and "inf" are rejected.
 bool parseDouble(const std::string& text, double& value) {
-  if (text.empty())
-    return false;
+  if (text.empty()) return false;
   char* end = nullptr;
   errno = 0;
   value = std::strtod(text.c_str(), &end);
-  return errno == 0 && end == text.c_str() + text.size();
+  if (end != text.c_str() + text.size() || !std::isfinite(value)) return false;
+  return errno != ERANGE || std::abs(value) < 1.0;  // ERANGE with |value| < 1 = underflow
 }
 
 }  // namespace
@@ -57,6 +60,7 @@ mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath) {
   int lineNo = 0;
   while (std::getline(in, line)) {
     ++lineNo;
+    if (lineNo == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 BOM
     const std::string t = trim(line);
     if (t.empty() || t[0] == '#')
       continue;

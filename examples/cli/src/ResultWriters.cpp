@@ -140,31 +140,57 @@ void writeFilesAtomically(const std::string& dir,
   namespace fs = std::filesystem;
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec)
-    throw std::runtime_error(dir + ": cannot create the output folder: " + ec.message());
-  std::vector<fs::path> temps;
-  auto cleanup = [&] {
-    for (const auto& t : temps)
-      fs::remove(t, ec);
+  if (ec) throw std::runtime_error(dir + ": cannot create the output folder: " + ec.message());
+  const fs::path folder(dir);
+  auto target = [&](std::size_t i) { return folder / files[i].first; };
+  auto temporary = [&](std::size_t i) { return folder / ("." + files[i].first + ".partial"); };
+  auto backup = [&](std::size_t i) { return folder / ("." + files[i].first + ".previous"); };
+  auto removeQuietly = [](const fs::path& p) {
+    std::error_code ignored;
+    fs::remove(p, ignored);
   };
-  for (const auto& [name, content] : files) {
-    const fs::path tmp = fs::path(dir) / ("." + name + ".partial");
-    temps.push_back(tmp);
-    std::ofstream out(tmp, std::ios::binary);
-    out << content;
+
+  // 1. Every file complete under a temporary name.
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    std::ofstream out(temporary(i), std::ios::binary);
+    out << files[i].second;
     out.close();
     if (!out) {
-      cleanup();
-      throw std::runtime_error((fs::path(dir) / name).string() + ": write failed");
+      for (std::size_t k = 0; k <= i; ++k) removeQuietly(temporary(k));
+      throw std::runtime_error(target(i).string() + ": write failed");
+    }
+  }
+  // 2. Existing results moved aside, 3. new ones moved in; any failure restores the
+  // folder as it was (old results back, no new or temporary files).
+  std::vector<bool> backedUp(files.size(), false), placed(files.size(), false);
+  auto rollBack = [&](const std::string& why) {
+    for (std::size_t k = 0; k < files.size(); ++k) {
+      if (placed[k]) removeQuietly(target(k));
+      if (backedUp[k]) {
+        std::error_code ignored;
+        fs::rename(backup(k), target(k), ignored);
+      }
+      removeQuietly(temporary(k));
+    }
+    throw std::runtime_error(why);
+  };
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (fs::exists(target(i), ec)) {
+      if (fs::is_directory(target(i), ec)) {
+        rollBack(target(i).string() + ": is a folder, cannot write the result there");
+      }
+      fs::rename(target(i), backup(i), ec);
+      if (ec) rollBack(target(i).string() + ": cannot replace the old result: " + ec.message());
+      backedUp[i] = true;
     }
   }
   for (std::size_t i = 0; i < files.size(); ++i) {
-    fs::rename(temps[i], fs::path(dir) / files[i].first, ec);
-    if (ec) {
-      cleanup();
-      throw std::runtime_error((fs::path(dir) / files[i].first).string() +
-                               ": cannot move the result into place: " + ec.message());
-    }
+    fs::rename(temporary(i), target(i), ec);
+    if (ec) rollBack(target(i).string() + ": cannot move the result into place: " + ec.message());
+    placed[i] = true;
+  }
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (backedUp[i]) removeQuietly(backup(i));
   }
 }
 

@@ -32,6 +32,15 @@ const char* pinJointName(mbd::PinJoint j) {
   }
 }
 
+const char* integratorName(plugin::SimulationSettings::Integrator i) {
+  switch (i) {
+    case plugin::SimulationSettings::Integrator::RungeKuttaFeldberg: return "rk_feldberg";
+    case plugin::SimulationSettings::Integrator::CPodesBDF: return "cpodes_bdf";
+    case plugin::SimulationSettings::Integrator::RungeKuttaMerson:
+    default: return "rk_merson";
+  }
+}
+
 void writeBody(JsonWriter& j, const std::string& key, const mbd::PlanarMassProperties& b) {
   j.beginObject(key)
       .value("mass_kg", b.mass_kg)
@@ -50,6 +59,9 @@ CycleSummary summarize(const EngineDeck& deck, const plugin::ResultTable& table,
   const mbd::CylinderVolume vol(kin, deck.engine.piston.bore_m,
                                 deck.engine.geometry.compressionRatio);
   s.imep_Pa = mbd::calcImep_Pa(*deck.cylinderPressure, vol);
+  // Peak of the table itself (not of the output rows, which may step over it).
+  s.peakCylinderPressure_Pa = deck.cylinderPressure->getPeakPressure_Pa();
+  s.peakCylinderPressureAngle_deg = deck.cylinderPressure->getPeakPressureAngle_deg();
   s.displacement_m3 = vol.displacement_m3();
   s.kinematicStroke_m = kin.stroke_m();
 
@@ -59,7 +71,6 @@ CycleSummary summarize(const EngineDeck& deck, const plugin::ResultTable& table,
       static_cast<std::size_t>(std::lround(720.0 / settings.outputStep_deg));
   const std::size_t end = table.rows.size() - 1, begin = end - perCycle;
   const std::size_t ia = table.columnIndex("crank_angle_deg");
-  const std::size_t ip = table.columnIndex("cylinder_pressure_Pa");
   const std::size_t is = table.columnIndex("side_force_N");
   const std::size_t ic = table.columnIndex("conrod_force_N");
   const std::size_t it = table.columnIndex("crank_torque_Nm");
@@ -73,10 +84,6 @@ CycleSummary summarize(const EngineDeck& deck, const plugin::ResultTable& table,
   for (std::size_t k = begin; k < end; ++k) {
     const auto& r = table.rows[k];
     const double angle = std::fmod(r[ia], 720.0);
-    if (r[ip] > s.peakCylinderPressure_Pa) {
-      s.peakCylinderPressure_Pa = r[ip];
-      s.peakCylinderPressureAngle_deg = angle;
-    }
     if (r[is] > s.sideForceMax_N) {
       s.sideForceMax_N = r[is];
       s.sideForceMaxAngle_deg = angle;
@@ -149,6 +156,7 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
   j.endObject();
   j.value("liner_model", deck.linerModel);
   j.beginObject("simulation")
+      .value("integrator", integratorName(st.integrator))
       .value("start_angle_rad", st.startAngle_deg * M_PI / 180.0)
       .value("cycles", static_cast<long>(st.cycles))
       .value("output_step_rad", st.outputStep_deg * M_PI / 180.0)

@@ -9,6 +9,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -117,12 +118,26 @@ int main(int argc, char** argv) {
     std::cerr << "pistondyn: " << error << "\n\n" << kUsage;
     return kExitUsage;
   }
+  if (args.command == "run") {
+    // Refuse an unusable output path now, not after the simulation.
+    std::error_code ec;
+    if (std::filesystem::exists(args.outDir, ec) &&
+        !std::filesystem::is_directory(args.outDir, ec)) {
+      std::cerr << "pistondyn: --out " << args.outDir << " is not a folder\n";
+      return kExitUsage;
+    }
+  }
   pistondyn::cli::EngineDeck deck;
   try {
     deck = pistondyn::cli::loadEngineDeck(args.deck, args.overrides);
   } catch (const pistondyn::cli::DeckError& e) {
     std::cerr << "pistondyn: the deck was rejected; nothing was simulated or written:\n"
               << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    // Anything the deck checks did not anticipate: still bad input, still no crash.
+    std::cerr << "pistondyn: " << args.deck << ": the deck could not be read; nothing was "
+              << "simulated or written: " << e.what() << "\n";
     return kExitBadInput;
   }
   if (args.command == "check") {

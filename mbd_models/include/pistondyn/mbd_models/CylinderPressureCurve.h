@@ -20,7 +20,9 @@ class CylinderPressureCurve {
   //                   0.5 % of the peak, and it is dropped as the periodic duplicate),
   //                   or the gap from the last angle to first + 720 is no larger than
   //                   the table's largest step. At least 4 distinct angles.
-  //   pressure_Pa     absolute pressure at each angle, > 0 and finite.
+  //   pressure_Pa     absolute pressure at each angle, > 0 and finite; the spline must
+  //                   stay > 0 between the knots too (a coarse table around a sharp
+  //                   peak can make it undershoot: rejected, naming the interval).
   // Throws std::invalid_argument naming the offending row index (0-based) otherwise.
   CylinderPressureCurve(std::vector<double> crankAngle_deg, std::vector<double> pressure_Pa);
 
@@ -42,6 +44,7 @@ class CylinderPressureCurve {
     double h, a, b;
   };
   Segment locate(double crankAngle_deg) const;
+  void requirePositiveBetweenKnots() const;  // throws if the spline undershoots to <= 0
   int findInterval(double wrappedAngle_deg) const;
   double wrap(double crankAngle_deg) const;
 

@@ -33,7 +33,11 @@ class YamlDeck {
   double getNumber(const std::string& path, Sign sign = Sign::Any);
   std::optional<double> getOptionalNumber(const std::string& path, Sign sign = Sign::Any);
   double getNumberOr(const std::string& path, double fallback, Sign sign = Sign::Any);
-  long getIntegerOr(const std::string& path, long fallback, long minimum);
+  long getIntegerOr(const std::string& path, long fallback, long minimum, long maximum);
+  // A number that must lie in [minimum, maximum] (the unit is named in the message);
+  // nullopt when absent or out of range (the latter recorded as a problem).
+  std::optional<double> getNumberInRange(const std::string& path, bool required, double minimum,
+                                         double maximum, const std::string& unit);
   std::string getString(const std::string& path);
   std::string getChoiceOr(const std::string& path, const std::vector<std::string>& choices,
                           const std::string& fallback);
@@ -47,7 +51,8 @@ class YamlDeck {
 
  private:
   YAML::Node lookup(const std::string& path) const;  // invalid node if absent
-  std::string where(const std::string& path) const;  // "<file>:<line>" or "--set"
+  std::string where(const std::string& path) const;  // "<file>:<line>: key" or "--set ..."
+  std::string overridingAssignment(const std::string& path) const;  // "" if from the file
   std::optional<double> readNumber(const std::string& path, Sign sign, bool required);
   void markKnown(const std::string& path);
   void collectUnknown(const YAML::Node& node, const std::string& prefix);

@@ -1,0 +1,71 @@
+#pragma once
+// Internal: thin RAII wrappers of CHOLMOD (symmetric positive definite) and KLU (unsymmetric)
+// that keep the symbolic analysis and all workspaces between factorisations, so that repeated
+// solves with an unchanged sparsity pattern do not allocate. Not installed.
+
+#include <vector>
+
+#include "FilmSystem.h"
+
+struct cholmod_common_struct;
+struct cholmod_factor_struct;
+struct cholmod_dense_struct;
+
+namespace pistondyn::lubrication::detail {
+
+// Compressed-column pattern of the 5-point stencil over all nodes (periodic wrap included).
+// Entry (row = neighbour d of node k, column = k) sits at pos{E,W,N,S}[k]; the diagonal at
+// posSelf[k]; -1 where the neighbour is missing.
+struct StencilPattern {
+  int n = 0;
+  std::vector<int> colPtr, rowIdx;
+  std::vector<int> posSelf, posE, posW, posN, posS;
+  std::vector<double> values;
+  void build(const FilmSystem& sys);
+};
+
+class CholmodLdl {
+ public:
+  CholmodLdl();
+  ~CholmodLdl();
+  CholmodLdl(const CholmodLdl&) = delete;
+  CholmodLdl& operator=(const CholmodLdl&) = delete;
+
+  // Symbolic analysis of the (upper triangle of the) pattern; call when the pattern changes.
+  void analyze(StencilPattern& pat);
+  // Numeric factorisation of pat.values; false if the matrix is not positive definite.
+  bool factorize(StencilPattern& pat);
+  // x = A^{-1} b for nrhs column-major right-hand sides of length n.
+  void solve(const double* b, double* x, int nrhs);
+
+ private:
+  void release();
+  cholmod_common_struct* c_ = nullptr;
+  cholmod_factor_struct* L_ = nullptr;
+  cholmod_dense_struct *X1_ = nullptr, *Y1_ = nullptr, *E1_ = nullptr;
+  cholmod_dense_struct *Xm_ = nullptr, *Ym_ = nullptr, *Em_ = nullptr;
+  int n_ = 0;
+};
+
+class KluLu {
+ public:
+  KluLu();
+  ~KluLu();
+  KluLu(const KluLu&) = delete;
+  KluLu& operator=(const KluLu&) = delete;
+
+  void analyze(StencilPattern& pat);
+  // Numeric factorisation. With fresh = false an existing factorisation is refactored with its
+  // pivot sequence (no allocation); a poor reciprocal pivot ratio triggers a fresh one.
+  bool factorize(StencilPattern& pat, bool fresh);
+  // In place: b <- A^{-1} b for nrhs column-major right-hand sides.
+  void solve(double* b, int nrhs);
+
+ private:
+  void release();
+  struct Handles;
+  Handles* h_ = nullptr;
+  int n_ = 0;
+};
+
+}  // namespace pistondyn::lubrication::detail

@@ -1,1 +1,0 @@
-// Placeholder so the skeleton builds; replaced by the module's first real source.

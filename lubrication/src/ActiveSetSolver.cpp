@@ -268,6 +268,11 @@ bool ActiveSetSolver::gmres(const FilmSystem& s, double* b, double target, int m
 }
 
 bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target) {
+  Eigen::Map<Eigen::VectorXd> bv(b, s.n);
+  if (bv.lpNorm<Eigen::Infinity>() <= target) {  // already converged: nothing to factorise
+    bv.setZero();
+    return true;
+  }
   const bool haveFactor = s.jfo ? kluFactored_ : cholFactored_;
   if (!haveFactor || refactorNext_) {
     refactorNext_ = false;

@@ -101,6 +101,10 @@ struct FilmProblem {
 
   // Mass-conserving model only: time step since the state thetaPrev, [s] (> 0; +inf = steady
   // state, the default) and the fill fraction at the start of the step (empty = 1, full film).
+  // A steady problem needs an oil supply (an edge above p_cav or a flooded inflow edge): on an
+  // x-periodic region whose open edges all sit at p_cav, any pure Couette circulation with
+  // theta * hT = const solves the steady equations, so the answer is not unique (the fast
+  // solver then reports non-convergence and falls back). Use a time step there.
   double timeStep_s = std::numeric_limits<double>::infinity();
   Eigen::ArrayXd previousFillFraction;
 

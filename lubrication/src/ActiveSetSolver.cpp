@@ -14,8 +14,8 @@ inline bool isEquationRow(const FilmSystem& s, int m) {
 
 constexpr int kGmresRestart = 30;
 constexpr int kMaxKrylovIterations = 40;  // beyond this: factorise the current Jacobian
-constexpr int kRefactorAfter = 8;         // Krylov iterations that trigger a refresh next time
 constexpr double kInnerSafety = 0.2;      // inner target = kInnerSafety * tolerance
+constexpr double kLooseFraction = 1e-2;   // inexact solves while the active set moves
 
 }  // namespace
 
@@ -121,10 +121,20 @@ bool ActiveSetSolver::factorCurrent(const FilmSystem& s) {
   ++factorisations_;
   factorExact_ = ok;
   factorColType_ = colType_;
+  costSinceFactor_ = s.jfo ? klu_.factorCostInIterations() : chol_.factorCostInIterations();
+  solvesSinceFactor_ = 1;  // the direct solve that follows
   return ok;
 }
 
-void ActiveSetSolver::multiply(const double* x, double* y) const {
+void ActiveSetSolver::multiply(const FilmSystem& s, const double* x, double* y) const {
+  if (!s.jfo) {
+    // Symmetric case: the Poiseuille stencil on the equation rows (x vanishes elsewhere).
+    for (int k = 0; k < s.n; ++k)
+      y[k] = eqRow_[k] ? s.diagP[k] * x[k] - (s.tE[k] * x[s.nbE[k]] + s.tW[k] * x[s.nbW[k]] +
+                                              s.tN[k] * x[s.nbN[k]] + s.tS[k] * x[s.nbS[k]])
+                       : 0.0;
+    return;
+  }
   std::fill(y, y + pat_.n, 0.0);
   const double* v = pat_.values.data();
   for (int c = 0; c < pat_.n; ++c) {
@@ -174,7 +184,7 @@ bool ActiveSetSolver::pcg(const FilmSystem& s, double* b, double target, int max
   p_ = z_;
   double rz = r_.dot(z_);
   for (int it = 1; it <= maxIt; ++it) {
-    multiply(p_.data(), q_.data());
+    multiply(s, p_.data(), q_.data());
     const double pq = p_.dot(q_);
     if (!(pq > 0.0))
       return false;
@@ -182,8 +192,6 @@ bool ActiveSetSolver::pcg(const FilmSystem& s, double* b, double target, int max
     x_.noalias() += alpha * p_;
     r_.noalias() -= alpha * q_;
     ++krylovIterations_;
-    if (it > kRefactorAfter)
-      refactorNext_ = true;
     if (r_.lpNorm<Eigen::Infinity>() <= target) {
       bv = x_;
       return true;
@@ -218,7 +226,7 @@ bool ActiveSetSolver::gmres(const FilmSystem& s, double* b, double target, int m
     while (j < m) {
       z_ = V_.col(j);
       applyPreconditioner(s, z_.data());
-      multiply(z_.data(), q_.data());
+      multiply(s, z_.data(), q_.data());
       for (int i = 0; i <= j; ++i) {  // modified Gram-Schmidt
         H_(i, j) = q_.dot(V_.col(i));
         q_.noalias() -= H_(i, j) * V_.col(i);
@@ -240,8 +248,6 @@ bool ActiveSetSolver::gmres(const FilmSystem& s, double* b, double target, int m
       ++j;
       ++its;
       ++krylovIterations_;
-      if (its > kRefactorAfter)
-        refactorNext_ = true;
       // The 2-norm bounds the max norm: stopping on it is conservative.
       if (std::abs(g_[j]) <= target || its >= maxIt || hNext == 0.0)
         break;
@@ -255,7 +261,7 @@ bool ActiveSetSolver::gmres(const FilmSystem& s, double* b, double target, int m
     z_.noalias() = V_.leftCols(j) * y_.head(j);
     applyPreconditioner(s, z_.data());
     x_ += z_;
-    multiply(x_.data(), q_.data());
+    multiply(s, x_.data(), q_.data());
     r_ = bv - q_;
     if (r_.lpNorm<Eigen::Infinity>() <= target) {
       bv = x_;
@@ -287,10 +293,20 @@ bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target)
     return true;
   }
   rhs_ = Eigen::Map<Eigen::VectorXd>(b, s.n);  // keep the right-hand side for a fallback
+  const int before = krylovIterations_;
   const bool ok =
       s.jfo ? gmres(s, b, target, kMaxKrylovIterations) : pcg(s, b, target, kMaxKrylovIterations);
-  if (ok)
+  if (ok) {
+    // Refresh when this solve cost more than the average per solve since the factorisation.
+    const int k = krylovIterations_ - before;
+    if (k > 0) {
+      costSinceFactor_ += k;
+      ++solvesSinceFactor_;
+      if (k > costSinceFactor_ / solvesSinceFactor_)
+        refactorNext_ = true;
+    }
     return true;
+  }
   // The lagged factorisation is too far from the current Jacobian: factorise it.
   refactorNext_ = false;
   if (!factorCurrent(s))
@@ -311,6 +327,10 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
   double* th = s.theta.data();
   const double tol = opt.tolerance;
   const double innerTarget = kInnerSafety * tol * s.residualScale;
+  // Inexact active-set iteration: while the sets are still moving, a linear solve only needs to
+  // be accurate enough to decide them (kLooseFraction of the current residual); the tight target
+  // is used once a step left the sets unchanged. Without cavitation there is no set to find.
+  bool setStable = s.model == CavitationModel::None;
   for (int it = 1; it <= opt.maxActiveSetIterations; ++it) {
     rep.iterations = it;
     // Put the iterate on the current sets, then one Newton step: J dz = -R.
@@ -322,9 +342,13 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
     }
     fillJacobian(s);
     Eigen::VectorXd& step = step_;
-    for (int k = 0; k < s.n; ++k)
+    double rNorm = 0.0;
+    for (int k = 0; k < s.n; ++k) {
       step[k] = eqRow_[k] ? -s.residualAt(k) : 0.0;
-    if (!linearSolve(s, step.data(), innerTarget)) {
+      rNorm = std::max(rNorm, std::abs(step[k]));
+    }
+    const double target = setStable ? innerTarget : std::max(innerTarget, kLooseFraction * rNorm);
+    if (!linearSolve(s, step.data(), target)) {
       rep.residual = s.relativeResidual();
       return rep;
     }
@@ -337,21 +361,24 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
         th[k] += step[k];
       }
     }
-    // Update the sets (primal-dual active-set rule). Round-off sized violations do not flip a
-    // node; they are projected away below.
+    // Update the sets (primal-dual active-set rule). Violations below round-off, or below the
+    // accuracy of an inexact solve, do not flip a node; they are projected away below.
     const double pEps = 1e-12 * pScale;
-    const double rEps = 0.5 * tol * s.residualScale;
+    const double rEps = std::max(0.5 * tol * s.residualScale, target);
     bool changed = false;
     for (int k = 0; k < s.n; ++k) {
       if (s.status[k] == kFull) {
-        if (s.model != CavitationModel::None && p[k] < s.pCav - pEps) {
+        const double pTol = std::max(pEps, target > innerTarget ? target / s.diagP[k] : 0.0);
+        if (s.model != CavitationModel::None && p[k] < s.pCav - pTol) {
           s.status[k] = kCav;
           p[k] = s.pCav;
           changed = true;
         }
       } else if (s.status[k] == kCav) {
+        const double a = s.aOut[k] + s.squeeze[k] + s.capacity[k];
+        const double thTol = std::max(1e-10, target > innerTarget && a > 0.0 ? target / a : 0.0);
         const bool toFull =
-            s.jfo ? (th[k] > 1.0 + 1e-10 || th[k] < -1e-10) : (s.residualAt(k) < -rEps);
+            s.jfo ? (th[k] > 1.0 + thTol || th[k] < -thTol) : (s.residualAt(k) < -rEps);
         if (toFull) {
           s.status[k] = kFull;
           th[k] = 1.0;
@@ -361,8 +388,10 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
     }
     if (changed) {
       jacobianCurrent_ = false;
+      setStable = false;
       continue;
     }
+    setStable = true;
     for (int k = 0; k < s.n; ++k) {
       if (s.status[k] == kFull && s.model != CavitationModel::None)
         p[k] = std::max(p[k], s.pCav);

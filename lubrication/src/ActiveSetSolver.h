@@ -16,7 +16,10 @@
 // analysis is kept while the grid's shape is unchanged. The numeric factorisation is *lagged*:
 // a factorisation of an earlier Jacobian (previous step, previous active set) serves as the
 // preconditioner of a Krylov solve (PCG for the symmetric, GMRES for the unsymmetric case) on
-// the current one; it is refreshed when the Krylov solver needs more than a few iterations.
+// the current one. It is refreshed when the last Krylov solve cost more than the average cost
+// per solve since the last factorisation (factorisation included, in iteration units from the
+// factorisation's flop count): the rule that minimises the long-run average cost when the
+// preconditioner's quality decays steadily.
 // Consecutive calls of an engine simulation differ little, so most calls cost a handful of
 // back-substitutions instead of a factorisation.
 
@@ -51,7 +54,7 @@ class ActiveSetSolver {
   // rhs -> solution in place, residual max norm <= absTarget (equation rows). False on failure.
   bool linearSolve(const FilmSystem& sys, double* rhs, double absTarget);
   void applyPreconditioner(const FilmSystem& sys, double* v);  // v <- M^-1 v, zero off-set
-  void multiply(const double* x, double* y) const;             // y = J x (current values)
+  void multiply(const FilmSystem& sys, const double* x, double* y) const;  // y = J x
   bool pcg(const FilmSystem& sys, double* b, double absTarget, int maxIt);
   bool gmres(const FilmSystem& sys, double* b, double absTarget, int maxIt);
 
@@ -64,7 +67,10 @@ class ActiveSetSolver {
   bool cholFactored_ = false, kluFactored_ = false;
   bool factorExact_ = false;      // the stored factorisation is of the current Jacobian values
   bool jacobianCurrent_ = false;  // pat_.values hold the Jacobian of the current active set
-  bool refactorNext_ = false;     // the last Krylov solve was slow: refresh before the next
+  bool refactorNext_ = false;     // refresh the factorisation before the next solve
+  // Cost bookkeeping since the last factorisation, in Krylov iterations (see linearSolve).
+  double costSinceFactor_ = 0.0;
+  int solvesSinceFactor_ = 0;
   int factorisations_ = 0, krylovIterations_ = 0;
 
   Eigen::VectorXd rhs_, step_, x_, r_, z_, p_, q_;

@@ -37,6 +37,9 @@ class CholmodLdl {
   bool factorize(StencilPattern& pat);
   // x = A^{-1} b for nrhs column-major right-hand sides of length n.
   void solve(const double* b, double* x, int nrhs);
+  // Cost of one numeric factorisation in units of one preconditioned Krylov iteration (a solve
+  // with the factor plus a stencil product), from the flop and nonzero counts of the analysis.
+  double factorCostInIterations() const { return costRatio_; }
 
  private:
   void release();
@@ -45,6 +48,7 @@ class CholmodLdl {
   cholmod_dense_struct *X1_ = nullptr, *Y1_ = nullptr, *E1_ = nullptr;
   cholmod_dense_struct *Xm_ = nullptr, *Ym_ = nullptr, *Em_ = nullptr;
   int n_ = 0;
+  double costRatio_ = 20.0;
 };
 
 class KluLu {
@@ -60,12 +64,15 @@ class KluLu {
   bool factorize(StencilPattern& pat, bool fresh);
   // In place: b <- A^{-1} b for nrhs column-major right-hand sides.
   void solve(double* b, int nrhs);
+  // As CholmodLdl::factorCostInIterations, for a GMRES iteration.
+  double factorCostInIterations() const { return costRatio_; }
 
  private:
   void release();
   struct Handles;
   Handles* h_ = nullptr;
   int n_ = 0;
+  double costRatio_ = 20.0;
 };
 
 }  // namespace pistondyn::lubrication::detail

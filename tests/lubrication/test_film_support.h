@@ -157,8 +157,8 @@ class GaussianRoughFactors final : public FlowFactorModel {
                                  : 1.126 * std::exp(-0.25 * H);
     f.sigmaPhiS_m = shearScale_ * sigma_ * phiS;
     const double z = H / std::sqrt(2.0);
-    f.expectedGap_m =
-        0.5 * h * (1.0 + std::erf(z)) + sigma_ / std::sqrt(2.0 * kPi) * std::exp(-0.5 * H * H);
+    f.expectedGap_m = 0.5 * h * (1.0 + std::erf(z)) +
+                      (H < 40.0 ? sigma_ / std::sqrt(2.0 * kPi) * std::exp(-0.5 * H * H) : 0.0);
     f.dExpectedGap_dh = 0.5 * (1.0 + std::erf(z));
     f.phiFp = 1.0 - 1.40 * std::exp(-0.66 * H);
     return f;

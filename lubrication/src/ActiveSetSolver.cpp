@@ -14,8 +14,8 @@ inline bool isEquationRow(const FilmSystem& s, int m) {
 
 constexpr int kGmresRestart = 30;
 constexpr int kMaxKrylovIterations = 40;  // beyond this: factorise the current Jacobian
-constexpr double kInnerSafety = 0.2;      // inner target = kInnerSafety * tolerance
-constexpr double kLooseFraction = 1e-2;   // inexact solves while the active set moves
+constexpr double kInnerSafety = 0.5;      // inner target = kInnerSafety * tolerance
+constexpr double kLooseFraction = 3e-2;   // inexact solves while the active set moves
 
 }  // namespace
 
@@ -41,6 +41,9 @@ void ActiveSetSolver::prepare(const FilmSystem& sys) {
   colType_.assign(n, 0);
   factorColType_.assign(n, 0);
   changedRhs_.setZero(n);
+  cavResidual_.setZero(n);
+  factorDiag_.setOnes(n);
+  precondScale_.setOnes(n);
 }
 
 void ActiveSetSolver::fillJacobian(const FilmSystem& s) {
@@ -99,6 +102,19 @@ void ActiveSetSolver::fillJacobian(const FilmSystem& s) {
   }
   factorExact_ = false;
   jacobianCurrent_ = true;
+  updatePreconditionerScaling();
+}
+
+// The Jacobian drifts between calls mostly by a smooth rescaling of the film conductance
+// (h^3 changes with the gap): J_new ~ S J_old S with S = diag(sqrt(diag J_new / diag J_old)).
+// Scaling the lagged factorisation the same way, M^-1 -> S^-1 M^-1 S^-1, absorbs that part of
+// the drift at the cost of two diagonal scalings per application.
+void ActiveSetSolver::updatePreconditionerScaling() {
+  const double* v = pat_.values.data();
+  for (int k = 0; k < pat_.n; ++k) {
+    const double now = v[pat_.posSelf[k]], then = factorDiag_[k];
+    precondScale_[k] = (then > 0.0 && now > 0.0) ? std::sqrt(then / now) : 1.0;
+  }
 }
 
 bool ActiveSetSolver::factorCurrent(const FilmSystem& s) {
@@ -121,6 +137,9 @@ bool ActiveSetSolver::factorCurrent(const FilmSystem& s) {
   ++factorisations_;
   factorExact_ = ok;
   factorColType_ = colType_;
+  for (int k = 0; k < pat_.n; ++k)
+    factorDiag_[k] = pat_.values[pat_.posSelf[k]];
+  precondScale_.setOnes();
   costSinceFactor_ = s.jfo ? klu_.factorCostInIterations() : chol_.factorCostInIterations();
   solvesSinceFactor_ = 1;  // the direct solve that follows
   return ok;
@@ -156,6 +175,8 @@ void ActiveSetSolver::applyPreconditioner(const FilmSystem& s, double* v) {
     if (eqRow_[k] && colType_[k] != factorColType_[k]) {
       changedRhs_[k] = v[k];
       v[k] = 0.0;
+    } else {
+      v[k] *= precondScale_[k];
     }
   }
   if (!s.jfo)
@@ -167,10 +188,32 @@ void ActiveSetSolver::applyPreconditioner(const FilmSystem& s, double* v) {
       v[k] = 0.0;
     else if (colType_[k] != factorColType_[k])
       v[k] = changedRhs_[k] / diag[pat_.posSelf[k]];
+    else
+      v[k] *= precondScale_[k];
   }
 }
 
-bool ActiveSetSolver::pcg(const FilmSystem& s, double* b, double target, int maxIt) {
+bool ActiveSetSolver::wouldChangeSet(const FilmSystem& s, const Eigen::VectorXd& dz,
+                                     double accuracy) const {
+  if (s.model == CavitationModel::None)
+    return false;
+  const double rEps = std::max(0.5 * s.residualScale * tolerance_, accuracy);
+  for (int k = 0; k < s.n; ++k) {
+    if (s.status[k] == kFull) {
+      if (s.p[k] + dz[k] < s.pCav - accuracy / s.diagP[k])
+        return true;
+    } else if (s.status[k] == kCav) {
+      const double r = cavResidual_[k] - (s.tE[k] * dz[s.nbE[k]] + s.tW[k] * dz[s.nbW[k]] +
+                                          s.tN[k] * dz[s.nbN[k]] + s.tS[k] * dz[s.nbS[k]]);
+      if (r < -rEps)
+        return true;
+    }
+  }
+  return false;
+}
+
+bool ActiveSetSolver::pcg(const FilmSystem& s, double* b, double target, double looseTarget,
+                          int maxIt) {
   const int n = s.n;
   Eigen::Map<Eigen::VectorXd> bv(b, n);
   x_.setZero();
@@ -179,6 +222,9 @@ bool ActiveSetSolver::pcg(const FilmSystem& s, double* b, double target, int max
     bv.setZero();
     return true;
   }
+  // While the active set may still move, stop at the loose target if the step would change it;
+  // otherwise carry on in the same Krylov space to the tight target.
+  bool checkLoose = looseTarget > target;
   z_ = r_;
   applyPreconditioner(s, z_.data());
   p_ = z_;
@@ -192,9 +238,18 @@ bool ActiveSetSolver::pcg(const FilmSystem& s, double* b, double target, int max
     x_.noalias() += alpha * p_;
     r_.noalias() -= alpha * q_;
     ++krylovIterations_;
-    if (r_.lpNorm<Eigen::Infinity>() <= target) {
+    const double rMax = r_.lpNorm<Eigen::Infinity>();
+    if (rMax <= target) {
       bv = x_;
       return true;
+    }
+    if (checkLoose && rMax <= looseTarget) {
+      checkLoose = false;
+      if (wouldChangeSet(s, x_, looseTarget)) {
+        bv = x_;
+        stoppedLoose_ = true;
+        return true;
+      }
     }
     z_ = r_;
     applyPreconditioner(s, z_.data());
@@ -273,7 +328,9 @@ bool ActiveSetSolver::gmres(const FilmSystem& s, double* b, double target, int m
   }
 }
 
-bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target) {
+bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target,
+                                  double looseTarget) {
+  stoppedLoose_ = false;
   Eigen::Map<Eigen::VectorXd> bv(b, s.n);
   if (bv.lpNorm<Eigen::Infinity>() <= target) {  // already converged: nothing to factorise
     bv.setZero();
@@ -294,8 +351,15 @@ bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target)
   }
   rhs_ = Eigen::Map<Eigen::VectorXd>(b, s.n);  // keep the right-hand side for a fallback
   const int before = krylovIterations_;
-  const bool ok =
-      s.jfo ? gmres(s, b, target, kMaxKrylovIterations) : pcg(s, b, target, kMaxKrylovIterations);
+  bool ok;
+  if (s.jfo) {
+    // GMRES forms its iterate only at the end of a cycle: solve to the loose target and let the
+    // active-set loop decide (a second, tight solve follows when the set did not move).
+    ok = gmres(s, b, looseTarget, kMaxKrylovIterations);
+    stoppedLoose_ = looseTarget > target;
+  } else {
+    ok = pcg(s, b, target, looseTarget, kMaxKrylovIterations);
+  }
   if (ok) {
     // Refresh when this solve cost more than the average per solve since the factorisation.
     const int k = krylovIterations_ - before;
@@ -309,6 +373,7 @@ bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target)
   }
   // The lagged factorisation is too far from the current Jacobian: factorise it.
   refactorNext_ = false;
+  stoppedLoose_ = false;
   if (!factorCurrent(s))
     return false;
   Eigen::Map<Eigen::VectorXd>(b, s.n) = rhs_;
@@ -326,6 +391,7 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
   double* p = s.p.data();
   double* th = s.theta.data();
   const double tol = opt.tolerance;
+  tolerance_ = tol;
   const double innerTarget = kInnerSafety * tol * s.residualScale;
   // Inexact active-set iteration: while the sets are still moving, a linear solve only needs to
   // be accurate enough to decide them (kLooseFraction of the current residual); the tight target
@@ -347,11 +413,15 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
       step[k] = eqRow_[k] ? -s.residualAt(k) : 0.0;
       rNorm = std::max(rNorm, std::abs(step[k]));
     }
-    const double target = setStable ? innerTarget : std::max(innerTarget, kLooseFraction * rNorm);
-    if (!linearSolve(s, step.data(), target)) {
+    const double loose = setStable ? innerTarget : std::max(innerTarget, kLooseFraction * rNorm);
+    if (!s.jfo)
+      for (int k = 0; k < s.n; ++k)
+        cavResidual_[k] = s.status[k] == kCav ? s.residualAt(k) : 0.0;
+    if (!linearSolve(s, step.data(), innerTarget, loose)) {
       rep.residual = s.relativeResidual();
       return rep;
     }
+    const double target = stoppedLoose_ ? loose : innerTarget;  // accuracy of this step
     double pScale = 0.0;
     for (int k = 0; k < s.n; ++k) {
       if (s.status[k] == kFull) {
@@ -425,7 +495,7 @@ void ActiveSetSolver::solveWithCurrentSet(FilmSystem& s, Eigen::MatrixXd& rhs, d
   }
   for (Eigen::Index c = 0; c < rhs.cols(); ++c) {
     const double target = relTol * rhs.col(c).lpNorm<Eigen::Infinity>();
-    if (!linearSolve(s, rhs.col(c).data(), target)) {
+    if (!linearSolve(s, rhs.col(c).data(), target, target)) {
       rhs.setZero();
       return;
     }

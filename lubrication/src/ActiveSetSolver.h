@@ -50,12 +50,16 @@ class ActiveSetSolver {
 
  private:
   void fillJacobian(const FilmSystem& sys);
+  void updatePreconditionerScaling();
   bool factorCurrent(const FilmSystem& sys);
   // rhs -> solution in place, residual max norm <= absTarget (equation rows). False on failure.
-  bool linearSolve(const FilmSystem& sys, double* rhs, double absTarget);
+  // With looseTarget > absTarget the solve may stop at looseTarget (stoppedLoose_) when the step
+  // would change the active set (PCG), or always does (GMRES).
+  bool linearSolve(const FilmSystem& sys, double* rhs, double absTarget, double looseTarget);
+  bool wouldChangeSet(const FilmSystem& sys, const Eigen::VectorXd& dz, double accuracy) const;
   void applyPreconditioner(const FilmSystem& sys, double* v);  // v <- M^-1 v, zero off-set
   void multiply(const FilmSystem& sys, const double* x, double* y) const;  // y = J x
-  bool pcg(const FilmSystem& sys, double* b, double absTarget, int maxIt);
+  bool pcg(const FilmSystem& sys, double* b, double absTarget, double looseTarget, int maxIt);
   bool gmres(const FilmSystem& sys, double* b, double absTarget, int maxIt);
 
   StencilPattern pat_;
@@ -72,6 +76,12 @@ class ActiveSetSolver {
   double costSinceFactor_ = 0.0;
   int solvesSinceFactor_ = 0;
   int factorisations_ = 0, krylovIterations_ = 0;
+  bool stoppedLoose_ = false;
+  double tolerance_ = 1e-8;
+  Eigen::VectorXd cavResidual_;
+  Eigen::VectorXd factorDiag_,
+      precondScale_;  // diagonal at factorisation, drift scaling  // Reynolds: balance of the
+                      // cavitated nodes before the step
 
   Eigen::VectorXd rhs_, step_, x_, r_, z_, p_, q_;
   Eigen::MatrixXd V_;  // GMRES basis

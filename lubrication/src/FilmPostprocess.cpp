@@ -130,12 +130,24 @@ void postprocess(const FilmGrid& grid, const FilmProblem& pr, const FilmSystem& 
   s.fluxDiagnostics(res.boundaryInflow_m3ps, res.boundaryOutflow_m3ps, res.storageRate_m3ps);
 
   if (dP) {
+    // Column by column: Eigen products would evaluate into temporaries (allocations).
+    const Eigen::Index m = dP->cols();
     res.dPressure_dVelocity = *dP;
-    res.dLoad_dVelocity = dP->transpose() * A.matrix();
-    res.dFirstMomentX_dVelocity =
-        dP->transpose() * (grid.xFirstMomentWeights_m3() - c.x() * A).matrix();
-    res.dFirstMomentY_dVelocity =
-        dP->transpose() * (grid.yFirstMomentWeights_m3() - c.y() * A).matrix();
+    res.dLoad_dVelocity.resize(m);
+    res.dFirstMomentX_dVelocity.resize(m);
+    res.dFirstMomentY_dVelocity.resize(m);
+    for (Eigen::Index col = 0; col < m; ++col) {
+      double dl = 0.0, dmx = 0.0, dmy = 0.0;
+      for (int k = 0; k < n; ++k) {
+        const double d = (*dP)(k, col);
+        dl += A[k] * d;
+        dmx += (grid.xFirstMomentWeights_m3()[k] - c.x() * A[k]) * d;
+        dmy += (grid.yFirstMomentWeights_m3()[k] - c.y() * A[k]) * d;
+      }
+      res.dLoad_dVelocity[col] = dl;
+      res.dFirstMomentX_dVelocity[col] = dmx;
+      res.dFirstMomentY_dVelocity[col] = dmy;
+    }
   } else {
     res.dPressure_dVelocity.resize(0, 0);
     res.dLoad_dVelocity.resize(0);

@@ -50,12 +50,17 @@ void checkEdge(const FilmEdge& e, const char* name, Eigen::Index along) {
   if (std::isnan(e.supplyFilm_m) || e.supplyFilm_m < 0.0)
     fail(std::string("problem.boundary.") + name + ".supplyFilm_m = " + num(e.supplyFilm_m) +
          " m must be >= 0 (or +inf for a flooded edge)");
-  const std::string perNode = std::string("problem.boundary.") + name + ".supplyFilmPerNode_m";
-  checkSize(e.supplyFilmPerNode_m.size(), along, perNode.c_str(), true);
-  for (Eigen::Index k = 0; k < e.supplyFilmPerNode_m.size(); ++k) {
+  // Names are built only on failure: validation runs on every call and must not allocate.
+  const Eigen::Index size = e.supplyFilmPerNode_m.size();
+  if (size != 0 && size != along) {
+    const std::string perNode = std::string("problem.boundary.") + name + ".supplyFilmPerNode_m";
+    checkSize(size, along, perNode.c_str(), true);
+  }
+  for (Eigen::Index k = 0; k < size; ++k) {
     const double s = e.supplyFilmPerNode_m[k];
     if (std::isnan(s) || s < 0.0)
-      fail(perNode + "[" + std::to_string(k) + "] = " + num(s) + " m must be >= 0");
+      fail(std::string("problem.boundary.") + name + ".supplyFilmPerNode_m[" + std::to_string(k) +
+           "] = " + num(s) + " m must be >= 0");
   }
 }
 
@@ -260,7 +265,7 @@ void FilmSolver::Impl::solve(const FilmGrid& grid, const FilmProblem& pr, const 
     for (Eigen::Index c = 0; c < m; ++c)
       for (int k = 0; k < sys.n; ++k)
         derivRhs(k, c) = -sys.theta[k] * area[k] * sys.dhTdh[k] * pr.squeezeBasis(k, c);
-    fast.solveWithCurrentSet(sys, derivRhs, 1e-3 * options.tolerance);
+    fast.solveWithCurrentSet(sys, derivRhs, options.tolerance);
     for (int k = 0; k < sys.n; ++k)
       if (sys.status[k] != detail::kFull)
         derivRhs.row(k).setZero();

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <stdexcept>
+#include <vector>
 
 namespace pistondyn::lubrication::detail {
 
@@ -64,14 +65,15 @@ void StencilPattern::build(const FilmSystem& sys) {
 
 namespace {
 
-cholmod_sparse viewUpper(StencilPattern& pat) {
+cholmod_sparse viewUpper(int n, std::vector<int>& colPtr, std::vector<int>& rowIdx,
+                         std::vector<double>& values) {
   cholmod_sparse A{};
-  A.nrow = A.ncol = static_cast<size_t>(pat.n);
-  A.nzmax = pat.rowIdx.size();
-  A.p = pat.colPtr.data();
-  A.i = pat.rowIdx.data();
+  A.nrow = A.ncol = static_cast<size_t>(n);
+  A.nzmax = rowIdx.size();
+  A.p = colPtr.data();
+  A.i = rowIdx.data();
   A.nz = nullptr;
-  A.x = pat.values.data();
+  A.x = values.data();
   A.z = nullptr;
   A.stype = 1;  // symmetric, upper triangle used (lower entries ignored)
   A.itype = CHOLMOD_INT;
@@ -91,11 +93,6 @@ CholmodLdl::CholmodLdl() {
   // (BLAS-based) path costs more than it gains (see BENCHMARKS.md).
   c_->supernodal = CHOLMOD_SIMPLICIAL;
   c_->final_ll = 0;
-  // Try AMD and CHOLMOD's nested dissection, keep the ordering with less fill: the analysis
-  // runs once per grid shape, the factorisation many times.
-  c_->nmethods = 2;
-  c_->method[0].ordering = CHOLMOD_AMD;
-  c_->method[1].ordering = CHOLMOD_NESDIS;
   c_->print = 0;
   c_->error_handler = nullptr;
 }
@@ -109,46 +106,112 @@ CholmodLdl::~CholmodLdl() {
 void CholmodLdl::release() {
   if (L_)
     cholmod_free_factor(&L_, c_);
-  for (cholmod_dense** d : {&X1_, &Y1_, &E1_, &Xm_, &Ym_, &Em_})
-    if (*d)
-      cholmod_free_dense(d, c_);
 }
 
+// Two analyses. The first chooses the fill-reducing permutation P (AMD or CHOLMOD's nested
+// dissection, whichever fills less: it runs once per grid shape). The second analyses the
+// explicitly permuted upper triangle of P A P' with the natural ordering and no
+// post-ordering; factorising that matrix needs no internal transposes, so repeated
+// factorisations allocate nothing (cholmod_factorize with a permutation builds two temporary
+// copies of A every time).
 void CholmodLdl::analyze(StencilPattern& pat) {
   release();
   n_ = pat.n;
-  cholmod_sparse A = viewUpper(pat);
-  L_ = cholmod_analyze(&A, c_);
-  if (!L_)
+  work_.assign(static_cast<size_t>(n_), 0.0);
+  cholmod_sparse A = viewUpper(n_, pat.colPtr, pat.rowIdx, pat.values);
+  c_->nmethods = 2;
+  c_->method[0].ordering = CHOLMOD_AMD;
+  c_->method[1].ordering = CHOLMOD_NESDIS;
+  c_->postorder = 1;
+  cholmod_factor* ordering = cholmod_analyze(&A, c_);
+  if (!ordering)
     throw std::runtime_error("FilmSolver: CHOLMOD symbolic analysis failed");
   // Flops of the LDL' factorisation vs. one solve (4 lnz) plus a stencil product and the CG
   // vector updates (~20 n). The simplicial factorisation runs about 2.8x fewer flops per second
   // than the streaming triangular solves (1.7 vs 4.8 GFlop/s measured, BENCHMARKS.md).
   costRatio_ = 2.8 * c_->fl / (4.0 * c_->lnz + 20.0 * n_);
+  perm_.assign(static_cast<const int*>(ordering->Perm),
+               static_cast<const int*>(ordering->Perm) + n_);
+  cholmod_free_factor(&ordering, c_);
+
+  // Upper triangle of P A P': entry (i, j), i <= j, of A goes to (min, max)(pinv[i], pinv[j]).
+  std::vector<int> pinv(static_cast<size_t>(n_));
+  for (int k = 0; k < n_; ++k)
+    pinv[static_cast<size_t>(perm_[static_cast<size_t>(k)])] = k;
+  std::vector<std::array<int, 3>> entries;  // (column, row, position in pat.values)
+  for (int j = 0; j < n_; ++j)
+    for (int q = pat.colPtr[j]; q < pat.colPtr[j + 1]; ++q) {
+      const int i = pat.rowIdx[q];
+      if (i > j)
+        continue;
+      const int a = pinv[static_cast<size_t>(i)], b = pinv[static_cast<size_t>(j)];
+      entries.push_back({std::max(a, b), std::min(a, b), q});
+    }
+  std::sort(entries.begin(), entries.end());
+  permColPtr_.assign(static_cast<size_t>(n_) + 1, 0);
+  permRowIdx_.resize(entries.size());
+  permValues_.assign(entries.size(), 0.0);
+  valueMap_.resize(entries.size());
+  for (size_t e = 0; e < entries.size(); ++e) {
+    ++permColPtr_[static_cast<size_t>(entries[e][0]) + 1];
+    permRowIdx_[e] = entries[e][1];
+    valueMap_[e] = entries[e][2];
+  }
+  for (int k = 0; k < n_; ++k)
+    permColPtr_[static_cast<size_t>(k) + 1] += permColPtr_[static_cast<size_t>(k)];
+  cholmod_sparse B = viewUpper(n_, permColPtr_, permRowIdx_, permValues_);
+  c_->nmethods = 1;
+  c_->method[0].ordering = CHOLMOD_NATURAL;
+  c_->postorder = 0;
+  L_ = cholmod_analyze(&B, c_);
+  if (!L_)
+    throw std::runtime_error("FilmSolver: CHOLMOD symbolic analysis failed");
 }
 
 bool CholmodLdl::factorize(StencilPattern& pat) {
-  cholmod_sparse A = viewUpper(pat);
+  for (size_t e = 0; e < valueMap_.size(); ++e)
+    permValues_[e] = pat.values[static_cast<size_t>(valueMap_[e])];
+  cholmod_sparse A = viewUpper(n_, permColPtr_, permRowIdx_, permValues_);
   const int ok = cholmod_factorize(&A, L_, c_);
-  return ok && c_->status == CHOLMOD_OK && L_->minor == L_->n;
+  // solve() relies on a simplicial LDL' factor with int indices.
+  return ok && c_->status == CHOLMOD_OK && L_->minor == L_->n && !L_->is_ll && !L_->is_super &&
+         L_->itype == CHOLMOD_INT && L_->xtype == CHOLMOD_REAL;
 }
 
+// Permuted forward / diagonal / backward substitution with the simplicial LDL' factor (column j
+// of L holds D(j,j) first, then the strictly lower part of L(:,j); the unit diagonal is not
+// stored). Done here instead of cholmod_solve2, which reallocates its dense workspaces on every
+// call; this one works in a buffer sized once.
 void CholmodLdl::solve(const double* b, double* x, int nrhs) {
-  cholmod_dense B{};
-  B.nrow = static_cast<size_t>(n_);
-  B.ncol = static_cast<size_t>(nrhs);
-  B.nzmax = B.nrow * B.ncol;
-  B.d = B.nrow;
-  B.x = const_cast<double*>(b);
-  B.z = nullptr;
-  B.xtype = CHOLMOD_REAL;
-  B.dtype = CHOLMOD_DOUBLE;
-  cholmod_dense** X = nrhs == 1 ? &X1_ : &Xm_;
-  cholmod_dense** Y = nrhs == 1 ? &Y1_ : &Ym_;
-  cholmod_dense** E = nrhs == 1 ? &E1_ : &Em_;
-  if (!cholmod_solve2(CHOLMOD_A, L_, &B, nullptr, X, nullptr, Y, E, c_))
-    throw std::runtime_error("FilmSolver: CHOLMOD solve failed");
-  std::copy_n(static_cast<const double*>((*X)->x), static_cast<size_t>(n_) * nrhs, x);
+  const int* Lp = static_cast<const int*>(L_->p);
+  const int* Li = static_cast<const int*>(L_->i);
+  const int* Lnz = static_cast<const int*>(L_->nz);
+  const double* Lx = static_cast<const double*>(L_->x);
+  const int* perm = perm_.data();  // L_ is of P A P' in natural order
+  double* y = work_.data();
+  for (int c = 0; c < nrhs; ++c) {
+    const double* bc = b + static_cast<size_t>(c) * n_;
+    double* xc = x + static_cast<size_t>(c) * n_;
+    for (int k = 0; k < n_; ++k)
+      y[k] = bc[perm[k]];
+    for (int j = 0; j < n_; ++j) {
+      const double yj = y[j];
+      if (yj == 0.0)
+        continue;
+      for (int q = Lp[j] + 1, end = Lp[j] + Lnz[j]; q < end; ++q)
+        y[Li[q]] -= Lx[q] * yj;
+    }
+    for (int j = 0; j < n_; ++j)
+      y[j] /= Lx[Lp[j]];
+    for (int j = n_ - 1; j >= 0; --j) {
+      double t = y[j];
+      for (int q = Lp[j] + 1, end = Lp[j] + Lnz[j]; q < end; ++q)
+        t -= Lx[q] * y[Li[q]];
+      y[j] = t;
+    }
+    for (int k = 0; k < n_; ++k)
+      xc[perm[k]] = y[k];
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -9,7 +9,6 @@
 
 struct cholmod_common_struct;
 struct cholmod_factor_struct;
-struct cholmod_dense_struct;
 
 namespace pistondyn::lubrication::detail {
 
@@ -45,8 +44,10 @@ class CholmodLdl {
   void release();
   cholmod_common_struct* c_ = nullptr;
   cholmod_factor_struct* L_ = nullptr;
-  cholmod_dense_struct *X1_ = nullptr, *Y1_ = nullptr, *E1_ = nullptr;
-  cholmod_dense_struct *Xm_ = nullptr, *Ym_ = nullptr, *Em_ = nullptr;
+  std::vector<double> work_;                             // permuted right-hand side of solve()
+  std::vector<int> perm_;                                // fill-reducing permutation P
+  std::vector<int> permColPtr_, permRowIdx_, valueMap_;  // upper triangle of P A P'
+  std::vector<double> permValues_;
   int n_ = 0;
   double costRatio_ = 20.0;
 };

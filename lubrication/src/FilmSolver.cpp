@@ -135,8 +135,6 @@ void validateOptions(const FilmSolverOptions& o) {
     bad("fillRelaxation = " + num(o.fillRelaxation) + " must lie in (0, 1]");
   if (o.maxSweeps < 1)
     bad("maxSweeps must be >= 1");
-  if (o.residualCheckInterval < 1)
-    bad("residualCheckInterval must be >= 1");
   if (o.maxActiveSetIterations < 1)
     bad("maxActiveSetIterations must be >= 1");
 }

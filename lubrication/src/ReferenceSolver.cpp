@@ -6,9 +6,17 @@ namespace pistondyn::lubrication::detail {
 
 namespace {
 
-// One sweep of (projected) SOR on the Reynolds balance with theta = 1 everywhere.
+// Over-relaxed sweeps meet residuals several times larger than the residual left at the end
+// of the sweep (measured ~4x at omega = 1.8 on the skirt benchmark): the exact check starts
+// once the in-sweep residual is within this factor of the tolerance.
+constexpr double kInSweepLag = 4.0;
+
+// One sweep of (projected) SOR on the Reynolds balance with theta = 1 everywhere. Returns the
+// largest residual met during the sweep (each node's balance just before its update, with the
+// sign rule of the Reynolds condition at nodes held at p_cav): a free convergence indicator.
 template <bool kProject>
-void reynoldsSweep(FilmSystem& s, double omega) {
+double reynoldsSweep(FilmSystem& s, double omega) {
+  double worst = 0.0;
   double* p = s.p.data();
   const double pCav = s.pCav;
   for (const int k : s.order) {
@@ -17,14 +25,20 @@ void reynoldsSweep(FilmSystem& s, double omega) {
                       s.tS[k] * p[s.nbS[k]]) +
                      s.src[k];
     double pn = p[k] - omega * r / s.diagP[k];
-    if (kProject)
+    if (kProject) {
+      worst = std::max(worst, p[k] <= pCav ? -r : std::abs(r));
       pn = std::max(pn, pCav);
+    } else {
+      worst = std::max(worst, std::abs(r));
+    }
     p[k] = pn;
   }
+  return worst;
 }
 
-// One Elrod-Adams sweep (mass-conserving model).
-void elrodAdamsSweep(FilmSystem& s, double omega, double omegaTheta) {
+// One Elrod-Adams sweep (mass-conserving model); returns the largest residual met.
+double elrodAdamsSweep(FilmSystem& s, double omega, double omegaTheta) {
+  double worst = 0.0;
   double* p = s.p.data();
   double* th = s.theta.data();
   const double pCav = s.pCav;
@@ -36,6 +50,7 @@ void elrodAdamsSweep(FilmSystem& s, double omega, double omegaTheta) {
     const double a = s.aOut[k] + s.squeeze[k] + s.capacity[k];
     if (th[k] >= 1.0) {
       const double r = P + a + G;
+      worst = std::max(worst, std::abs(r));
       const double pn = p[k] - omega * r / s.diagP[k];
       if (pn >= pCav) {
         p[k] = pn;
@@ -47,35 +62,39 @@ void elrodAdamsSweep(FilmSystem& s, double omega, double omegaTheta) {
       th[k] = a > 0.0 ? std::clamp(-(Pc + G) / a, 0.0, 1.0) : 1.0;
     } else {
       const double r = P + a * th[k] + G;
+      worst = std::max(worst, std::abs(r));
       const double tn = a > 0.0 ? th[k] - omegaTheta * r / a : 1.0;
       th[k] = tn >= 1.0 ? 1.0 : std::max(tn, 0.0);
     }
   }
+  return worst;
 }
 
 }  // namespace
 
 IterationReport gaussSeidelSolve(FilmSystem& s, const FilmSolverOptions& opt, int maxSweeps) {
   IterationReport rep;
-  const int interval = std::max(1, opt.residualCheckInterval);
   rep.residual = s.relativeResidual();
   if (rep.residual <= opt.tolerance) {
     rep.converged = true;
   } else {
     for (int sweep = 1; sweep <= maxSweeps; ++sweep) {
+      double inSweep = 0.0;
       switch (s.model) {
         case CavitationModel::None:
-          reynoldsSweep<false>(s, opt.overRelaxation);
+          inSweep = reynoldsSweep<false>(s, opt.overRelaxation);
           break;
         case CavitationModel::Reynolds:
-          reynoldsSweep<true>(s, opt.overRelaxation);
+          inSweep = reynoldsSweep<true>(s, opt.overRelaxation);
           break;
         case CavitationModel::MassConserving:
-          elrodAdamsSweep(s, opt.overRelaxation, opt.fillRelaxation);
+          inSweep = elrodAdamsSweep(s, opt.overRelaxation, opt.fillRelaxation);
           break;
       }
       rep.iterations = sweep;
-      if (sweep % interval == 0 || sweep == maxSweeps) {
+      // The exact residual (same definition as the fast solver) is evaluated only once the
+      // residuals met during the sweep say it may be small enough: no checking overhead.
+      if (inSweep / s.residualScale <= kInSweepLag * opt.tolerance || sweep == maxSweeps) {
         rep.residual = s.relativeResidual();
         if (rep.residual <= opt.tolerance) {
           rep.converged = true;

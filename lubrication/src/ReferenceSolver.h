@@ -12,8 +12,9 @@ struct IterationReport {
 };
 
 // Runs Gauss-Seidel sweeps on sys.p / sys.theta from their current values until the relative
-// residual is <= options.tolerance or maxSweeps sweeps are done. Leaves sys.status consistent
-// with the iterate (kCav where p sits at p_cav or theta < 1).
+// residual is <= options.tolerance or maxSweeps sweeps are done. The exact residual is
+// evaluated only when the residuals met during a sweep are near the tolerance. Leaves sys.status
+// consistent with the iterate (kCav where p sits at p_cav or theta < 1).
 //  * None:     SOR on the Reynolds balance.
 //  * Reynolds: projected SOR, p <- max(p_cav, SOR update)  (Christopherson / Cryer).
 //  * MassConserving: Elrod-Adams Gauss-Seidel in the manner of Ausas et al. (2009): a full node

@@ -131,7 +131,6 @@ struct FilmSolverOptions {
   FilmSolverType solver = FilmSolverType::FastActiveSet;  // default: the fast solver
   double tolerance = 1e-8;          // relative residual (see top of file), default 1e-8
   int maxSweeps = 200000;           // Gauss-Seidel sweeps before giving up, default 200000
-  int residualCheckInterval = 5;    // Gauss-Seidel sweeps between residual checks, default 5
   double overRelaxation = 1.8;      // SOR factor of the pressure update, (0, 2), default 1.8
   double fillRelaxation = 1.0;      // relaxation of the fill-fraction update (JFO GS), (0, 1]
   int maxActiveSetIterations = 40;  // factorisations per solve of the fast solver, default 40

@@ -117,6 +117,7 @@ void CholmodLdl::analyze(StencilPattern& pat) {
   release();
   n_ = pat.n;
   work_.assign(static_cast<size_t>(n_), 0.0);
+  solveStructure_ = false;
   cholmod_sparse A = viewUpper(n_, pat.colPtr, pat.rowIdx, pat.values);
   // AMD only: CHOLMOD's nested dissection calls METIS, whose random-number state is
   // process-global, so concurrent analyses on several threads race (and may pick different
@@ -175,39 +176,86 @@ bool CholmodLdl::factorize(StencilPattern& pat) {
   cholmod_sparse A = viewUpper(n_, permColPtr_, permRowIdx_, permValues_);
   const int ok = cholmod_factorize(&A, L_, c_);
   // solve() relies on a simplicial LDL' factor with int indices.
-  return ok && c_->status == CHOLMOD_OK && L_->minor == L_->n && !L_->is_ll && !L_->is_super &&
-         L_->itype == CHOLMOD_INT && L_->xtype == CHOLMOD_REAL;
+  const bool good = ok && c_->status == CHOLMOD_OK && L_->minor == L_->n && !L_->is_ll &&
+                    !L_->is_super && L_->itype == CHOLMOD_INT && L_->xtype == CHOLMOD_REAL;
+  if (good)
+    refreshSolveCopies();
+  return good;
 }
 
-// Permuted forward / diagonal / backward substitution with the simplicial LDL' factor (column j
-// of L holds D(j,j) first, then the strictly lower part of L(:,j); the unit diagonal is not
-// stored). Done here instead of cholmod_solve2, which reallocates its dense workspaces on every
-// call; this one works in a buffer sized once.
-void CholmodLdl::solve(const double* b, double* x, int nrhs) {
+// Copies of the simplicial LDL' factor for the triangular solves (column j of CHOLMOD's L holds
+// D(j,j) first, then the strictly lower part of L(:,j)): the strictly lower part by columns
+// (backward sweep, a gather) and by rows (forward sweep, a gather instead of a scatter), and
+// 1/D. The index structure is built after the first factorisation of an analysis (the
+// simplicial pattern is fixed by the symbolic analysis); values are re-gathered after every
+// factorisation.
+void CholmodLdl::refreshSolveCopies() {
   const int* Lp = static_cast<const int*>(L_->p);
   const int* Li = static_cast<const int*>(L_->i);
   const int* Lnz = static_cast<const int*>(L_->nz);
   const double* Lx = static_cast<const double*>(L_->x);
+  if (!solveStructure_) {
+    colStart_.assign(static_cast<size_t>(n_) + 1, 0);
+    rowStart_.assign(static_cast<size_t>(n_) + 1, 0);
+    for (int j = 0; j < n_; ++j) {
+      colStart_[static_cast<size_t>(j) + 1] = colStart_[static_cast<size_t>(j)] + Lnz[j] - 1;
+      for (int q = Lp[j] + 1; q < Lp[j] + Lnz[j]; ++q)
+        ++rowStart_[static_cast<size_t>(Li[q]) + 1];
+    }
+    for (int i = 0; i < n_; ++i)
+      rowStart_[static_cast<size_t>(i) + 1] += rowStart_[static_cast<size_t>(i)];
+    const size_t nnz = static_cast<size_t>(colStart_.back());
+    colRow_.resize(nnz);
+    colSrc_.resize(nnz);
+    rowCol_.resize(nnz);
+    rowSrc_.resize(nnz);
+    std::vector<int> fill(rowStart_.begin(), rowStart_.end() - 1);
+    for (int j = 0; j < n_; ++j)
+      for (int q = Lp[j] + 1, c = colStart_[static_cast<size_t>(j)]; q < Lp[j] + Lnz[j]; ++q, ++c) {
+        colRow_[static_cast<size_t>(c)] = Li[q];
+        colSrc_[static_cast<size_t>(c)] = q;
+        const int r = fill[static_cast<size_t>(Li[q])]++;
+        rowCol_[static_cast<size_t>(r)] = j;
+        rowSrc_[static_cast<size_t>(r)] = q;
+      }
+    colVal_.resize(nnz);
+    rowVal_.resize(nnz);
+    dinv_.resize(static_cast<size_t>(n_));
+    diagPos_.assign(Lp, Lp + n_);
+    solveStructure_ = true;
+  }
+  for (size_t c = 0; c < colVal_.size(); ++c)
+    colVal_[c] = Lx[colSrc_[c]];
+  for (size_t r = 0; r < rowVal_.size(); ++r)
+    rowVal_[r] = Lx[rowSrc_[r]];
+  for (int j = 0; j < n_; ++j)
+    dinv_[static_cast<size_t>(j)] = 1.0 / Lx[diagPos_[static_cast<size_t>(j)]];
+}
+
+// x = P' L'^-1 D^-1 L^-1 P b. Done here instead of cholmod_solve2, which reallocates its dense
+// workspaces on every call; both sweeps are gathers over contiguous copies of L.
+void CholmodLdl::solve(const double* b, double* x, int nrhs) {
   const int* perm = perm_.data();  // L_ is of P A P' in natural order
   double* y = work_.data();
+  const int* rs = rowStart_.data();
+  const int* rc = rowCol_.data();
+  const double* rv = rowVal_.data();
+  const int* cs = colStart_.data();
+  const int* cr = colRow_.data();
+  const double* cv = colVal_.data();
   for (int c = 0; c < nrhs; ++c) {
     const double* bc = b + static_cast<size_t>(c) * n_;
     double* xc = x + static_cast<size_t>(c) * n_;
-    for (int k = 0; k < n_; ++k)
-      y[k] = bc[perm[k]];
-    for (int j = 0; j < n_; ++j) {
-      const double yj = y[j];
-      if (yj == 0.0)
-        continue;
-      for (int q = Lp[j] + 1, end = Lp[j] + Lnz[j]; q < end; ++q)
-        y[Li[q]] -= Lx[q] * yj;
+    for (int i = 0; i < n_; ++i) {  // forward: L y = P b, row by row
+      double t = bc[perm[i]];
+      for (int q = rs[i]; q < rs[i + 1]; ++q)
+        t -= rv[q] * y[rc[q]];
+      y[i] = t;
     }
-    for (int j = 0; j < n_; ++j)
-      y[j] /= Lx[Lp[j]];
-    for (int j = n_ - 1; j >= 0; --j) {
-      double t = y[j];
-      for (int q = Lp[j] + 1, end = Lp[j] + Lnz[j]; q < end; ++q)
-        t -= Lx[q] * y[Li[q]];
+    for (int j = n_ - 1; j >= 0; --j) {  // diagonal and backward: L' z = D^-1 y
+      double t = y[j] * dinv_[static_cast<size_t>(j)];
+      for (int q = cs[j]; q < cs[j + 1]; ++q)
+        t -= cv[q] * y[cr[q]];
       y[j] = t;
     }
     for (int k = 0; k < n_; ++k)

@@ -42,12 +42,17 @@ class CholmodLdl {
 
  private:
   void release();
+  void refreshSolveCopies();
   cholmod_common_struct* c_ = nullptr;
   cholmod_factor_struct* L_ = nullptr;
   std::vector<double> work_;                             // permuted right-hand side of solve()
   std::vector<int> perm_;                                // fill-reducing permutation P
   std::vector<int> permColPtr_, permRowIdx_, valueMap_;  // upper triangle of P A P'
   std::vector<double> permValues_;
+  // Gather-friendly copies of L for solve() (see refreshSolveCopies).
+  bool solveStructure_ = false;
+  std::vector<int> colStart_, colRow_, colSrc_, rowStart_, rowCol_, rowSrc_, diagPos_;
+  std::vector<double> colVal_, rowVal_, dinv_;
   int n_ = 0;
   double costRatio_ = 20.0;
 };

@@ -129,11 +129,13 @@ struct FilmState {
 
 struct FilmSolverOptions {
   FilmSolverType solver = FilmSolverType::FastActiveSet;  // default: the fast solver
-  double tolerance = 1e-8;          // relative residual (see top of file), default 1e-8
-  int maxSweeps = 200000;           // Gauss-Seidel sweeps before giving up, default 200000
-  double overRelaxation = 1.8;      // SOR factor of the pressure update, (0, 2), default 1.8
+  double tolerance = 1e-8;  // relative residual (see top of file), default 1e-8
+  int maxSweeps = 200000;   // Gauss-Seidel sweeps before giving up, default 200000
+  // SOR factor of the pressure update, (0, 2), default 1.8. The best value grows with the grid
+  // (skirt benchmark: 1.84 at 64 x 48, 1.92 at 128 x 96; BENCHMARKS.md).
+  double overRelaxation = 1.8;
   double fillRelaxation = 1.0;      // relaxation of the fill-fraction update (JFO GS), (0, 1]
-  int maxActiveSetIterations = 40;  // factorisations per solve of the fast solver, default 40
+  int maxActiveSetIterations = 40;  // active-set (Newton) steps of the fast solver, default 40
   // When the active-set iteration does not settle within maxActiveSetIterations, continue from
   // its iterate with the reference Gauss-Seidel (reported in FilmResult::usedFallback).
   bool fallbackToReference = true;
@@ -193,9 +195,11 @@ struct FilmResult {
   Eigen::VectorXd dLoad_dVelocity;      // [N per unit v_m]
   Eigen::VectorXd dFirstMomentX_dVelocity, dFirstMomentY_dVelocity;  // [N m per unit v_m]
 
-  // Solver report. iterations: Gauss-Seidel sweeps, or factorisations of the fast solver (plus
-  // the sweeps of a fallback). Not converged means: the residual is above tolerance after
-  // the allowed iterations; the fields then hold the last iterate (finite, constraints kept).
+  // Solver report. iterations: Gauss-Seidel sweeps of the reference solver, or active-set steps
+  // of the fast solver plus the sweeps of a fallback (activeSetIterations: the steps alone).
+  // Not converged means: the residual is above tolerance after the allowed iterations; the
+  // fields then hold the last iterate (finite, constraints kept) and the caller decides (e.g.
+  // reject the integrator step).
   int iterations = 0;
   int activeSetIterations = 0;
   int factorisations = 0;    // numeric sparse factorisations done in this call (fast solver)

@@ -1,0 +1,213 @@
+#pragma once
+// Inputs, warm-start state and results of the film solver (FilmSolver.h).
+//
+// Frame and sign conventions
+// --------------------------
+// * The grid (FilmGrid.h) is attached to surface 2 (e.g. the piston skirt, a bearing shell).
+//   Surface 1 (the liner, a journal) moves with the sliding velocity U = (Ux, Uy) relative to
+//   surface 2, as in FlowFactorModel.h. The mean (Couette) velocity of a full film is U/2.
+// * gapRate_mps is dh/dt at a fixed grid node (in the frame of surface 2).
+// * Nodal fields use the flat index k = i + nx * j of FilmGrid.
+//
+// Discrete equation (vertex-centred finite volumes; one balance per control volume):
+//   net outflow_k = sum_faces [ -K_f (p_nb - p_k) / d_f + (U.n_f / 2) * theta_up * C_f ] * L_f
+//                 + A_k * [ theta_k * dhT/dt_k + hT_k * (theta_k - thetaPrev_k) / dt ] = 0
+// with K = phi_p * h^3 / (12 eta) (phi_p: pressure flow factor of the face direction),
+// C = hT + sigma*phiS (expected gap plus shear-flow term of Patir & Cheng), face values the
+// arithmetic mean of the two nodes (second order), L_f the face length, d_f the node spacing,
+// A_k the control-volume area. theta_up is the fill fraction of the upwind node (mass-conserving
+// model only; 1 otherwise): in a full film this is exactly the central second-order Reynolds
+// discretisation, in a cavitated zone it is the monotone upwind transport of the oil content.
+// Without a time step (steady state, dt = inf) the last term vanishes.
+//
+// Residual tolerance (same definition for both solvers)
+// ------------------------------------------------------
+//   relative residual = max over unknown nodes k of |R_k| / F
+// where R_k is the net outflow above (m^3/s), except that at a node held at the cavitation
+// pressure by the Reynolds (Swift-Stieber) condition only a mass deficit counts, R_k -> max(0,
+// -R_k) (the sign condition of the complementarity problem); and F is the largest over the
+// unknown nodes of the sum of the magnitudes of the driving fluxes of that node's balance
+// (Couette fluxes through its faces, |A dhT/dt|, A hT / dt, and the Poiseuille flux that the
+// spread of the prescribed pressures would drive through its faces). Both solvers enforce
+// p >= p_cav, 0 <= theta <= 1 and p (1 - theta) = 0 exactly, so the residual measures only the
+// mass balance. A solve is converged when this number is <= FilmSolverOptions::tolerance.
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "pistondyn/lubrication/FlowFactorModel.h"
+
+namespace pistondyn::lubrication {
+
+enum class CavitationModel {
+  None,            // full Sommerfeld: the Reynolds equation everywhere, sub-ambient pressures kept
+  Reynolds,        // Swift-Stieber / Reynolds condition p >= p_cav (the thesis' choice)
+  MassConserving,  // JFO / Elrod-Adams: p >= p_cav, 0 <= theta <= 1, (p - p_cav)(1 - theta) = 0
+};
+
+enum class FilmSolverType {
+  ReferenceGaussSeidel,  // the thesis' Gauss-Seidel with over-relaxation (projected / Elrod-Adams)
+  FastActiveSet,         // sparse direct (CHOLMOD / KLU) with a primal-dual active-set iteration
+};
+
+// One open edge of the film region. Ignored for x edges of an x-periodic grid.
+struct FilmEdge {
+  double pressure_Pa = 0.0;  // pressure on the edge, [Pa], default 0 (gauge ambient)
+  // Oil layer available on surface 1 ahead of this edge, [m], default +inf (fully flooded).
+  // Only used where surface 1 slides into the region through this edge (U . inward normal > 0).
+  // The layer moves with surface 1, so the supply is U_n * supplyFilm_m per unit edge length; a
+  // full film carries U_n * h / 2, hence the edge is flooded where h <= 2 * supplyFilm_m.
+  //  * MassConserving: the edge node gets the fill fraction theta_b <= 1 for which the Couette
+  //    inflow through its face equals U_n * supply * (edge length of the node), i.e. about
+  //    2 supply / hT, and, when starved (theta_b < 1), the cavitation pressure instead of
+  //    pressure_Pa.
+  //  * None / Reynolds (heuristic of the thesis' partially flooded skirt, not mass conserving):
+  //    along every grid line entering through this edge, the nodes before the first node with
+  //    h <= 2 * supply are dry (pressure held at pressure_Pa, fill fraction 0, no shear); the
+  //    wetted region starts at that meniscus node.
+  double supplyFilm_m = std::numeric_limits<double>::infinity();
+  // Optional per-node supply along the edge ([m]; size nx for y edges, ny for x edges);
+  // overrides supplyFilm_m when not empty.
+  Eigen::ArrayXd supplyFilmPerNode_m;
+};
+
+struct FilmBoundary {
+  FilmEdge xMin, xMax;  // edges i = 0 and i = nx - 1 (not used when the grid is x-periodic)
+  FilmEdge yMin, yMax;  // edges j = 0 and j = ny - 1
+  // Corner nodes take the pressure of the x edge when x is open.
+};
+
+// Everything a solve needs besides the grid. Keep one object per film region and update its
+// arrays in place between calls: no allocation happens at a fixed size.
+struct FilmProblem {
+  Eigen::ArrayXd gap_m;        // nominal gap h per node, [m], > 0 and finite (required)
+  Eigen::ArrayXd gapRate_mps;  // dh/dt per node at a fixed grid point, [m/s]; empty = 0
+  Eigen::Vector2d slidingVelocity_mps = Eigen::Vector2d::Zero();  // U of surface 1 rel. to 2
+                                                                  // along (x, y), [m/s]
+  double viscosity_Pas = 0.0;           // dynamic viscosity, [Pa s], > 0 unless per-node given
+  Eigen::ArrayXd viscosityPerNode_Pas;  // optional per-node viscosity, [Pa s]; overrides scalar
+  // Flow-factor model (average Reynolds of Patir & Cheng); nullptr = smooth surfaces (plain
+  // Reynolds). Pressure flow factors are applied along the grid axis closest to the sliding
+  // direction ("sliding") and across it ("cross"); y is taken as sliding when U = 0. The
+  // shear-flow term sigma*phiS is transported with U/2 in the sliding direction.
+  const FlowFactorModel* flowFactors = nullptr;
+
+  CavitationModel cavitation = CavitationModel::Reynolds;
+  double cavitationPressure_Pa = 0.0;  // p_cav, [Pa], default 0 (gauge ambient)
+  FilmBoundary boundary;
+
+  // Mass-conserving model only: time step since the state thetaPrev, [s] (> 0; +inf = steady
+  // state, the default) and the fill fraction at the start of the step (empty = 1, full film).
+  // A steady problem needs an oil supply (an edge above p_cav or a flooded inflow edge): on an
+  // x-periodic region whose open edges all sit at p_cav, any pure Couette circulation with
+  // theta * hT = const solves the steady equations, so the answer is not unique (the fast
+  // solver then reports non-convergence and falls back). Use a time step there.
+  double timeStep_s = std::numeric_limits<double>::infinity();
+  Eigen::ArrayXd previousFillFraction;
+
+  // Optional squeeze basis: column m is d(gapRate)/d(v_m) per node ([m/s per unit v_m]) for a
+  // generalised velocity v_m. The result then holds d(p)/d(v_m) and the derivatives of load and
+  // moments, from back-substitutions with the final factorisation and active set (the pressure
+  // is linear in the squeeze velocity for a fixed cavitation set).
+  Eigen::MatrixXd squeezeBasis;
+
+  Eigen::Vector2d momentPoint_m = Eigen::Vector2d::Zero();  // (x0, y0) for moments, [m]
+  double referencePressure_Pa = 0.0;  // subtracted from p in load and moments, [Pa]
+};
+
+// Warm start that the caller keeps between steps (e.g. in the Simbody State cache). Small,
+// copyable. Empty arrays (the default) mean "no warm start".
+struct FilmState {
+  Eigen::ArrayXd pressure_Pa;           // nodal pressure, [Pa]
+  Eigen::ArrayXd fillFraction;          // nodal fill fraction theta, [-]
+  std::vector<std::uint8_t> cavitated;  // 1 where the node was cavitated (active set)
+  bool empty() const { return pressure_Pa.size() == 0; }
+};
+
+struct FilmSolverOptions {
+  FilmSolverType solver = FilmSolverType::FastActiveSet;  // default: the fast solver
+  double tolerance = 1e-8;  // relative residual (see top of file), default 1e-8
+  int maxSweeps = 200000;   // Gauss-Seidel sweeps before giving up, default 200000
+  // SOR factor of the pressure update, (0, 2), default 1.8. The best value grows with the grid
+  // (skirt benchmark: 1.84 at 64 x 48, 1.92 at 128 x 96; BENCHMARKS.md).
+  double overRelaxation = 1.8;
+  double fillRelaxation = 1.0;      // relaxation of the fill-fraction update (JFO GS), (0, 1]
+  int maxActiveSetIterations = 40;  // active-set (Newton) steps of the fast solver, default 40
+  // When the active-set iteration does not settle within maxActiveSetIterations, continue from
+  // its iterate with the reference Gauss-Seidel (reported in FilmResult::usedFallback).
+  bool fallbackToReference = true;
+};
+
+// Shear stress and friction acting on one surface, split into Couette (sliding) and Poiseuille
+// (pressure-gradient) parts. Stresses are the force per area the film exerts on the surface,
+// along the grid axes x and y.
+struct SurfaceShear {
+  Eigen::ArrayXd couetteX_Pa, couetteY_Pa;                   // nodal Couette shear stress, [Pa]
+  Eigen::ArrayXd poiseuilleX_Pa, poiseuilleY_Pa;             // nodal Poiseuille shear stress, [Pa]
+  Eigen::Vector2d couetteForce_N = Eigen::Vector2d::Zero();  // integral over the film, [N]
+  Eigen::Vector2d poiseuilleForce_N = Eigen::Vector2d::Zero();  // integral over the film, [N]
+  // In-plane moment about momentPoint: integral of (x - x0) tau_y - (y - y0) tau_x dA, [N m].
+  double couetteMoment_Nm = 0.0;
+  double poiseuilleMoment_Nm = 0.0;
+  Eigen::Vector2d force_N() const { return couetteForce_N + poiseuilleForce_N; }
+  double moment_Nm() const { return couetteMoment_Nm + poiseuilleMoment_Nm; }
+};
+
+struct FilmResult {
+  FilmState state;  // pressure [Pa], fill fraction [-], active set: store this as the warm start
+  const Eigen::ArrayXd& pressure_Pa() const { return state.pressure_Pa; }
+  const Eigen::ArrayXd& fillFraction() const { return state.fillFraction; }
+
+  Eigen::ArrayXd areaWeights_m2;  // nodal area weights (copy of the grid's), [m^2]
+
+  // Load = integral of (p - referencePressure) over the film (exact for the bilinear field), [N]
+  double load_N = 0.0;
+  // First moments about momentPoint: integral of (x - x0)(p - pref) dA and (y - y0)(p - pref) dA,
+  // [N m] (exact for the bilinear field).
+  double firstMomentX_Nm = 0.0;
+  double firstMomentY_Nm = 0.0;
+
+  // Friction. Couette shear: surface 2 gets +theta eta U / h (phiF - phiFs), surface 1 gets
+  // -theta eta U / h (phiF + phiFs); Poiseuille shear on both: -phiFp (h / 2) grad p. The Couette
+  // shear is carried by the fill fraction theta: the mass-conserving model's theta in cavitated
+  // zones, 1 in the Reynolds / None models (whose cavitated zones are assumed filled) except on
+  // dry starved nodes (0). grad p is the nodal gradient (second order, one-sided at open edges).
+  SurfaceShear shearOnSurface1;  // e.g. the liner / journal
+  SurfaceShear shearOnSurface2;  // the grid's surface, e.g. the skirt / bearing shell
+
+  Eigen::ArrayXd gapOverSigma;  // h / sigma per node; empty when the model's sigma is 0
+  double minFilmThickness_m = 0.0;
+  int minFilmNode = -1;                                         // flat node index of the minimum
+  Eigen::Vector2d minFilmLocation_m = Eigen::Vector2d::Zero();  // (x, y) of the minimum
+
+  // Oil flow diagnostics of the discrete balance (all models; conserved by MassConserving):
+  // inflow and outflow through the faces between prescribed (edge, dry) and unknown nodes, and
+  // the storage rate sum_k A_k [theta dhT/dt + hT (theta - thetaPrev)/dt] of the unknown nodes.
+  double boundaryInflow_m3ps = 0.0;
+  double boundaryOutflow_m3ps = 0.0;
+  double storageRate_m3ps = 0.0;
+
+  // Squeeze derivatives (empty without a squeeze basis): column m is d/d(v_m).
+  Eigen::MatrixXd dPressure_dVelocity;  // [Pa per unit v_m], nodeCount x M
+  Eigen::VectorXd dLoad_dVelocity;      // [N per unit v_m]
+  Eigen::VectorXd dFirstMomentX_dVelocity, dFirstMomentY_dVelocity;  // [N m per unit v_m]
+
+  // Solver report. iterations: Gauss-Seidel sweeps of the reference solver, or active-set steps
+  // of the fast solver plus the sweeps of a fallback (activeSetIterations: the steps alone).
+  // Not converged means: the residual is above tolerance after the allowed iterations; the
+  // fields then hold the last iterate (finite, constraints kept) and the caller decides (e.g.
+  // reject the integrator step).
+  int iterations = 0;
+  int activeSetIterations = 0;
+  int factorisations = 0;    // numeric sparse factorisations done in this call (fast solver)
+  int krylovIterations = 0;  // preconditioned Krylov iterations done in this call (fast solver)
+  double residual = 0.0;
+  bool converged = false;
+  bool usedFallback = false;
+  int cavitatedNodes = 0;  // unknown nodes at the cavitation pressure
+};
+
+}  // namespace pistondyn::lubrication

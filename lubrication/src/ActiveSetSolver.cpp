@@ -1,0 +1,505 @@
+#include "ActiveSetSolver.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pistondyn::lubrication::detail {
+
+namespace {
+
+// Rows that carry a balance equation in the linear system (the others are identity rows).
+inline bool isEquationRow(const FilmSystem& s, int m) {
+  return s.status[m] == kFull || (s.status[m] == kCav && s.jfo);
+}
+
+constexpr int kGmresRestart = 30;
+constexpr int kMaxKrylovIterations = 40;  // beyond this: factorise the current Jacobian
+constexpr double kInnerSafety = 0.5;      // inner target = kInnerSafety * tolerance
+constexpr double kLooseFraction = 3e-2;   // inexact solves while the active set moves
+
+}  // namespace
+
+void ActiveSetSolver::prepare(const FilmSystem& sys) {
+  if (sys.n == shapeN_ && sys.nx == shapeNx_ && sys.periodicX == shapePeriodic_)
+    return;
+  pat_.build(sys);
+  shapeN_ = sys.n;
+  shapeNx_ = sys.nx;
+  shapePeriodic_ = sys.periodicX;
+  cholAnalysed_ = kluAnalysed_ = cholFactored_ = kluFactored_ = false;
+  factorExact_ = jacobianCurrent_ = refactorNext_ = false;
+  const int n = sys.n;
+  for (Eigen::VectorXd* v : {&rhs_, &step_, &x_, &r_, &z_, &p_, &q_})
+    v->setZero(n);
+  V_.setZero(n, kGmresRestart + 1);
+  H_.setZero(kGmresRestart + 1, kGmresRestart);
+  g_.setZero(kGmresRestart + 1);
+  cs_.setZero(kGmresRestart);
+  sn_.setZero(kGmresRestart);
+  y_.setZero(kGmresRestart);
+  eqRow_.assign(n, 0);
+  colType_.assign(n, 0);
+  factorColType_.assign(n, 0);
+  changedRhs_.setZero(n);
+  cavResidual_.setZero(n);
+  factorDiag_.setOnes(n);
+  precondScale_.setOnes(n);
+}
+
+void ActiveSetSolver::fillJacobian(const FilmSystem& s) {
+  std::fill(pat_.values.begin(), pat_.values.end(), 0.0);
+  // Identity rows get the node's own Poiseuille diagonal (the film's conductance varies by
+  // orders of magnitude): pivot-ratio checks stay meaningful and, should the node become an
+  // unknown later, the lagged factorisation acts on it like a Jacobi step.
+  double scale = 0.0;
+  int count = 0;
+  for (int k = 0; k < s.n; ++k) {
+    eqRow_[k] = isEquationRow(s, k) ? 1 : 0;
+    colType_[k] = !eqRow_[k] ? 0 : (s.status[k] == kFull ? 1 : 2);
+    if (s.status[k] != kFixed) {
+      scale += s.diagP[k];
+      ++count;
+    }
+  }
+  scale = count > 0 && scale > 0.0 ? scale / count : 1.0;
+  double* v = pat_.values.data();
+  for (int k = 0; k < s.n; ++k) {
+    if (!eqRow_[k]) {
+      v[pat_.posSelf[k]] = s.diagP[k] > 0.0 ? s.diagP[k] : scale;
+      continue;
+    }
+    const int e = s.nbE[k], w = s.nbW[k], no = s.nbN[k], so = s.nbS[k];
+    if (s.status[k] == kFull) {
+      // Column of p_k: Poiseuille coupling.
+      v[pat_.posSelf[k]] = s.diagP[k];
+      if (e != k && eqRow_[e])
+        v[pat_.posE[k]] = -s.tE[k];
+      if (w != k && eqRow_[w])
+        v[pat_.posW[k]] = -s.tW[k];
+      if (no != k && eqRow_[no])
+        v[pat_.posN[k]] = -s.tN[k];
+      if (so != k && eqRow_[so])
+        v[pat_.posS[k]] = -s.tS[k];
+    }
+  }
+  if (s.jfo) {
+    // Columns of theta_k (cavitated): Couette outflow and storage in the own row, inflow into
+    // the downstream rows. Done after all eqRow_ flags are known.
+    for (int k = 0; k < s.n; ++k) {
+      if (s.status[k] != kCav)
+        continue;
+      const int e = s.nbE[k], w = s.nbW[k], no = s.nbN[k], so = s.nbS[k];
+      v[pat_.posSelf[k]] = s.aOut[k] + s.squeeze[k] + s.capacity[k];
+      if (e != k && s.inIx[e] == k && eqRow_[e])
+        v[pat_.posE[k]] -= s.inCx[e];
+      if (w != k && s.inIx[w] == k && eqRow_[w])
+        v[pat_.posW[k]] -= s.inCx[w];
+      if (no != k && s.inIy[no] == k && eqRow_[no])
+        v[pat_.posN[k]] -= s.inCy[no];
+      if (so != k && s.inIy[so] == k && eqRow_[so])
+        v[pat_.posS[k]] -= s.inCy[so];
+    }
+  }
+  factorExact_ = false;
+  jacobianCurrent_ = true;
+  updatePreconditionerScaling();
+}
+
+// The Jacobian drifts between calls mostly by a smooth rescaling of the film conductance
+// (h^3 changes with the gap): J_new ~ S J_old S with S = diag(sqrt(diag J_new / diag J_old)).
+// Scaling the lagged factorisation the same way, M^-1 -> S^-1 M^-1 S^-1, absorbs that part of
+// the drift at the cost of two diagonal scalings per application.
+void ActiveSetSolver::updatePreconditionerScaling() {
+  const double* v = pat_.values.data();
+  for (int k = 0; k < pat_.n; ++k) {
+    const double now = v[pat_.posSelf[k]], then = factorDiag_[k];
+    precondScale_[k] = (then > 0.0 && now > 0.0) ? std::sqrt(then / now) : 1.0;
+  }
+}
+
+bool ActiveSetSolver::factorCurrent(const FilmSystem& s) {
+  bool ok;
+  if (!s.jfo) {
+    if (!cholAnalysed_) {
+      chol_.analyze(pat_);
+      cholAnalysed_ = true;
+    }
+    ok = chol_.factorize(pat_);
+    cholFactored_ = ok;
+  } else {
+    if (!kluAnalysed_) {
+      klu_.analyze(pat_);
+      kluAnalysed_ = true;
+    }
+    ok = klu_.factorize(pat_, !kluFactored_);
+    kluFactored_ = ok;
+  }
+  ++factorisations_;
+  factorExact_ = ok;
+  factorColType_ = colType_;
+  for (int k = 0; k < pat_.n; ++k)
+    factorDiag_[k] = pat_.values[pat_.posSelf[k]];
+  precondScale_.setOnes();
+  costSinceFactor_ = s.jfo ? klu_.factorCostInIterations() : chol_.factorCostInIterations();
+  solvesSinceFactor_ = 1;  // the direct solve that follows
+  return ok;
+}
+
+void ActiveSetSolver::multiply(const FilmSystem& s, const double* x, double* y) const {
+  if (!s.jfo) {
+    // Symmetric case: the Poiseuille stencil on the equation rows (x vanishes elsewhere).
+    for (int k = 0; k < s.n; ++k)
+      y[k] = eqRow_[k] ? s.diagP[k] * x[k] - (s.tE[k] * x[s.nbE[k]] + s.tW[k] * x[s.nbW[k]] +
+                                              s.tN[k] * x[s.nbN[k]] + s.tS[k] * x[s.nbS[k]])
+                       : 0.0;
+    return;
+  }
+  std::fill(y, y + pat_.n, 0.0);
+  const double* v = pat_.values.data();
+  for (int c = 0; c < pat_.n; ++c) {
+    const double xc = x[c];
+    if (xc == 0.0)
+      continue;
+    for (int q = pat_.colPtr[c]; q < pat_.colPtr[c + 1]; ++q)
+      y[pat_.rowIdx[q]] += v[q] * xc;
+  }
+}
+
+// Block preconditioner: the lagged factorisation on the nodes whose unknown (p, theta or none)
+// is the same as when it was computed, a Jacobi step with the current diagonal on the nodes
+// that changed role since (they would otherwise see a row of another physical kind).
+void ActiveSetSolver::applyPreconditioner(const FilmSystem& s, double* v) {
+  const double* diag = pat_.values.data();
+  for (int k = 0; k < s.n; ++k) {
+    changedRhs_[k] = 0.0;
+    if (eqRow_[k] && colType_[k] != factorColType_[k]) {
+      changedRhs_[k] = v[k];
+      v[k] = 0.0;
+    } else {
+      v[k] *= precondScale_[k];
+    }
+  }
+  if (!s.jfo)
+    chol_.solve(v, v, 1);
+  else
+    klu_.solve(v, 1);
+  for (int k = 0; k < s.n; ++k) {
+    if (!eqRow_[k])
+      v[k] = 0.0;
+    else if (colType_[k] != factorColType_[k])
+      v[k] = changedRhs_[k] / diag[pat_.posSelf[k]];
+    else
+      v[k] *= precondScale_[k];
+  }
+}
+
+bool ActiveSetSolver::wouldChangeSet(const FilmSystem& s, const Eigen::VectorXd& dz,
+                                     double accuracy) const {
+  if (s.model == CavitationModel::None)
+    return false;
+  const double rEps = std::max(0.5 * s.residualScale * tolerance_, accuracy);
+  for (int k = 0; k < s.n; ++k) {
+    if (s.status[k] == kFull) {
+      if (s.p[k] + dz[k] < s.pCav - accuracy / s.diagP[k])
+        return true;
+    } else if (s.status[k] == kCav) {
+      const double r = cavResidual_[k] - (s.tE[k] * dz[s.nbE[k]] + s.tW[k] * dz[s.nbW[k]] +
+                                          s.tN[k] * dz[s.nbN[k]] + s.tS[k] * dz[s.nbS[k]]);
+      if (r < -rEps)
+        return true;
+    }
+  }
+  return false;
+}
+
+bool ActiveSetSolver::pcg(const FilmSystem& s, double* b, double target, double looseTarget,
+                          int maxIt) {
+  const int n = s.n;
+  Eigen::Map<Eigen::VectorXd> bv(b, n);
+  x_.setZero();
+  r_ = bv;
+  if (r_.lpNorm<Eigen::Infinity>() <= target) {
+    bv.setZero();
+    return true;
+  }
+  // While the active set may still move, stop at the loose target if the step would change it;
+  // otherwise carry on in the same Krylov space to the tight target.
+  bool checkLoose = looseTarget > target;
+  z_ = r_;
+  applyPreconditioner(s, z_.data());
+  p_ = z_;
+  double rz = r_.dot(z_);
+  for (int it = 1; it <= maxIt; ++it) {
+    multiply(s, p_.data(), q_.data());
+    const double pq = p_.dot(q_);
+    if (!(pq > 0.0))
+      return false;
+    const double alpha = rz / pq;
+    x_.noalias() += alpha * p_;
+    r_.noalias() -= alpha * q_;
+    ++krylovIterations_;
+    const double rMax = r_.lpNorm<Eigen::Infinity>();
+    if (rMax <= target) {
+      bv = x_;
+      return true;
+    }
+    if (checkLoose && rMax <= looseTarget) {
+      checkLoose = false;
+      if (wouldChangeSet(s, x_, looseTarget)) {
+        bv = x_;
+        stoppedLoose_ = true;
+        return true;
+      }
+    }
+    z_ = r_;
+    applyPreconditioner(s, z_.data());
+    const double rzNew = r_.dot(z_);
+    const double beta = rzNew / rz;
+    rz = rzNew;
+    p_ = z_ + beta * p_;
+  }
+  return false;
+}
+
+bool ActiveSetSolver::gmres(const FilmSystem& s, double* b, double target, int maxIt) {
+  const int n = s.n;
+  const int m = kGmresRestart;
+  Eigen::Map<Eigen::VectorXd> bv(b, n);
+  x_.setZero();
+  r_ = bv;
+  double beta = r_.norm();
+  if (r_.lpNorm<Eigen::Infinity>() <= target) {
+    bv.setZero();
+    return true;
+  }
+  int its = 0;
+  while (true) {
+    V_.col(0) = r_ / beta;
+    g_.setZero();
+    g_[0] = beta;
+    int j = 0;
+    while (j < m) {
+      z_ = V_.col(j);
+      applyPreconditioner(s, z_.data());
+      multiply(s, z_.data(), q_.data());
+      for (int i = 0; i <= j; ++i) {  // modified Gram-Schmidt
+        H_(i, j) = q_.dot(V_.col(i));
+        q_.noalias() -= H_(i, j) * V_.col(i);
+      }
+      const double hNext = q_.norm();
+      if (hNext > 0.0)
+        V_.col(j + 1) = q_ / hNext;
+      for (int i = 0; i < j; ++i) {  // previous Givens rotations
+        const double t = cs_[i] * H_(i, j) + sn_[i] * H_(i + 1, j);
+        H_(i + 1, j) = -sn_[i] * H_(i, j) + cs_[i] * H_(i + 1, j);
+        H_(i, j) = t;
+      }
+      const double d = std::hypot(H_(j, j), hNext);
+      cs_[j] = d > 0.0 ? H_(j, j) / d : 1.0;
+      sn_[j] = d > 0.0 ? hNext / d : 0.0;
+      H_(j, j) = d;
+      g_[j + 1] = -sn_[j] * g_[j];
+      g_[j] = cs_[j] * g_[j];
+      ++j;
+      ++its;
+      ++krylovIterations_;
+      // The 2-norm bounds the max norm: stopping on it is conservative.
+      if (std::abs(g_[j]) <= target || its >= maxIt || hNext == 0.0)
+        break;
+    }
+    for (int i = j - 1; i >= 0; --i) {  // back substitution H y = g
+      double t = g_[i];
+      for (int l = i + 1; l < j; ++l)
+        t -= H_(i, l) * y_[l];
+      y_[i] = t / H_(i, i);
+    }
+    z_.noalias() = V_.leftCols(j) * y_.head(j);
+    applyPreconditioner(s, z_.data());
+    x_ += z_;
+    multiply(s, x_.data(), q_.data());
+    r_ = bv - q_;
+    if (r_.lpNorm<Eigen::Infinity>() <= target) {
+      bv = x_;
+      return true;
+    }
+    if (its >= maxIt || !r_.allFinite())
+      return false;
+    beta = r_.norm();
+  }
+}
+
+bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target,
+                                  double looseTarget) {
+  stoppedLoose_ = false;
+  Eigen::Map<Eigen::VectorXd> bv(b, s.n);
+  if (bv.lpNorm<Eigen::Infinity>() <= target) {  // already converged: nothing to factorise
+    bv.setZero();
+    return true;
+  }
+  const bool haveFactor = s.jfo ? kluFactored_ : cholFactored_;
+  if (!haveFactor || refactorNext_) {
+    refactorNext_ = false;
+    if (!factorCurrent(s))
+      return false;
+  }
+  if (factorExact_) {
+    if (!s.jfo)
+      chol_.solve(b, b, 1);
+    else
+      klu_.solve(b, 1);
+    return true;
+  }
+  rhs_ = Eigen::Map<Eigen::VectorXd>(b, s.n);  // keep the right-hand side for a fallback
+  const int before = krylovIterations_;
+  bool ok;
+  if (s.jfo) {
+    // GMRES forms its iterate only at the end of a cycle: solve to the loose target and let the
+    // active-set loop decide (a second, tight solve follows when the set did not move).
+    ok = gmres(s, b, looseTarget, kMaxKrylovIterations);
+    stoppedLoose_ = looseTarget > target;
+  } else {
+    ok = pcg(s, b, target, looseTarget, kMaxKrylovIterations);
+  }
+  if (ok) {
+    // Refresh when this solve cost more than the average per solve since the factorisation.
+    const int k = krylovIterations_ - before;
+    if (k > 0) {
+      costSinceFactor_ += k;
+      ++solvesSinceFactor_;
+      if (k > costSinceFactor_ / solvesSinceFactor_)
+        refactorNext_ = true;
+    }
+    return true;
+  }
+  // The lagged factorisation is too far from the current Jacobian: factorise it.
+  refactorNext_ = false;
+  stoppedLoose_ = false;
+  if (!factorCurrent(s))
+    return false;
+  Eigen::Map<Eigen::VectorXd>(b, s.n) = rhs_;
+  if (!s.jfo)
+    chol_.solve(b, b, 1);
+  else
+    klu_.solve(b, 1);
+  return true;
+}
+
+IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& opt) {
+  prepare(s);
+  jacobianCurrent_ = false;
+  IterationReport rep;
+  double* p = s.p.data();
+  double* th = s.theta.data();
+  const double tol = opt.tolerance;
+  tolerance_ = tol;
+  const double innerTarget = kInnerSafety * tol * s.residualScale;
+  // Inexact active-set iteration: while the sets are still moving, a linear solve only needs to
+  // be accurate enough to decide them (kLooseFraction of the current residual); the tight target
+  // is used once a step left the sets unchanged. Without cavitation there is no set to find.
+  bool setStable = s.model == CavitationModel::None;
+  for (int it = 1; it <= opt.maxActiveSetIterations; ++it) {
+    rep.iterations = it;
+    // Put the iterate on the current sets, then one Newton step: J dz = -R.
+    for (int k = 0; k < s.n; ++k) {
+      if (s.status[k] == kFull && s.jfo)
+        th[k] = 1.0;
+      if (s.status[k] == kCav)
+        p[k] = s.pCav;
+    }
+    fillJacobian(s);
+    Eigen::VectorXd& step = step_;
+    double rNorm = 0.0;
+    for (int k = 0; k < s.n; ++k) {
+      step[k] = eqRow_[k] ? -s.residualAt(k) : 0.0;
+      rNorm = std::max(rNorm, std::abs(step[k]));
+    }
+    const double loose = setStable ? innerTarget : std::max(innerTarget, kLooseFraction * rNorm);
+    if (!s.jfo)
+      for (int k = 0; k < s.n; ++k)
+        cavResidual_[k] = s.status[k] == kCav ? s.residualAt(k) : 0.0;
+    if (!linearSolve(s, step.data(), innerTarget, loose)) {
+      rep.residual = s.relativeResidual();
+      return rep;
+    }
+    const double target = stoppedLoose_ ? loose : innerTarget;  // accuracy of this step
+    double pScale = 0.0;
+    for (int k = 0; k < s.n; ++k) {
+      if (s.status[k] == kFull) {
+        p[k] += step[k];
+        pScale = std::max(pScale, std::abs(p[k] - s.pCav));
+      } else if (s.status[k] == kCav && s.jfo) {
+        th[k] += step[k];
+      }
+    }
+    // Update the sets (primal-dual active-set rule). Violations below round-off, or below the
+    // accuracy of an inexact solve, do not flip a node; they are projected away below.
+    const double pEps = 1e-12 * pScale;
+    const double rEps = std::max(0.5 * tol * s.residualScale, target);
+    bool changed = false;
+    for (int k = 0; k < s.n; ++k) {
+      if (s.status[k] == kFull) {
+        const double pTol = std::max(pEps, target > innerTarget ? target / s.diagP[k] : 0.0);
+        if (s.model != CavitationModel::None && p[k] < s.pCav - pTol) {
+          s.status[k] = kCav;
+          p[k] = s.pCav;
+          changed = true;
+        }
+      } else if (s.status[k] == kCav) {
+        const double a = s.aOut[k] + s.squeeze[k] + s.capacity[k];
+        const double thTol = std::max(1e-10, target > innerTarget && a > 0.0 ? target / a : 0.0);
+        const bool toFull =
+            s.jfo ? (th[k] > 1.0 + thTol || th[k] < -thTol) : (s.residualAt(k) < -rEps);
+        if (toFull) {
+          s.status[k] = kFull;
+          th[k] = 1.0;
+          changed = true;
+        }
+      }
+    }
+    if (changed) {
+      jacobianCurrent_ = false;
+      setStable = false;
+      continue;
+    }
+    setStable = true;
+    for (int k = 0; k < s.n; ++k) {
+      if (s.status[k] == kFull && s.model != CavitationModel::None)
+        p[k] = std::max(p[k], s.pCav);
+      if (s.status[k] == kCav && s.jfo)
+        th[k] = std::clamp(th[k], 0.0, 1.0);
+    }
+    rep.residual = s.relativeResidual();
+    if (rep.residual <= tol) {
+      rep.converged = true;
+      return rep;
+    }
+    // Same sets but not yet accurate (inexact inner solve, round-off): another Newton step.
+  }
+  rep.residual = s.relativeResidual();
+  return rep;
+}
+
+void ActiveSetSolver::solveWithCurrentSet(FilmSystem& s, Eigen::MatrixXd& rhs, double relTol) {
+  prepare(s);
+  if (!jacobianCurrent_)
+    fillJacobian(s);
+  for (int k = 0; k < s.n; ++k)
+    if (!eqRow_[k])
+      rhs.row(k).setZero();
+  if (factorExact_) {
+    if (!s.jfo)
+      chol_.solve(rhs.data(), rhs.data(), static_cast<int>(rhs.cols()));
+    else
+      klu_.solve(rhs.data(), static_cast<int>(rhs.cols()));
+    return;
+  }
+  for (Eigen::Index c = 0; c < rhs.cols(); ++c) {
+    const double target = relTol * rhs.col(c).lpNorm<Eigen::Infinity>();
+    if (!linearSolve(s, rhs.col(c).data(), target, target)) {
+      rhs.setZero();
+      return;
+    }
+  }
+}
+
+}  // namespace pistondyn::lubrication::detail

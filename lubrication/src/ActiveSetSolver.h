@@ -1,0 +1,95 @@
+#pragma once
+// Internal: the fast solver. Not installed.
+//
+// Outer loop: a primal-dual active-set iteration (equivalently, semismooth Newton on the
+// min-function of the complementarity conditions). For a given split of the unknown nodes into
+// full (unknown p, theta = 1) and cavitated (p = p_cav; JFO: unknown theta) the balance is
+// linear, so one Newton step solves it. The sets are then updated:
+//   full -> cavitated   where p < p_cav,
+//   cavitated -> full   Reynolds: where the balance shows a mass deficit (R < 0, the node wants
+//                       pressure); JFO: where theta > 1 (or theta < 0: no consistent cavitated
+//                       state),
+// until no node changes.
+//
+// Inner linear solves: sparse direct factorisation, CHOLMOD LDL' for the symmetric Reynolds /
+// full-Sommerfeld Jacobian, KLU LU for the unsymmetric mass-conserving one. The symbolic
+// analysis is kept while the grid's shape is unchanged. The numeric factorisation is *lagged*:
+// a factorisation of an earlier Jacobian (previous step, previous active set) serves as the
+// preconditioner of a Krylov solve (PCG for the symmetric, GMRES for the unsymmetric case) on
+// the current one. It is refreshed when the last Krylov solve cost more than the average cost
+// per solve since the last factorisation (factorisation included, in iteration units from the
+// factorisation's flop count): the rule that minimises the long-run average cost when the
+// preconditioner's quality decays steadily.
+// Consecutive calls of an engine simulation differ little, so most calls cost a handful of
+// back-substitutions instead of a factorisation.
+
+#include <Eigen/Core>
+
+#include "ReferenceSolver.h"
+#include "SparseFactor.h"
+
+namespace pistondyn::lubrication::detail {
+
+class ActiveSetSolver {
+ public:
+  // Builds the stencil pattern and resets the factorisations when the grid shape changed.
+  void prepare(const FilmSystem& sys);
+
+  // Runs the active-set iteration from sys.p / sys.theta / sys.status.
+  IterationReport solve(FilmSystem& sys, const FilmSolverOptions& options);
+
+  // Solves J dz = rhs (column-major, n x nrhs, in place) with the Jacobian of the current
+  // active set, to a relative accuracy `relTol` of each column's max norm.
+  void solveWithCurrentSet(FilmSystem& sys, Eigen::MatrixXd& rhs, double relTol);
+
+  // Marks that the stored Jacobian values no longer belong to the current active set.
+  void invalidate() { jacobianCurrent_ = false; }
+
+  int factorisations() const { return factorisations_; }
+  int krylovIterations() const { return krylovIterations_; }
+
+ private:
+  void fillJacobian(const FilmSystem& sys);
+  void updatePreconditionerScaling();
+  bool factorCurrent(const FilmSystem& sys);
+  // rhs -> solution in place, residual max norm <= absTarget (equation rows). False on failure.
+  // With looseTarget > absTarget the solve may stop at looseTarget (stoppedLoose_) when the step
+  // would change the active set (PCG), or always does (GMRES).
+  bool linearSolve(const FilmSystem& sys, double* rhs, double absTarget, double looseTarget);
+  bool wouldChangeSet(const FilmSystem& sys, const Eigen::VectorXd& dz, double accuracy) const;
+  void applyPreconditioner(const FilmSystem& sys, double* v);  // v <- M^-1 v, zero off-set
+  void multiply(const FilmSystem& sys, const double* x, double* y) const;  // y = J x
+  bool pcg(const FilmSystem& sys, double* b, double absTarget, double looseTarget, int maxIt);
+  bool gmres(const FilmSystem& sys, double* b, double absTarget, int maxIt);
+
+  StencilPattern pat_;
+  CholmodLdl chol_;
+  KluLu klu_;
+  int shapeN_ = -1, shapeNx_ = -1;
+  bool shapePeriodic_ = false;
+  bool cholAnalysed_ = false, kluAnalysed_ = false;
+  bool cholFactored_ = false, kluFactored_ = false;
+  bool factorExact_ = false;      // the stored factorisation is of the current Jacobian values
+  bool jacobianCurrent_ = false;  // pat_.values hold the Jacobian of the current active set
+  bool refactorNext_ = false;     // refresh the factorisation before the next solve
+  // Cost bookkeeping since the last factorisation, in Krylov iterations (see linearSolve).
+  double costSinceFactor_ = 0.0;
+  int solvesSinceFactor_ = 0;
+  int factorisations_ = 0, krylovIterations_ = 0;
+  bool stoppedLoose_ = false;
+  double tolerance_ = 1e-8;
+  Eigen::VectorXd cavResidual_;
+  Eigen::VectorXd factorDiag_,
+      precondScale_;  // diagonal at factorisation, drift scaling  // Reynolds: balance of the
+                      // cavitated nodes before the step
+
+  Eigen::VectorXd rhs_, step_, x_, r_, z_, p_, q_;
+  Eigen::MatrixXd V_;  // GMRES basis
+  Eigen::MatrixXd H_;
+  Eigen::VectorXd g_, cs_, sn_, y_;
+  Eigen::VectorXd changedRhs_;
+  std::vector<std::uint8_t> eqRow_;
+  std::vector<std::uint8_t> colType_, factorColType_;  // 0 identity, 1 pressure, 2 fill
+};
+
+}  // namespace pistondyn::lubrication::detail

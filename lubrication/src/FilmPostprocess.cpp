@@ -1,0 +1,159 @@
+#include "FilmPostprocess.h"
+
+#include <cmath>
+
+namespace pistondyn::lubrication::detail {
+
+namespace {
+
+// Derivative at node i of a nodal function f along one axis from a quadratic through three
+// nodes: central on interior (and periodic) nodes, one-sided at open ends. Second order on
+// graded grids. Returns weights (cm, c0, cp) for (f[i-1], f[i], f[i+1]) or, at an open start,
+// for (f[0], f[1], f[2]) and, at an open end, for (f[n-3], f[n-2], f[n-1]).
+struct Stencil3 {
+  int im, i0, ip;
+  double cm, c0, cp;
+};
+
+Stencil3 derivativeStencil(const Eigen::VectorXd& c, int i, bool periodic, double period) {
+  const int n = static_cast<int>(c.size());
+  if (periodic || (i > 0 && i < n - 1)) {
+    const int im = (i - 1 + n) % n, ip = (i + 1) % n;
+    const double a = (i > 0) ? c[i] - c[im] : c[i] + period - c[im];
+    const double b = (i < n - 1) ? c[ip] - c[i] : c[ip] + period - c[i];
+    return {im, i, ip, -b / (a * (a + b)), (b - a) / (a * b), a / (b * (a + b))};
+  }
+  if (i == 0) {
+    const double a = c[1] - c[0], b = c[2] - c[1];
+    return {0, 1, 2, -(2.0 * a + b) / (a * (a + b)), (a + b) / (a * b), -a / (b * (a + b))};
+  }
+  const double a = c[n - 1] - c[n - 2], b = c[n - 2] - c[n - 3];
+  return {
+      n - 3, n - 2, n - 1, a / (b * (a + b)), -(a + b) / (a * b), (2.0 * a + b) / (a * (a + b))};
+}
+
+void resizeShear(SurfaceShear& s, int n) {
+  s.couetteX_Pa.resize(n);
+  s.couetteY_Pa.resize(n);
+  s.poiseuilleX_Pa.resize(n);
+  s.poiseuilleY_Pa.resize(n);
+}
+
+void integrateShear(SurfaceShear& s, const FilmGrid& grid, const Eigen::Vector2d& point) {
+  const Eigen::ArrayXd& A = grid.areaWeights_m2();
+  s.couetteForce_N = {(A * s.couetteX_Pa).sum(), (A * s.couetteY_Pa).sum()};
+  s.poiseuilleForce_N = {(A * s.poiseuilleX_Pa).sum(), (A * s.poiseuilleY_Pa).sum()};
+  double mc = 0.0, mp = 0.0;
+  for (int j = 0; j < grid.ny(); ++j) {
+    const double dy = grid.y_m()[j] - point.y();
+    for (int i = 0; i < grid.nx(); ++i) {
+      const int k = grid.nodeIndex(i, j);
+      const double dx = grid.x_m()[i] - point.x();
+      mc += A[k] * (dx * s.couetteY_Pa[k] - dy * s.couetteX_Pa[k]);
+      mp += A[k] * (dx * s.poiseuilleY_Pa[k] - dy * s.poiseuilleX_Pa[k]);
+    }
+  }
+  s.couetteMoment_Nm = mc;
+  s.poiseuilleMoment_Nm = mp;
+}
+
+}  // namespace
+
+void postprocess(const FilmGrid& grid, const FilmProblem& pr, const FilmSystem& s,
+                 const Eigen::MatrixXd* dP, FilmResult& res) {
+  const int n = s.n, nx = s.nx, ny = s.ny;
+  FilmState& st = res.state;
+  st.pressure_Pa = s.p;
+  st.fillFraction.resize(n);
+  st.cavitated.resize(n);
+  res.cavitatedNodes = 0;
+  for (int k = 0; k < n; ++k) {
+    st.fillFraction[k] = s.jfo ? s.theta[k] : (s.dry[k] ? 0.0 : 1.0);
+    st.cavitated[k] = s.status[k] == kCav ? 1 : 0;
+    res.cavitatedNodes += st.cavitated[k];
+  }
+
+  const Eigen::ArrayXd& A = grid.areaWeights_m2();
+  res.areaWeights_m2 = A;
+  const Eigen::Vector2d& c = pr.momentPoint_m;
+  const double pref = pr.referencePressure_Pa;
+  double load = 0.0, mx = 0.0, my = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const double q = s.p[k] - pref;
+    load += A[k] * q;
+    mx += (grid.xFirstMomentWeights_m3()[k] - c.x() * A[k]) * q;
+    my += (grid.yFirstMomentWeights_m3()[k] - c.y() * A[k]) * q;
+  }
+  res.load_N = load;
+  res.firstMomentX_Nm = mx;
+  res.firstMomentY_Nm = my;
+
+  // Shear stress (FilmResult comment) with the nodal pressure gradient.
+  resizeShear(res.shearOnSurface1, n);
+  resizeShear(res.shearOnSurface2, n);
+  const double Ux = pr.slidingVelocity_mps.x(), Uy = pr.slidingVelocity_mps.y();
+  for (int j = 0; j < ny; ++j) {
+    const Stencil3 sy = derivativeStencil(grid.y_m(), j, false, 0.0);
+    for (int i = 0; i < nx; ++i) {
+      const Stencil3 sx = derivativeStencil(grid.x_m(), i, grid.isPeriodicX(), grid.periodX_m());
+      const int k = i + nx * j;
+      const double dpdx =
+          sx.cm * s.p[sx.im + nx * j] + sx.c0 * s.p[sx.i0 + nx * j] + sx.cp * s.p[sx.ip + nx * j];
+      const double dpdy =
+          sy.cm * s.p[i + nx * sy.im] + sy.c0 * s.p[i + nx * sy.i0] + sy.cp * s.p[i + nx * sy.ip];
+      const double h = pr.gap_m[k];
+      const double couette = st.fillFraction[k] * s.eta[k] / h;
+      const double f2 = couette * (s.phiF[k] - s.phiFs[k]);
+      const double f1 = -couette * (s.phiF[k] + s.phiFs[k]);
+      const double pois = -s.phiFp[k] * 0.5 * h;
+      res.shearOnSurface2.couetteX_Pa[k] = f2 * Ux;
+      res.shearOnSurface2.couetteY_Pa[k] = f2 * Uy;
+      res.shearOnSurface1.couetteX_Pa[k] = f1 * Ux;
+      res.shearOnSurface1.couetteY_Pa[k] = f1 * Uy;
+      res.shearOnSurface1.poiseuilleX_Pa[k] = res.shearOnSurface2.poiseuilleX_Pa[k] = pois * dpdx;
+      res.shearOnSurface1.poiseuilleY_Pa[k] = res.shearOnSurface2.poiseuilleY_Pa[k] = pois * dpdy;
+    }
+  }
+  integrateShear(res.shearOnSurface1, grid, c);
+  integrateShear(res.shearOnSurface2, grid, c);
+
+  const double sigma = pr.flowFactors ? pr.flowFactors->compositeSigma_m() : 0.0;
+  if (sigma > 0.0)
+    res.gapOverSigma = pr.gap_m / sigma;
+  else
+    res.gapOverSigma.resize(0);
+  Eigen::Index kmin = 0;
+  res.minFilmThickness_m = pr.gap_m.minCoeff(&kmin);
+  res.minFilmNode = static_cast<int>(kmin);
+  res.minFilmLocation_m = {grid.x_m()[kmin % nx], grid.y_m()[kmin / nx]};
+
+  s.fluxDiagnostics(res.boundaryInflow_m3ps, res.boundaryOutflow_m3ps, res.storageRate_m3ps);
+
+  if (dP) {
+    // Column by column: Eigen products would evaluate into temporaries (allocations).
+    const Eigen::Index m = dP->cols();
+    res.dPressure_dVelocity = *dP;
+    res.dLoad_dVelocity.resize(m);
+    res.dFirstMomentX_dVelocity.resize(m);
+    res.dFirstMomentY_dVelocity.resize(m);
+    for (Eigen::Index col = 0; col < m; ++col) {
+      double dl = 0.0, dmx = 0.0, dmy = 0.0;
+      for (int k = 0; k < n; ++k) {
+        const double d = (*dP)(k, col);
+        dl += A[k] * d;
+        dmx += (grid.xFirstMomentWeights_m3()[k] - c.x() * A[k]) * d;
+        dmy += (grid.yFirstMomentWeights_m3()[k] - c.y() * A[k]) * d;
+      }
+      res.dLoad_dVelocity[col] = dl;
+      res.dFirstMomentX_dVelocity[col] = dmx;
+      res.dFirstMomentY_dVelocity[col] = dmy;
+    }
+  } else {
+    res.dPressure_dVelocity.resize(0, 0);
+    res.dLoad_dVelocity.resize(0);
+    res.dFirstMomentX_dVelocity.resize(0);
+    res.dFirstMomentY_dVelocity.resize(0);
+  }
+}
+
+}  // namespace pistondyn::lubrication::detail

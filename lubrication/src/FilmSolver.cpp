@@ -1,0 +1,304 @@
+#include "pistondyn/lubrication/FilmSolver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "ActiveSetSolver.h"
+#include "FilmPostprocess.h"
+#include "FilmSystem.h"
+#include "ReferenceSolver.h"
+
+namespace pistondyn::lubrication {
+
+namespace {
+
+constexpr const char* kWhere = "FilmSolver::solve: ";
+
+[[noreturn]] void fail(const std::string& what) {
+  throw std::invalid_argument(std::string(kWhere) + what);
+}
+
+std::string num(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+void checkSize(Eigen::Index size, Eigen::Index expected, const char* name, bool allowEmpty) {
+  if (allowEmpty && size == 0)
+    return;
+  if (size != expected)
+    fail(std::string(name) + " has " + std::to_string(size) + " entries, expected " +
+         std::to_string(expected) + (allowEmpty ? " (or 0)" : "") + " for this grid");
+}
+
+void checkFinite(const Eigen::ArrayXd& a, const char* name, const char* unit) {
+  for (Eigen::Index k = 0; k < a.size(); ++k)
+    if (!std::isfinite(a[k]))
+      fail(std::string(name) + "[" + std::to_string(k) + "] = " + num(a[k]) + " " + unit +
+           " must be finite");
+}
+
+void checkEdge(const FilmEdge& e, const char* name, Eigen::Index along) {
+  if (!std::isfinite(e.pressure_Pa))
+    fail(std::string("problem.boundary.") + name + ".pressure_Pa = " + num(e.pressure_Pa) +
+         " Pa must be finite");
+  if (std::isnan(e.supplyFilm_m) || e.supplyFilm_m < 0.0)
+    fail(std::string("problem.boundary.") + name + ".supplyFilm_m = " + num(e.supplyFilm_m) +
+         " m must be >= 0 (or +inf for a flooded edge)");
+  // Names are built only on failure: validation runs on every call and must not allocate.
+  const Eigen::Index size = e.supplyFilmPerNode_m.size();
+  if (size != 0 && size != along) {
+    const std::string perNode = std::string("problem.boundary.") + name + ".supplyFilmPerNode_m";
+    checkSize(size, along, perNode.c_str(), true);
+  }
+  for (Eigen::Index k = 0; k < size; ++k) {
+    const double s = e.supplyFilmPerNode_m[k];
+    if (std::isnan(s) || s < 0.0)
+      fail(std::string("problem.boundary.") + name + ".supplyFilmPerNode_m[" + std::to_string(k) +
+           "] = " + num(s) + " m must be >= 0");
+  }
+}
+
+void validate(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm) {
+  if (grid.nx() < 3 || grid.ny() < 3)
+    fail("grid has " + std::to_string(grid.nx()) + " x " + std::to_string(grid.ny()) +
+         " nodes; at least 3 x 3 are needed");
+  const Eigen::Index n = grid.nodeCount();
+  checkSize(pr.gap_m.size(), n, "problem.gap_m", false);
+  for (Eigen::Index k = 0; k < n; ++k)
+    if (!(std::isfinite(pr.gap_m[k]) && pr.gap_m[k] > 0.0))
+      fail("gap h[" + std::to_string(k) + "] = " + num(pr.gap_m[k]) +
+           " m must be positive and finite (problem.gap_m)");
+  checkSize(pr.gapRate_mps.size(), n, "problem.gapRate_mps", true);
+  checkFinite(pr.gapRate_mps, "problem.gapRate_mps", "m/s");
+  if (!pr.slidingVelocity_mps.allFinite())
+    fail("problem.slidingVelocity_mps must be finite");
+  if (pr.viscosityPerNode_Pas.size() > 0) {
+    checkSize(pr.viscosityPerNode_Pas.size(), n, "problem.viscosityPerNode_Pas", true);
+    for (Eigen::Index k = 0; k < n; ++k)
+      if (!(std::isfinite(pr.viscosityPerNode_Pas[k]) && pr.viscosityPerNode_Pas[k] > 0.0))
+        fail("viscosity problem.viscosityPerNode_Pas[" + std::to_string(k) +
+             "] = " + num(pr.viscosityPerNode_Pas[k]) + " Pa s must be positive and finite");
+  } else if (!(std::isfinite(pr.viscosity_Pas) && pr.viscosity_Pas > 0.0)) {
+    fail("viscosity problem.viscosity_Pas = " + num(pr.viscosity_Pas) +
+         " Pa s must be positive and finite");
+  }
+  if (!std::isfinite(pr.cavitationPressure_Pa))
+    fail("problem.cavitationPressure_Pa must be finite");
+  checkEdge(pr.boundary.yMin, "yMin", grid.nx());
+  checkEdge(pr.boundary.yMax, "yMax", grid.nx());
+  checkEdge(pr.boundary.xMin, "xMin", grid.ny());
+  checkEdge(pr.boundary.xMax, "xMax", grid.ny());
+  if (std::isnan(pr.timeStep_s) || !(pr.timeStep_s > 0.0))
+    fail("problem.timeStep_s = " + num(pr.timeStep_s) + " s must be > 0 (+inf: steady)");
+  checkSize(pr.previousFillFraction.size(), n, "problem.previousFillFraction", true);
+  for (Eigen::Index k = 0; k < pr.previousFillFraction.size(); ++k) {
+    const double t = pr.previousFillFraction[k];
+    if (!(t >= 0.0 && t <= 1.0))
+      fail("problem.previousFillFraction[" + std::to_string(k) + "] = " + num(t) +
+           " must lie in [0, 1]");
+  }
+  if (pr.squeezeBasis.cols() > 0) {
+    if (pr.squeezeBasis.rows() != n)
+      fail("problem.squeezeBasis has " + std::to_string(pr.squeezeBasis.rows()) +
+           " rows, expected " + std::to_string(n) + " (one per node)");
+    if (!pr.squeezeBasis.allFinite())
+      fail("problem.squeezeBasis must be finite");
+  }
+  if (!pr.momentPoint_m.allFinite())
+    fail("problem.momentPoint_m must be finite");
+  if (!std::isfinite(pr.referencePressure_Pa))
+    fail("problem.referencePressure_Pa must be finite");
+  if (warm) {
+    checkSize(warm->pressure_Pa.size(), n, "warmStart->pressure_Pa", true);
+    checkSize(warm->fillFraction.size(), n, "warmStart->fillFraction", true);
+    checkSize(static_cast<Eigen::Index>(warm->cavitated.size()), n, "warmStart->cavitated", true);
+    checkFinite(warm->pressure_Pa, "warmStart->pressure_Pa", "Pa");
+    checkFinite(warm->fillFraction, "warmStart->fillFraction", "");
+  }
+}
+
+void validateOptions(const FilmSolverOptions& o) {
+  auto bad = [](const std::string& what) {
+    throw std::invalid_argument("FilmSolver::setOptions: " + what);
+  };
+  if (!(std::isfinite(o.tolerance) && o.tolerance > 0.0))
+    bad("tolerance = " + num(o.tolerance) + " must be positive and finite");
+  if (!(o.overRelaxation > 0.0 && o.overRelaxation < 2.0))
+    bad("overRelaxation = " + num(o.overRelaxation) + " must lie in (0, 2)");
+  if (!(o.fillRelaxation > 0.0 && o.fillRelaxation <= 1.0))
+    bad("fillRelaxation = " + num(o.fillRelaxation) + " must lie in (0, 1]");
+  if (o.maxSweeps < 1)
+    bad("maxSweeps must be >= 1");
+  if (o.maxActiveSetIterations < 1)
+    bad("maxActiveSetIterations must be >= 1");
+}
+
+// Flow-factor models are external code: check what they return before it enters the matrices.
+void checkFactors(const detail::FilmSystem& s) {
+  for (int k = 0; k < s.n; ++k) {
+    const bool ok = std::isfinite(s.diagP[k]) && std::isfinite(s.hT[k]) && s.hT[k] > 0.0 &&
+                    std::isfinite(s.dhTdh[k]) && std::isfinite(s.aOut[k]) &&
+                    std::isfinite(s.phiF[k]) && std::isfinite(s.phiFs[k]) &&
+                    std::isfinite(s.phiFp[k]) && std::isfinite(s.src[k]) &&
+                    std::isfinite(s.capacity[k]) && s.tE[k] >= 0.0 && s.tN[k] >= 0.0 &&
+                    (s.status[k] == detail::kFixed || s.diagP[k] > 0.0);
+    if (!ok)
+      fail(
+          "problem.flowFactors returned factors that give a non-positive or non-finite "
+          "coefficient at node " +
+          std::to_string(k) + " (pressure flow factors must be > 0, expected gap > 0)");
+  }
+}
+
+}  // namespace
+
+struct FilmSolver::Impl {
+  FilmSolverOptions options;
+  detail::FilmSystem sys;
+  detail::ActiveSetSolver fast;
+  Eigen::MatrixXd derivRhs;
+
+  void initialiseIterate(const FilmProblem& pr, const FilmState* warm);
+  void solve(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm, FilmResult& r);
+};
+
+void FilmSolver::Impl::initialiseIterate(const FilmProblem& pr, const FilmState* warm) {
+  detail::FilmSystem& s = sys;
+  double pSum = 0.0;
+  int fixedCount = 0;
+  for (int k = 0; k < s.n; ++k) {
+    if (s.status[k] == detail::kFixed) {
+      pSum += s.fixedPressure[k];
+      ++fixedCount;
+    }
+  }
+  double pInit = fixedCount > 0 ? pSum / fixedCount : 0.0;
+  if (s.model != CavitationModel::None)
+    pInit = std::max(pInit, s.pCav);
+  const bool warmP = warm && warm->pressure_Pa.size() == s.n;
+  const bool warmT = warm && warm->fillFraction.size() == s.n;
+  const bool warmC = warm && static_cast<int>(warm->cavitated.size()) == s.n;
+  const bool prevT = pr.previousFillFraction.size() == s.n;
+  for (int k = 0; k < s.n; ++k) {
+    if (s.status[k] == detail::kFixed) {
+      s.p[k] = s.fixedPressure[k];
+      s.theta[k] = s.fixedTheta[k];
+      continue;
+    }
+    s.p[k] = warmP ? warm->pressure_Pa[k] : pInit;
+    s.theta[k] = 1.0;
+    bool cav = false;
+    switch (s.model) {
+      case CavitationModel::None:
+        break;
+      case CavitationModel::Reynolds:
+        cav = warmC ? warm->cavitated[k] != 0 : s.p[k] <= s.pCav;
+        break;
+      case CavitationModel::MassConserving: {
+        const double t = warmT ? warm->fillFraction[k] : (prevT ? pr.previousFillFraction[k] : 1.0);
+        cav = warmC ? warm->cavitated[k] != 0 : t < 1.0;
+        if (cav)
+          s.theta[k] = std::clamp(t, 0.0, 1.0);
+        break;
+      }
+    }
+    if (cav)
+      s.p[k] = s.pCav;
+    if (s.model != CavitationModel::None)
+      s.p[k] = std::max(s.p[k], s.pCav);
+    s.status[k] = cav ? detail::kCav : detail::kFull;
+  }
+}
+
+void FilmSolver::Impl::solve(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm,
+                             FilmResult& res) {
+  validate(grid, pr, warm);
+  sys.assemble(grid, pr);
+  checkFactors(sys);
+  initialiseIterate(pr, warm);
+
+  detail::IterationReport rep;
+  const int factorisations0 = fast.factorisations();
+  const int krylov0 = fast.krylovIterations();
+  res.usedFallback = false;
+  res.activeSetIterations = 0;
+  if (options.solver == FilmSolverType::ReferenceGaussSeidel) {
+    rep = detail::gaussSeidelSolve(sys, options, options.maxSweeps);
+    fast.invalidate();
+  } else {
+    rep = fast.solve(sys, options);
+    res.activeSetIterations = rep.iterations;
+    const bool finite = sys.p.allFinite() && sys.theta.allFinite();
+    if (!finite) {
+      // A failed factorisation must never leak into the result: restart from the initial guess.
+      initialiseIterate(pr, nullptr);
+      rep.converged = false;
+    }
+    if (!rep.converged && options.fallbackToReference) {
+      const detail::IterationReport gs = detail::gaussSeidelSolve(sys, options, options.maxSweeps);
+      rep.iterations += gs.iterations;
+      rep.residual = gs.residual;
+      rep.converged = gs.converged;
+      res.usedFallback = true;
+      fast.invalidate();
+    } else if (!finite) {
+      rep.residual = sys.relativeResidual();
+    }
+  }
+  res.iterations = rep.iterations;
+  res.residual = rep.residual;
+  res.converged = rep.converged;
+
+  // Squeeze derivatives by back-substitution with the final active set's factorisation.
+  const Eigen::Index m = pr.squeezeBasis.cols();
+  if (m > 0) {
+    derivRhs.resize(sys.n, m);
+    const Eigen::ArrayXd& area = grid.areaWeights_m2();
+    for (Eigen::Index c = 0; c < m; ++c)
+      for (int k = 0; k < sys.n; ++k)
+        derivRhs(k, c) = -sys.theta[k] * area[k] * sys.dhTdh[k] * pr.squeezeBasis(k, c);
+    fast.solveWithCurrentSet(sys, derivRhs, options.tolerance);
+    for (int k = 0; k < sys.n; ++k)
+      if (sys.status[k] != detail::kFull)
+        derivRhs.row(k).setZero();
+  }
+  res.factorisations = fast.factorisations() - factorisations0;
+  res.krylovIterations = fast.krylovIterations() - krylov0;
+  detail::postprocess(grid, pr, sys, m > 0 ? &derivRhs : nullptr, res);
+}
+
+FilmSolver::FilmSolver(const FilmSolverOptions& options) : impl_(std::make_unique<Impl>()) {
+  setOptions(options);
+}
+FilmSolver::~FilmSolver() = default;
+FilmSolver::FilmSolver(FilmSolver&&) noexcept = default;
+FilmSolver& FilmSolver::operator=(FilmSolver&&) noexcept = default;
+
+const FilmSolverOptions& FilmSolver::getOptions() const {
+  return impl_->options;
+}
+
+void FilmSolver::setOptions(const FilmSolverOptions& options) {
+  validateOptions(options);
+  impl_->options = options;
+}
+
+void FilmSolver::solve(const FilmGrid& grid, const FilmProblem& problem, const FilmState* warmStart,
+                       FilmResult& result) {
+  impl_->solve(grid, problem, warmStart, result);
+}
+
+FilmResult FilmSolver::solve(const FilmGrid& grid, const FilmProblem& problem,
+                             const FilmState* warmStart) {
+  FilmResult r;
+  solve(grid, problem, warmStart, r);
+  return r;
+}
+
+}  // namespace pistondyn::lubrication

@@ -1,0 +1,316 @@
+#include "FilmSystem.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pistondyn::lubrication::detail {
+
+namespace {
+
+// Supply film of an edge at position `along` (index along the edge).
+double edgeSupply(const FilmEdge& e, int along) {
+  return e.supplyFilmPerNode_m.size() > 0 ? e.supplyFilmPerNode_m[along] : e.supplyFilm_m;
+}
+
+}  // namespace
+
+void FilmSystem::resizeFor(const FilmGrid& grid) {
+  const bool same = grid.nx() == nx && grid.ny() == ny && grid.isPeriodicX() == periodicX;
+  if (same)
+    return;
+  nx = grid.nx();
+  ny = grid.ny();
+  n = nx * ny;
+  periodicX = grid.isPeriodicX();
+  nbE.assign(n, 0);
+  nbW.assign(n, 0);
+  nbN.assign(n, 0);
+  nbS.assign(n, 0);
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) {
+      const int k = i + nx * j;
+      nbE[k] = (i + 1 < nx) ? k + 1 : (periodicX ? nx * j : k);
+      nbW[k] = (i > 0) ? k - 1 : (periodicX ? nx - 1 + nx * j : k);
+      nbN[k] = (j + 1 < ny) ? k + nx : k;
+      nbS[k] = (j > 0) ? k - nx : k;
+    }
+  }
+  order.reserve(n);
+  for (Eigen::ArrayXd* a :
+       {&tE,         &tW,   &tN,      &tS,       &diagP,     &couE,  &couN,      &aOut,
+        &inCx,       &inCy, &squeeze, &capacity, &thetaPrev, &src,   &fluxScale, &fixedPressure,
+        &fixedTheta, &hT,   &dhTdh,   &eta,      &phiF,      &phiFs, &phiFp,     &p,
+        &theta}) {
+    a->setZero(n);
+  }
+  inIx.assign(n, 0);
+  inIy.assign(n, 0);
+  status.assign(n, kFull);
+  dry.assign(n, 0);
+}
+
+void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
+  resizeFor(grid);
+  model = pr.cavitation;
+  jfo = model == CavitationModel::MassConserving;
+  pCav = pr.cavitationPressure_Pa;
+
+  const double Ux = pr.slidingVelocity_mps.x();
+  const double Uy = pr.slidingVelocity_mps.y();
+  const bool slideY = std::abs(Uy) >= std::abs(Ux);
+  const bool perNodeEta = pr.viscosityPerNode_Pas.size() > 0;
+  const bool hasRate = pr.gapRate_mps.size() > 0;
+  const SmoothFlowFactors smooth;
+  const FlowFactorModel& ffm = pr.flowFactors ? *pr.flowFactors : smooth;
+  const Eigen::ArrayXd& area = grid.areaWeights_m2();
+  const Eigen::VectorXd& wx = grid.xWeights_m();
+  const Eigen::VectorXd& wy = grid.yWeights_m();
+
+  // Nodal conductances and Couette contents are only needed here: reuse face arrays as scratch
+  // (tW, tS, aOut, src are overwritten below).
+  Eigen::ArrayXd& Kx = tW;
+  Eigen::ArrayXd& Ky = tS;
+  Eigen::ArrayXd& Cx = aOut;
+  Eigen::ArrayXd& Cy = src;
+  for (int k = 0; k < n; ++k) {
+    const double h = pr.gap_m[k];
+    const NodeFlowFactors f = ffm.calcFactors(h);
+    const double mu = perNodeEta ? pr.viscosityPerNode_Pas[k] : pr.viscosity_Pas;
+    const double base = h * h * h / (12.0 * mu);
+    const double phiSlide = f.phiPressureSliding, phiCross = f.phiPressureCross;
+    Kx[k] = base * (slideY ? phiCross : phiSlide);
+    Ky[k] = base * (slideY ? phiSlide : phiCross);
+    Cx[k] = f.expectedGap_m + (slideY ? 0.0 : f.sigmaPhiS_m);
+    Cy[k] = f.expectedGap_m + (slideY ? f.sigmaPhiS_m : 0.0);
+    hT[k] = f.expectedGap_m;
+    dhTdh[k] = f.dExpectedGap_dh;
+    eta[k] = mu;
+    phiF[k] = f.phiF;
+    phiFs[k] = f.phiFs;
+    phiFp[k] = f.phiFp;
+  }
+
+  for (int j = 0; j < ny; ++j) {
+    const double dyN = grid.dyNorth_m(j);
+    for (int i = 0; i < nx; ++i) {
+      const int k = i + nx * j;
+      const int e = nbE[k];
+      if (e != k) {
+        const double dx = grid.dxEast_m(i);
+        tE[k] = 0.5 * (Kx[k] + Kx[e]) * wy[j] / dx;
+        couE[k] = 0.5 * Ux * 0.5 * (Cx[k] + Cx[e]) * wy[j];
+      } else {
+        tE[k] = 0.0;
+        couE[k] = 0.0;
+      }
+      const int no = nbN[k];
+      if (no != k) {
+        tN[k] = 0.5 * (Ky[k] + Ky[no]) * wx[i] / dyN;
+        couN[k] = 0.5 * Uy * 0.5 * (Cy[k] + Cy[no]) * wx[i];
+      } else {
+        tN[k] = 0.0;
+        couN[k] = 0.0;
+      }
+    }
+  }
+  // West / south transmissibilities and the upwind Couette coefficients.
+  for (int k = 0; k < n; ++k) {
+    const int w = nbW[k], s = nbS[k], e = nbE[k], no = nbN[k];
+    tW[k] = (w != k) ? tE[w] : 0.0;
+    tS[k] = (s != k) ? tN[s] : 0.0;
+    diagP[k] = tE[k] + tW[k] + tN[k] + tS[k];
+    double out = 0.0;
+    inCx[k] = 0.0;
+    inIx[k] = k;
+    if (Ux > 0.0) {
+      out += couE[k];
+      if (w != k) {
+        inCx[k] = couE[w];
+        inIx[k] = w;
+      }
+    } else if (Ux < 0.0) {
+      if (w != k)
+        out += -couE[w];
+      inCx[k] = -couE[k];
+      inIx[k] = e;
+    }
+    inCy[k] = 0.0;
+    inIy[k] = k;
+    if (Uy > 0.0) {
+      out += couN[k];
+      if (s != k) {
+        inCy[k] = couN[s];
+        inIy[k] = s;
+      }
+    } else if (Uy < 0.0) {
+      if (s != k)
+        out += -couN[s];
+      inCy[k] = -couN[k];
+      inIy[k] = no;
+    }
+    aOut[k] = out;
+  }
+
+  const bool transient = jfo && std::isfinite(pr.timeStep_s);
+  const bool hasPrev = pr.previousFillFraction.size() > 0;
+  for (int k = 0; k < n; ++k) {
+    const double rate = hasRate ? pr.gapRate_mps[k] : 0.0;
+    squeeze[k] = area[k] * dhTdh[k] * rate;
+    capacity[k] = transient ? area[k] * hT[k] / pr.timeStep_s : 0.0;
+    thetaPrev[k] = (jfo && hasPrev) ? pr.previousFillFraction[k] : 1.0;
+  }
+
+  // ---- fixed nodes: open edges, starved inlets, dry zones ----
+  std::fill(status.begin(), status.end(), static_cast<std::uint8_t>(kFull));
+  std::fill(dry.begin(), dry.end(), static_cast<std::uint8_t>(0));
+  fixedTheta.setOnes();
+  fixedPressure.setZero();
+  const FilmBoundary& b = pr.boundary;
+  // inflowCouette: full-film Couette flux through the node's face into the region (> 0 when
+  // surface 1 slides inwards); supplyFlux = U_n * supply * edge length of the node.
+  auto fixEdgeNode = [&](int k, const FilmEdge& edge, int along, double inflowCouette,
+                         double normalSpeed, double edgeLength) {
+    status[k] = kFixed;
+    fixedPressure[k] = edge.pressure_Pa;
+    fixedTheta[k] = 1.0;
+    dry[k] = 0;
+    if (!(normalSpeed > 0.0))
+      return;
+    const double s = edgeSupply(edge, along);
+    if (!std::isfinite(s))
+      return;
+    if (jfo) {
+      // Fill fraction that makes the Couette inflow exactly U_n * supply per edge length.
+      const double supplyFlux = normalSpeed * s * edgeLength;
+      const double th = inflowCouette > supplyFlux ? supplyFlux / inflowCouette : 1.0;
+      fixedTheta[k] = th;
+      if (th < 1.0)
+        fixedPressure[k] = pCav;
+    } else if (pr.gap_m[k] > 2.0 * s) {
+      dry[k] = 1;
+    }
+  };
+  // y edges first, then x edges so that corners take the x edge (FilmBoundary comment).
+  for (int i = 0; i < nx; ++i) {
+    const int kb = i, kt = i + nx * (ny - 1);
+    fixEdgeNode(kb, b.yMin, i, couN[kb], Uy, wx[i]);
+    fixEdgeNode(kt, b.yMax, i, -couN[nbS[kt]], -Uy, wx[i]);
+  }
+  if (!periodicX) {
+    for (int j = 0; j < ny; ++j) {
+      const int kl = nx * j, kr = nx - 1 + nx * j;
+      fixEdgeNode(kl, b.xMin, j, couE[kl], Ux, wy[j]);
+      fixEdgeNode(kr, b.xMax, j, -couE[nbW[kr]], -Ux, wy[j]);
+    }
+  }
+  // Partial-flooding heuristic of the non-conservative models: march inwards from a starved
+  // inflow edge until the gap can be filled by the supply.
+  if (!jfo) {
+    auto march = [&](const FilmEdge& edge, int along, int start, int step, int count) {
+      const double s = edgeSupply(edge, along);
+      if (!std::isfinite(s))
+        return;
+      for (int m = 0, k = start; m < count; ++m, k += step) {
+        if (!(pr.gap_m[k] > 2.0 * s))
+          break;
+        if (status[k] != kFixed) {
+          status[k] = kFixed;
+          fixedPressure[k] = edge.pressure_Pa;
+        }
+        dry[k] = 1;
+      }
+    };
+    if (Uy > 0.0)
+      for (int i = 0; i < nx; ++i)
+        march(b.yMin, i, i, nx, ny);
+    if (Uy < 0.0)
+      for (int i = 0; i < nx; ++i)
+        march(b.yMax, i, i + nx * (ny - 1), -nx, ny);
+    if (!periodicX && Ux > 0.0)
+      for (int j = 0; j < ny; ++j)
+        march(b.xMin, j, nx * j, 1, nx);
+    if (!periodicX && Ux < 0.0)
+      for (int j = 0; j < ny; ++j)
+        march(b.xMax, j, nx - 1 + nx * j, -1, nx);
+  }
+
+  // Pressure spread that drives Poiseuille flux through the faces (residual scale).
+  double pMin = std::numeric_limits<double>::infinity(), pMax = -pMin;
+  if (model != CavitationModel::None)
+    pMin = pMax = pCav;
+  freeCount = 0;
+  for (int k = 0; k < n; ++k) {
+    if (status[k] == kFixed) {
+      pMin = std::min(pMin, fixedPressure[k]);
+      pMax = std::max(pMax, fixedPressure[k]);
+    } else {
+      ++freeCount;
+    }
+  }
+  const double span = (pMax > pMin) ? pMax - pMin : 0.0;
+
+  residualScale = 0.0;
+  for (int k = 0; k < n; ++k) {
+    // Reynolds-mode constant part (theta = 1 everywhere).
+    src[k] = aOut[k] - inCx[k] - inCy[k] + squeeze[k];
+    fluxScale[k] = aOut[k] + std::abs(inCx[k]) + std::abs(inCy[k]) + std::abs(squeeze[k]) +
+                   capacity[k] + diagP[k] * span;
+    if (status[k] != kFixed)
+      residualScale = std::max(residualScale, fluxScale[k]);
+  }
+  if (!(residualScale > 0.0))
+    residualScale = 1.0;
+
+  // Sweep order for Gauss-Seidel: lexicographic, following the sliding direction.
+  order.clear();
+  const bool up = Uy >= 0.0, right = Ux >= 0.0;
+  for (int jj = 0; jj < ny; ++jj) {
+    const int j = up ? jj : ny - 1 - jj;
+    for (int ii = 0; ii < nx; ++ii) {
+      const int i = right ? ii : nx - 1 - ii;
+      const int k = i + nx * j;
+      if (status[k] != kFixed)
+        order.push_back(k);
+    }
+  }
+}
+
+double FilmSystem::relativeResidual() const {
+  double worst = 0.0;
+  const bool reynolds = model == CavitationModel::Reynolds;
+  for (int k = 0; k < n; ++k) {
+    if (status[k] == kFixed)
+      continue;
+    const double r = residualAt(k);
+    const double v = (reynolds && p[k] <= pCav) ? std::max(0.0, -r) : std::abs(r);
+    worst = std::max(worst, v);
+  }
+  return worst / residualScale;
+}
+
+void FilmSystem::fluxDiagnostics(double& inflow, double& outflow, double& storage) const {
+  inflow = outflow = storage = 0.0;
+  auto add = [&](double out) {
+    if (out >= 0.0)
+      outflow += out;
+    else
+      inflow -= out;
+  };
+  for (int k = 0; k < n; ++k) {
+    if (status[k] == kFixed)
+      continue;
+    storage += theta[k] * (squeeze[k] + capacity[k]) - capacity[k] * thetaPrev[k];
+    const int e = nbE[k], w = nbW[k], no = nbN[k], s = nbS[k];
+    if (e != k && status[e] == kFixed)
+      add(tE[k] * (p[k] - p[e]) + couE[k] * (couE[k] >= 0.0 ? theta[k] : theta[e]));
+    if (w != k && status[w] == kFixed)
+      add(tW[k] * (p[k] - p[w]) - couE[w] * (couE[w] >= 0.0 ? theta[w] : theta[k]));
+    if (no != k && status[no] == kFixed)
+      add(tN[k] * (p[k] - p[no]) + couN[k] * (couN[k] >= 0.0 ? theta[k] : theta[no]));
+    if (s != k && status[s] == kFixed)
+      add(tS[k] * (p[k] - p[s]) - couN[s] * (couN[s] >= 0.0 ? theta[s] : theta[k]));
+  }
+}
+
+}  // namespace pistondyn::lubrication::detail

@@ -1,0 +1,80 @@
+#pragma once
+// Internal: the discrete film balance shared by the reference and the fast solver, so that
+// both solve exactly the same equations (FilmProblem.h, "Discrete equation"). Not installed.
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "pistondyn/lubrication/FilmGrid.h"
+#include "pistondyn/lubrication/FilmProblem.h"
+
+namespace pistondyn::lubrication::detail {
+
+// Role of a node in a solve.
+enum NodeStatus : std::uint8_t {
+  kFixed = 0,  // prescribed pressure (open edge, starved edge, dry inlet zone)
+  kFull = 1,   // unknown pressure, full film (theta = 1)
+  kCav = 2,    // at the cavitation pressure; JFO: unknown fill fraction
+};
+
+struct FilmSystem {
+  // ---- shape (depends on the grid only) ----
+  int nx = 0, ny = 0, n = 0;
+  bool periodicX = false;
+  // Neighbours; a missing neighbour is the node itself with a zero coefficient (branch-free).
+  std::vector<int> nbE, nbW, nbN, nbS;
+  // Gauss-Seidel sweep order (follows the sliding direction) and the free-node list.
+  std::vector<int> order;
+
+  // ---- per-solve coefficients ----
+  CavitationModel model = CavitationModel::Reynolds;
+  bool jfo = false;
+  double pCav = 0.0;
+  Eigen::ArrayXd tE, tW, tN, tS;  // face transmissibilities K L / d, [m^3 / (Pa s)]
+  Eigen::ArrayXd diagP;           // tE + tW + tN + tS
+  Eigen::ArrayXd couE, couN;    // signed full-film Couette flux through east / north face, [m^3/s]
+  Eigen::ArrayXd aOut;          // sum of |Couette| through faces where the node is upwind
+  Eigen::ArrayXd inCx, inCy;    // Couette inflow coefficient from the upwind x / y neighbour
+  std::vector<int> inIx, inIy;  // index of that upwind neighbour
+  Eigen::ArrayXd squeeze;       // A dhT/dt, [m^3/s]
+  Eigen::ArrayXd capacity;      // A hT / dt, [m^3/s] (0 when steady or not JFO)
+  Eigen::ArrayXd thetaPrev;     // fill fraction at the start of the step (JFO)
+  Eigen::ArrayXd src;           // Reynolds-mode constant part: aOut - inflow(theta=1) + squeeze
+  Eigen::ArrayXd fluxScale;     // per node scale of the driving fluxes (residual norm)
+  double residualScale = 1.0;   // F of the residual definition
+
+  std::vector<std::uint8_t> status;  // NodeStatus per node
+  std::vector<std::uint8_t> dry;     // 1: dry node of the Reynolds partial-flooding heuristic
+  Eigen::ArrayXd fixedPressure;      // pressure of fixed nodes
+  Eigen::ArrayXd fixedTheta;         // fill fraction of fixed nodes (JFO inflow content)
+
+  // Nodal quantities kept for post-processing.
+  Eigen::ArrayXd hT, dhTdh, eta, phiF, phiFs, phiFp;
+  int freeCount = 0;
+
+  // ---- current iterate ----
+  Eigen::ArrayXd p, theta;
+
+  void resizeFor(const FilmGrid& grid);  // allocates only when the shape changes
+
+  // Assembles all coefficients for the problem; classifies fixed nodes. Validated input only.
+  void assemble(const FilmGrid& grid, const FilmProblem& problem);
+
+  // Net outflow R_k of node k at the current iterate (FilmProblem.h).
+  double residualAt(int k) const {
+    const double P = diagP[k] * p[k] - (tE[k] * p[nbE[k]] + tW[k] * p[nbW[k]] + tN[k] * p[nbN[k]] +
+                                        tS[k] * p[nbS[k]]);
+    const double in = inCx[k] * theta[inIx[k]] + inCy[k] * theta[inIy[k]];
+    return P + theta[k] * (aOut[k] + squeeze[k] + capacity[k]) - in - capacity[k] * thetaPrev[k];
+  }
+
+  // Relative residual of the current iterate (definition in FilmProblem.h).
+  double relativeResidual() const;
+
+  // Boundary flux and storage diagnostics at the current iterate.
+  void fluxDiagnostics(double& inflow, double& outflow, double& storage) const;
+};
+
+}  // namespace pistondyn::lubrication::detail

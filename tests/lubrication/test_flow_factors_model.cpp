@@ -21,8 +21,8 @@ namespace {
 
 PatirChengParameters skirtAndLiner() {
   PatirChengParameters p;
-  p.rq1_m = 0.3e-6;  // skirt
-  p.rq2_m = 0.4e-6;  // liner; sigma = 0.5 um, Vr1 = 0.36, Vr2 = 0.64
+  p.rq1_m = 0.3e-6;  // surface 1: the liner (moves at U relative to the grid)
+  p.rq2_m = 0.4e-6;  // surface 2: the skirt (carries the grid); sigma = 0.5 um, Vr1 = 0.36, Vr2 = 0.64
   return p;
 }
 

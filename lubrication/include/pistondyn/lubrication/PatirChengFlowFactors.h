@@ -2,9 +2,12 @@
 // Patir & Cheng flow-factor model for two rough surfaces: the FlowFactorModel a film
 // solver uses for the average Reynolds equation and for the mean shear stress.
 //
-// Surface 1 is the surface that moves with the relative sliding velocity U with respect
-// to surface 2 (FlowFactorModel.h); for the skirt-liner film that is the piston skirt,
-// surface 2 the liner. Only the shear flow factor and phi_fs depend on which surface is
+// Surface 1 is the surface that moves with the sliding velocity U given to the film
+// solver, relative to surface 2 (FlowFactorModel.h, FilmProblem.h). The film solver's
+// grid is attached to surface 2: for the skirt-liner film with the grid on the skirt
+// (pistondyn's choice) surface 1 is the LINER and surface 2 the SKIRT; for a journal
+// bearing with the grid on the shell, surface 1 is the journal. Only the shear flow
+// factor and phi_fs depend on which surface is
 // which: Phi_s = Vr1 Phi_s(H, gamma1) - Vr2 Phi_s(H, gamma2) with the variance ratios
 // Vr_i = Rq_i^2 / sigma^2 (Patir & Cheng 1979), and the same for phi_fs. Swapping the
 // surfaces flips their sign.
@@ -21,8 +24,8 @@
 namespace pistondyn::lubrication {
 
 struct PatirChengParameters {
-  double rq1_m = 0.0;  // RMS roughness Rq of surface 1 (moving: skirt) [m], >= 0, default 0
-  double rq2_m = 0.0;  // RMS roughness Rq of surface 2 (stationary: liner) [m], >= 0, default 0
+  double rq1_m = 0.0;  // RMS roughness Rq of surface 1 (moving at U: the liner) [m], >= 0
+  double rq2_m = 0.0;  // RMS roughness Rq of surface 2 (carries the grid: the skirt) [m], >= 0
   // Peklenik number gamma = lambda_sliding / lambda_cross of each surface [-], > 0,
   // default 1 (isotropic). Used for Phi_s and phi_fs.
   double peklenik1 = 1.0;

@@ -18,13 +18,13 @@ constexpr double kPi = 3.14159265358979323846;
 
 pc::GreenwoodTrippParameters publishedSet() {
   // ηβσ = 0.04 and σ/β = 0.001: the roughness set of many ring-pack papers (the one the
-  // issue names). Materials: aluminium skirt E = 75 GPa, ν = 0.33 on a cast-iron liner
-  // E = 115 GPa, ν = 0.26; Rq 0.4 µm and 0.3 µm.
+  // issue names). Surface 1 = cast-iron liner E = 115 GPa, ν = 0.26, Rq 0.3 µm; surface 2 =
+  // aluminium skirt E = 75 GPa, ν = 0.33, Rq 0.4 µm (SurfacePair.h; the law is symmetric).
   pc::GreenwoodTrippParameters p;
-  p.roughnessSurface1_m = 0.4e-6;
-  p.roughnessSurface2_m = 0.3e-6;
-  p.surface1 = {75.0e9, 0.33};
-  p.surface2 = {115.0e9, 0.26};
+  p.roughnessSurface1_m = 0.3e-6;
+  p.roughnessSurface2_m = 0.4e-6;
+  p.surface1 = {115.0e9, 0.26};
+  p.surface2 = {75.0e9, 0.33};
   p.roughnessParameter = 0.04;
   p.sigmaOverBeta = 0.001;
   return p;

@@ -6,11 +6,23 @@
 //   Algebraic (default):  τ = −f · p · v / √(|v|² + v_ε²)
 //   Tanh:                 τ = −f · p · tanh(|v|/v_ε) · v/|v|      (= −f·p·v/v_ε at v = 0)
 //
-// v is the 2-D sliding velocity of surface 1 relative to surface 2 in the surface's tangent
-// plane (axial and circumferential on a skirt); τ is the shear stress on surface 1 (the
-// liner feels −τ). Both forms are C∞, vanish at v = 0, never exceed f·p in magnitude, and
-// reach 71 % (algebraic) or 76 % (tanh) of f·p at |v| = v_ε and 99.5 % at 10 v_ε (algebraic;
-// tanh: 100 % to 1e-8). The friction power τ·v = −f·p·|v|·g(|v|) is ≤ 0 at every instant, so
+// Contract (independent of which surface is called "1"):
+//   v  is the 2-D velocity of the surface that RECEIVES τ relative to the other surface,
+//      in the common tangent plane (axial and circumferential on a skirt);
+//   τ  is the shear stress on that receiving surface; it opposes v;
+//   the other surface feels −τ (its own velocity relative to the first is −v, and τ is odd
+//   in v, so calling with −v gives −τ: both ends agree).
+// Skirt–liner with the film solver's convention (FilmProblem.h, SurfacePair.h: surface 1 =
+// liner moves with U relative to surface 2 = skirt, which carries the grid):
+//   stress on the skirt  τ_skirt = calcShearStress_Pa(p, −U)   (skirt relative to liner)
+//   stress on the liner  τ_liner = calcShearStress_Pa(p, +U) = −τ_skirt
+// τ_skirt points along U: the liner drags the skirt, like the film's Couette shear on
+// surface 2 (FilmResult::shearOnSurface2); tests/contact_forces/test_surface_convention.cpp
+// checks both against a film solve.
+//
+// Both forms are C∞, vanish at v = 0, never exceed f·p in magnitude, and reach 71 %
+// (algebraic) or 76 % (tanh) of f·p at |v| = v_ε and 99.5 % at 10 v_ε (algebraic; tanh:
+// 100 % to 1e-8). The friction power τ·v = −f·p·|v|·g(|v|) is ≤ 0 at every instant, so
 // friction never does positive work. The same formulas with a normal force [N] in place of
 // p give a force [N].
 //
@@ -43,10 +55,11 @@ class BoundaryFriction {
   // Effective coefficient f·g(|v|) ∈ [0, f) at sliding speed |v| [m/s] ≥ 0 [-].
   double calcEffectiveCoefficient(double slidingSpeed_mps) const;
 
-  // Shear stress on surface 1.
+  // Shear stress on the surface that moves with v relative to the other one.
   // Inputs:  contactPressure_Pa  p_c ≥ 0 [Pa] (or a normal force ≥ 0 [N])
-  //          slidingVelocity_mps v of surface 1 relative to surface 2 [m/s], finite
-  // Outputs: τ [Pa] (or [N]), opposing v
+  //          slidingVelocity_mps v of the receiving surface relative to the other [m/s],
+  //                              finite (e.g. −U for the skirt, U the film's liner velocity)
+  // Outputs: τ [Pa] (or [N]) on the receiving surface, opposing v; the other feels −τ
   Eigen::Vector2d calcShearStress_Pa(double contactPressure_Pa,
                                      const Eigen::Vector2d& slidingVelocity_mps) const;
 

@@ -35,11 +35,13 @@ enum class TailIntegralModel {
   PolynomialFit,  // polynomialF52 / polynomialF2 below
 };
 
+// Surface 1 is the LINER, surface 2 the SKIRT (SurfacePair.h; the convention of the film
+// solver and of PatirChengParameters, whose rq1_m / rq2_m take the same two values).
 struct GreenwoodTrippParameters {
-  double roughnessSurface1_m = 0.4e-6;          // RMS roughness Rq of surface 1 (skirt) [m], ≥ 0
-  double roughnessSurface2_m = 0.3e-6;          // RMS roughness Rq of surface 2 (liner) [m], ≥ 0
-  ElasticMaterial surface1 = kPistonAluminium;  // E [Pa], ν [-] of surface 1; 75 GPa, 0.33
-  ElasticMaterial surface2 = kCastIronLiner;    // E [Pa], ν [-] of surface 2; 115 GPa, 0.26
+  double roughnessSurface1_m = 0.3e-6;          // Rq of surface 1, the liner [m], ≥ 0; 0.3 µm
+  double roughnessSurface2_m = 0.4e-6;          // Rq of surface 2, the skirt [m], ≥ 0; 0.4 µm
+  ElasticMaterial surface1 = kCastIronLiner;    // E [Pa], ν [-] of the liner; 115 GPa, 0.26
+  ElasticMaterial surface2 = kPistonAluminium;  // E [Pa], ν [-] of the skirt; 75 GPa, 0.33
   double roughnessParameter = 0.04;             // ηβσ [-], > 0; 0.04 as in many ring-pack papers
   double sigmaOverBeta = 0.001;                 // σ/β [-], > 0; 0.001 as in many ring-pack papers
   TailIntegralModel tailModel = TailIntegralModel::Exact;  // default exact integrals

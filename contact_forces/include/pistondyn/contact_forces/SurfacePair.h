@@ -1,7 +1,20 @@
 #pragma once
-// Properties of the two surfaces in contact (surface 1 = piston skirt, surface 2 = liner,
-// by the project's habit; the formulas are symmetric) and the composite quantities the
-// contact laws use.
+// Properties of the two surfaces in contact and the composite quantities the contact laws
+// use.
+//
+// Which surface is "1": the project-wide convention of lubrication/ (FlowFactorModel.h,
+// FilmProblem.h, PatirChengFlowFactors.h). The film and contact grids are attached to
+// surface 2, the piston SKIRT; surface 1, the cylinder LINER, moves with the sliding
+// velocity U relative to it. So in every "surface 1 / surface 2" pair of parameters:
+//   surface 1 = liner  (GreenwoodTrippParameters::roughnessSurface1_m, ::surface1;
+//                       PatirChengParameters::rq1_m, ::peklenik1)
+//   surface 2 = skirt  (GreenwoodTrippParameters::roughnessSurface2_m, ::surface2;
+//                       PatirChengParameters::rq2_m, ::peklenik2)
+// The asperity-contact formulas here are symmetric in the two surfaces, so the label changes
+// no contact pressure; it matters where the two modules meet (one Rq pair entered for both,
+// the composite σ = √(Rq1² + Rq2²) is then the same in both) and for the Patir & Cheng shear
+// terms, whose sign follows which surface moves. Friction signs do not depend on the labels:
+// BoundaryFriction.h states its contract in terms of the surface that receives the stress.
 //
 // Two conventions for the composite modulus are in use, and they differ by a factor 2:
 //   E*  = 1 / [ (1−ν1²)/E1 + (1−ν2²)/E2 ]   the Hertz reduced modulus (Johnson, Contact
@@ -24,9 +37,9 @@ struct ElasticMaterial {
 };
 
 // Typical materials (for defaults and examples; use your own data).
-// Piston aluminium–silicon alloy near skirt operating temperature.
+// Piston aluminium–silicon alloy near skirt operating temperature (surface 2).
 inline constexpr ElasticMaterial kPistonAluminium{75.0e9, 0.33};
-// Grey cast-iron liner.
+// Grey cast-iron liner (surface 1).
 inline constexpr ElasticMaterial kCastIronLiner{115.0e9, 0.26};
 
 // Composite RMS roughness σ = √(Rq1² + Rq2²).

@@ -1,5 +1,6 @@
 #include "pistondyn/contact_forces/BoundaryFriction.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -41,17 +42,62 @@ BoundaryFriction::BoundaryFriction(const BoundaryFrictionParameters& parameters)
   }
 }
 
-double BoundaryFriction::weightPerVelocity(double speed) const {
+// |v| and v/|v| without overflow or underflow: the components are scaled by the larger
+// magnitude first, so the square root sees a number in [1, 2]. |v| may still be +inf for
+// |v| > DBL_MAX (every formula below takes that limit correctly); unit = 0 for v = 0.
+BoundaryFriction::SpeedAndDirection BoundaryFriction::splitVelocity(double vx, double vy) {
+  const double m = std::max(std::fabs(vx), std::fabs(vy));
+  if (m == 0.0) {
+    return {0.0, 0.0, 0.0};
+  }
+  const double ax = vx / m;
+  const double ay = vy / m;
+  const double norm = std::sqrt(ax * ax + ay * ay);
+  return {m * norm, ax / norm, ay / norm};
+}
+
+// g(s) = effective coefficient / f ∈ [0, 1): s/√(s² + v_ε²) or tanh(s/v_ε). The algebraic
+// form is evaluated on the side of x = s/v_ε where neither x² nor (1/x)² can overflow:
+// s = 1e200 gives 1 (not 0 from s² = inf), s = 1e-200 gives s/v_ε (not 0).
+double BoundaryFriction::fraction(double speed) const {
   const double vEps = parameters_.regularisationSpeed_mps;
-  if (parameters_.regularisation == FrictionRegularisation::Algebraic) {
-    return 1.0 / std::sqrt(speed * speed + vEps * vEps);
-  }
   const double x = speed / vEps;
-  if (x < 1e-3) {  // tanh(x)/x = 1 − x²/3 + 2x⁴/15 − …; truncation error < 1e-18
-    const double x2 = x * x;
-    return (1.0 - x2 / 3.0 + 2.0 * x2 * x2 / 15.0) / vEps;
+  if (parameters_.regularisation == FrictionRegularisation::Tanh) {
+    return std::tanh(x);
   }
-  return std::tanh(x) / speed;
+  if (x <= 1.0) {
+    return x / std::sqrt(1.0 + x * x);
+  }
+  const double r = vEps / speed;  // < 1
+  return 1.0 / std::sqrt(1.0 + r * r);
+}
+
+// g(s)/s [s/m] (finite at s = 0, where it is 1/v_ε) and g'(s) [s/m].
+void BoundaryFriction::fractionOverSpeedAndSlope(double speed, double& overSpeed,
+                                                 double& slope) const {
+  const double vEps = parameters_.regularisationSpeed_mps;
+  const double x = speed / vEps;
+  if (parameters_.regularisation == FrictionRegularisation::Tanh) {
+    if (x < 1e-3) {  // tanh(x)/x = 1 − x²/3 + 2x⁴/15 − …; truncation error < 1e-18
+      const double x2 = x * x;
+      overSpeed = (1.0 - x2 / 3.0 + 2.0 * x2 * x2 / 15.0) / vEps;
+    } else {
+      overSpeed = std::tanh(x) / speed;
+    }
+    const double sech = 1.0 / std::cosh(x);  // cosh(x) = inf for large x: sech = 0
+    slope = sech * sech / vEps;
+    return;
+  }
+  if (x <= 1.0) {
+    const double q = 1.0 / std::sqrt(1.0 + x * x);
+    overSpeed = q / vEps;      // 1/√(s² + v_ε²)
+    slope = q * q * q / vEps;  // v_ε²/(s² + v_ε²)^{3/2}
+  } else {
+    const double r = vEps / speed;
+    const double q = 1.0 / std::sqrt(1.0 + r * r);
+    overSpeed = q / speed;
+    slope = r * r * r * q * q * q / vEps;
+  }
 }
 
 double BoundaryFriction::calcEffectiveCoefficient(double slidingSpeed_mps) const {
@@ -59,45 +105,34 @@ double BoundaryFriction::calcEffectiveCoefficient(double slidingSpeed_mps) const
     detail::throwInvalid("BoundaryFriction::calcEffectiveCoefficient", "slidingSpeed_mps",
                          slidingSpeed_mps, "m/s", "non-negative and finite");
   }
-  return parameters_.frictionCoefficient * weightPerVelocity(slidingSpeed_mps) * slidingSpeed_mps;
+  return parameters_.frictionCoefficient * fraction(slidingSpeed_mps);
 }
 
 Eigen::Vector2d BoundaryFriction::calcShearStress_Pa(
     double contactPressure_Pa, const Eigen::Vector2d& slidingVelocity_mps) const {
   requirePressure(contactPressure_Pa, "calcShearStress_Pa");
   requireFiniteVelocity(slidingVelocity_mps, "calcShearStress_Pa");
-  const double w = weightPerVelocity(slidingVelocity_mps.norm());
-  return (-parameters_.frictionCoefficient * contactPressure_Pa * w) * slidingVelocity_mps;
+  const SpeedAndDirection v = splitVelocity(slidingVelocity_mps.x(), slidingVelocity_mps.y());
+  const double magnitude =
+      -parameters_.frictionCoefficient * contactPressure_Pa * fraction(v.speed);
+  return {magnitude * v.unitX, magnitude * v.unitY};
 }
 
 Eigen::Matrix2d BoundaryFriction::calcShearStressVelocityJacobian(
     double contactPressure_Pa, const Eigen::Vector2d& slidingVelocity_mps) const {
   requirePressure(contactPressure_Pa, "calcShearStressVelocityJacobian");
   requireFiniteVelocity(slidingVelocity_mps, "calcShearStressVelocityJacobian");
-  // τ = −f p w(s) v, s = |v|  ⇒  ∂τ/∂v = −f p [ w I + (w'(s)/s) v vᵀ ].
-  const Eigen::Vector2d& v = slidingVelocity_mps;
-  const double speed = v.norm();
-  const double vEps = parameters_.regularisationSpeed_mps;
-  const double w = weightPerVelocity(speed);
-  double dwOverS = 0.0;  // w'(s)/s
-  if (parameters_.regularisation == FrictionRegularisation::Algebraic) {
-    dwOverS = -w * w * w;  // w = (s² + ε²)^(−1/2)
-  } else {
-    // w = h(x)/ε, x = s/ε, h = tanh(x)/x  ⇒  w'(s)/s = (h'(x)/x)/ε³,
-    // h'(x)/x = (sech²x − h(x))/x², by its series below x = 0.01 to avoid cancellation.
-    const double x = speed / vEps;
-    double hPrimeOverX;
-    if (x < 1e-2) {
-      const double x2 = x * x;
-      hPrimeOverX = -2.0 / 3.0 + 8.0 / 15.0 * x2 - 34.0 / 105.0 * x2 * x2;
-    } else {
-      const double sech = 1.0 / std::cosh(x);
-      hPrimeOverX = (sech * sech - std::tanh(x) / x) / (x * x);
-    }
-    dwOverS = hPrimeOverX / (vEps * vEps * vEps);
-  }
+  // τ = −f p g(s) e, s = |v|, e = v/s  ⇒  ∂τ/∂v = −f p [ g'(s) e eᵀ + (g(s)/s)(I − e eᵀ) ]
+  // (along v the slope of g, across it the turning of the direction). At s = 0, e = 0 and
+  // g/s = g'(0) = 1/v_ε. No term overflows or cancels for any finite v.
+  const SpeedAndDirection v = splitVelocity(slidingVelocity_mps.x(), slidingVelocity_mps.y());
+  double overSpeed = 0.0;
+  double slope = 0.0;
+  fractionOverSpeedAndSlope(v.speed, overSpeed, slope);
+  const Eigen::Vector2d e(v.unitX, v.unitY);
+  const Eigen::Matrix2d along = e * e.transpose();
   const double scale = -parameters_.frictionCoefficient * contactPressure_Pa;
-  return scale * (w * Eigen::Matrix2d::Identity() + dwOverS * v * v.transpose());
+  return scale * (slope * along + overSpeed * (Eigen::Matrix2d::Identity() - along));
 }
 
 void BoundaryFriction::calcShearStressField(
@@ -137,13 +172,40 @@ void BoundaryFriction::calcShearStressField(
   const double f = parameters_.frictionCoefficient;
   for (Eigen::Index j = 0; j < cols; ++j) {
     for (Eigen::Index i = 0; i < rows; ++i) {
-      const double vx = slidingVelocityX_mps(i, j);
-      const double vy = slidingVelocityY_mps(i, j);
-      const double scale = -f * contactPressure_Pa(i, j) * weightPerVelocity(std::hypot(vx, vy));
-      shearStressX_Pa(i, j) = scale * vx;
-      shearStressY_Pa(i, j) = scale * vy;
+      const SpeedAndDirection v =
+          splitVelocity(slidingVelocityX_mps(i, j), slidingVelocityY_mps(i, j));
+      const double magnitude = -f * contactPressure_Pa(i, j) * fraction(v.speed);
+      shearStressX_Pa(i, j) = magnitude * v.unitX;
+      shearStressY_Pa(i, j) = magnitude * v.unitY;
     }
   }
+}
+
+void BoundaryFriction::calcShearStressField(
+    const Eigen::Ref<const Eigen::ArrayXXd>& contactPressure_Pa,
+    const Eigen::Vector2d& slidingVelocity_mps, Eigen::ArrayXXd& shearStressX_Pa,
+    Eigen::ArrayXXd& shearStressY_Pa) const {
+  const char* fn = "BoundaryFriction::calcShearStressField";
+  requireFiniteVelocity(slidingVelocity_mps, "calcShearStressField");
+  const Eigen::Index rows = contactPressure_Pa.rows();
+  const Eigen::Index cols = contactPressure_Pa.cols();
+  for (Eigen::Index j = 0; j < cols; ++j) {
+    for (Eigen::Index i = 0; i < rows; ++i) {
+      const double p = contactPressure_Pa(i, j);
+      if (!(p >= 0.0) || !std::isfinite(p)) {
+        detail::throwInvalid(
+            fn, "contactPressure_Pa(" + std::to_string(i) + ", " + std::to_string(j) + ")", p, "Pa",
+            "non-negative and finite");
+      }
+    }
+  }
+  // One speed, one coefficient, one direction for the whole field.
+  const SpeedAndDirection v = splitVelocity(slidingVelocity_mps.x(), slidingVelocity_mps.y());
+  const double magnitude = -parameters_.frictionCoefficient * fraction(v.speed);
+  shearStressX_Pa.resize(rows, cols);
+  shearStressY_Pa.resize(rows, cols);
+  shearStressX_Pa = (magnitude * v.unitX) * contactPressure_Pa;
+  shearStressY_Pa = (magnitude * v.unitY) * contactPressure_Pa;
 }
 
 }  // namespace pistondyn::contact

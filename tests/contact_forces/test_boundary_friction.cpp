@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
 #include "pistondyn/contact_forces/BoundaryFriction.h"
 
@@ -141,5 +142,74 @@ TEST(BoundaryFriction, FieldMatchesScalarCalls) {
       EXPECT_NEAR(tx(i, j), tau.x(), 1e-12 * p(i, j));
       EXPECT_NEAR(ty(i, j), tau.y(), 1e-12 * p(i, j));
     }
+  }
+}
+
+// Extreme but finite speeds (reference: the limits of the formulas, written here). For
+// |v| ≫ v_ε, τ = −f·p·v/|v| and ∂τ/∂v = −f·p/|v|·(I − e eᵀ) (e = v/|v|; the slope along v
+// is (v_ε/|v|)³/v_ε or sech², both below 1e-300 here); for |v| ≪ v_ε, τ = −f·p·v/v_ε.
+// Before the robust form, |v|² overflowed from |v| ≈ 1e154 and τ came out as exactly 0.
+TEST(BoundaryFriction, ExtremeFiniteSpeedsGiveTheirLimits) {
+  const double f = 0.1, p = 2e6;
+  const Eigen::Vector2d e(0.6, -0.8);
+  for (auto kind : kBoth) {
+    const pc::BoundaryFriction friction = makeFriction(kind);
+    for (double speed : {1e154, 1e160, 1e200, 1e300, 1.7e308}) {
+      const Eigen::Vector2d v = speed * e;
+      const Eigen::Vector2d tau = friction.calcShearStress_Pa(p, v);
+      EXPECT_LE((tau + f * p * e).norm(), 1e-15 * f * p) << "speed " << speed;
+      EXPECT_NEAR(friction.calcEffectiveCoefficient(speed), f, 1e-17);
+      const Eigen::Matrix2d expected =
+          (-f * p / speed) * (Eigen::Matrix2d::Identity() - e * e.transpose());
+      const Eigen::Matrix2d jacobian = friction.calcShearStressVelocityJacobian(p, v);
+      EXPECT_LE((jacobian - expected).norm(), 1e-14 * expected.norm()) << "speed " << speed;
+      // Field paths, per-node and uniform velocity.
+      Eigen::ArrayXXd pf = Eigen::ArrayXXd::Constant(2, 1, p), vx(2, 1), vy(2, 1), tx, ty;
+      vx.setConstant(v.x());
+      vy.setConstant(v.y());
+      friction.calcShearStressField(pf, vx, vy, tx, ty);
+      EXPECT_NEAR(tx(1, 0), -f * p * e.x(), 1e-15 * f * p);
+      EXPECT_NEAR(ty(1, 0), -f * p * e.y(), 1e-15 * f * p);
+      friction.calcShearStressField(pf, v, tx, ty);
+      EXPECT_NEAR(tx(0, 0), -f * p * e.x(), 1e-15 * f * p);
+      EXPECT_NEAR(ty(0, 0), -f * p * e.y(), 1e-15 * f * p);
+    }
+    for (double speed : {1e-200, 1e-300, 4.9e-324}) {
+      const Eigen::Vector2d v = speed * e;
+      const Eigen::Vector2d tau = friction.calcShearStress_Pa(p, v);
+      const Eigen::Vector2d expected = (-f * p / 1e-3) * v;
+      EXPECT_LE((tau - expected).norm(), 1e-12 * expected.norm() + 1e-300) << "speed " << speed;
+      const Eigen::Matrix2d jacobian = friction.calcShearStressVelocityJacobian(p, v);
+      EXPECT_LE((jacobian + (f * p / 1e-3) * Eigen::Matrix2d::Identity()).norm(),
+                1e-12 * f * p / 1e-3);
+    }
+  }
+}
+
+// One sliding velocity for a whole field equals the per-node call at every node (reference:
+// the scalar call), including v = 0 and a purely axial speed.
+TEST(BoundaryFriction, UniformVelocityFieldMatchesScalarCalls) {
+  for (auto kind : kBoth) {
+    const pc::BoundaryFriction friction = makeFriction(kind);
+    Eigen::ArrayXXd p(5, 4), tx, ty;
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 5; ++i)
+        p(i, j) = 1e5 * (i + 2 * j);  // includes p = 0
+    for (const Eigen::Vector2d& v : {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(0.0, -7.5),
+                                     Eigen::Vector2d(3e-4, 1e-3), Eigen::Vector2d(-2.0, 0.5)}) {
+      friction.calcShearStressField(p, v, tx, ty);
+      ASSERT_EQ(tx.rows(), 5);
+      ASSERT_EQ(ty.cols(), 4);
+      for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 5; ++i) {
+          const Eigen::Vector2d tau = friction.calcShearStress_Pa(p(i, j), v);
+          EXPECT_NEAR(tx(i, j), tau.x(), 1e-15 * (1.0 + p(i, j)));
+          EXPECT_NEAR(ty(i, j), tau.y(), 1e-15 * (1.0 + p(i, j)));
+        }
+    }
+    Eigen::ArrayXXd bad = p;
+    bad(3, 2) = -1.0;
+    EXPECT_THROW(friction.calcShearStressField(bad, Eigen::Vector2d(1.0, 0.0), tx, ty),
+                 std::invalid_argument);
   }
 }

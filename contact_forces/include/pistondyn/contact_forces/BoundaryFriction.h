@@ -29,6 +29,19 @@
 // v_ε should be well below the sliding speeds of interest (piston speeds are m/s; near the
 // dead centres the speed passes through zero within ~1e-3 s) and large enough that the
 // integrator resolves the ramp: 1e-3 m/s by default.
+//
+// Integrator consideration (stiffness of the regularisation). Near v = 0 the friction force
+// is a linear damper, F ≈ −(f·N/v_ε)·v with N the asperity normal force, so on a body of
+// mass m it relaxes the sliding velocity with the time constant
+//   t_f = m·v_ε/(f·N),   e.g. piston 0.3 kg, N = 1 kN, f = 0.1, v_ε = 1 mm/s: t_f = 3 µs.
+// The piston's tertiary motion (along the pin axis) has little else acting on it, so its
+// sliding velocity stays near 0, right where this damping is stiffest: an explicit
+// integrator needs steps below ~2·t_f (6 µs here) or it chatters. Use an implicit or stiffly
+// stable integrator with calcShearStressVelocityJacobian, or raise v_ε knowingly (t_f grows
+// in proportion, the stick becomes softer: at |v| = v_ε only 71 % of f·p is reached).
+//
+// Any finite v is handled without overflow or underflow (|v| and v/|v| from scaled
+// components): τ → −f·p·v/|v| for |v| → ∞ (up to DBL_MAX), τ ≈ −f·p·v/v_ε for tiny |v|.
 
 #include <Eigen/Core>
 
@@ -77,9 +90,28 @@ class BoundaryFriction {
                             Eigen::ArrayXXd& shearStressX_Pa,
                             Eigen::ArrayXXd& shearStressY_Pa) const;
 
+  // The same with one sliding velocity for every node (a rigid skirt sliding along a rigid
+  // liner: the piston's axial speed, and the tertiary / circumferential speed, are the same
+  // at every node): one speed, one coefficient and one direction for the field, so the cost
+  // is one multiply per node and component.
+  // Inputs:  contactPressure_Pa   p_c per node ≥ 0 and finite [Pa]
+  //          slidingVelocity_mps  v of the receiving surface relative to the other [m/s]
+  // Outputs: shearStressX_Pa, shearStressY_Pa  resized to the shape of contactPressure_Pa
+  void calcShearStressField(const Eigen::Ref<const Eigen::ArrayXXd>& contactPressure_Pa,
+                            const Eigen::Vector2d& slidingVelocity_mps,
+                            Eigen::ArrayXXd& shearStressX_Pa,
+                            Eigen::ArrayXXd& shearStressY_Pa) const;
+
  private:
-  // τ = −f·p·w(|v|)·v with w the weight per unit velocity [s/m].
-  double weightPerVelocity(double speed_mps) const;
+  struct SpeedAndDirection {
+    double speed;         // |v| [m/s] (+inf only beyond DBL_MAX)
+    double unitX, unitY;  // v/|v|, 0 for v = 0
+  };
+  static SpeedAndDirection splitVelocity(double vx, double vy);
+  // g(|v|) = effective coefficient / f ∈ [0, 1) [-].
+  double fraction(double speed_mps) const;
+  // g(s)/s and g'(s) [s/m], for the Jacobian.
+  void fractionOverSpeedAndSlope(double speed_mps, double& overSpeed, double& slope) const;
 
   BoundaryFrictionParameters parameters_;
 };

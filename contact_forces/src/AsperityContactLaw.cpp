@@ -20,6 +20,20 @@ inline bool isUsableGap(double gap_m) {
                        "a number and not -inf");
 }
 
+// A finite gap whose pressure or slope is not finite: an overlap far beyond anything
+// physical (the power of the penetration overflowed). Reported, never returned.
+[[noreturn]] void throwOverflow(const AsperityContactLaw& law, const char* function,
+                                const std::string& argument, double gap_m) {
+  detail::throwInvalid(std::string(law.name()) + "::" + function, argument, gap_m, "m",
+                       "an overlap whose contact pressure and slope are finite (they overflow "
+                       "the double range here; h/sigma = " +
+                           detail::formatNumber(gap_m / law.compositeSigma_m()) + ")");
+}
+
+inline bool isFinite(const PressureAndSlope& ps) {
+  return std::isfinite(ps.pressure_Pa) && std::isfinite(ps.dPressure_dGap_PaPerM);
+}
+
 }  // namespace
 
 void ContactField::resize(Eigen::Index rows, Eigen::Index cols) {
@@ -34,25 +48,38 @@ double AsperityContactLaw::calcPressure(double gap_m) const {
   if (!isUsableGap(gap_m)) {
     throwBadGap(*this, "calcPressure", "gap_m", gap_m);
   }
-  return evalPressure(gap_m);
+  const double p = evalPressure(gap_m);
+  if (!std::isfinite(p)) {
+    throwOverflow(*this, "calcPressure", "gap_m", gap_m);
+  }
+  return p;
 }
 
 PressureAndSlope AsperityContactLaw::calcPressureAndSlope(double gap_m) const {
   if (!isUsableGap(gap_m)) {
     throwBadGap(*this, "calcPressureAndSlope", "gap_m", gap_m);
   }
-  return evalPressureAndSlope(gap_m);
+  const PressureAndSlope ps = evalPressureAndSlope(gap_m);
+  if (!isFinite(ps)) {
+    throwOverflow(*this, "calcPressureAndSlope", "gap_m", gap_m);
+  }
+  return ps;
 }
 
 ContactNodeState AsperityContactLaw::calcNode(double gap_m) const {
   if (!isUsableGap(gap_m)) {
     throwBadGap(*this, "calcNode", "gap_m", gap_m);
   }
-  return evalNode(gap_m);
+  const ContactNodeState node = evalNode(gap_m);
+  if (!isFinite({node.pressure_Pa, node.dPressure_dGap_PaPerM})) {
+    throwOverflow(*this, "calcNode", "gap_m", gap_m);
+  }
+  return node;
 }
 
 LubricationRegime AsperityContactLaw::classify(double gap_m) const {
-  if (std::isnan(gap_m)) {
+  // Same domain as the pressure calls: −inf is as unusable here as there.
+  if (!isUsableGap(gap_m)) {
     throwBadGap(*this, "classify", "gap_m", gap_m);
   }
   return classifyRegime(gap_m / compositeSigma_m());
@@ -75,6 +102,10 @@ void AsperityContactLaw::calcField(const Eigen::Ref<const Eigen::ArrayXXd>& gap_
   for (Eigen::Index j = 0; j < cols; ++j) {
     for (Eigen::Index i = 0; i < rows; ++i) {
       const ContactNodeState node = evalNode(gap_m(i, j));
+      if (!isFinite({node.pressure_Pa, node.dPressure_dGap_PaPerM})) {
+        throwOverflow(*this, "calcField",
+                      "gap_m(" + std::to_string(i) + ", " + std::to_string(j) + ")", gap_m(i, j));
+      }
       out.pressure_Pa(i, j) = node.pressure_Pa;
       out.dPressure_dGap_PaPerM(i, j) = node.dPressure_dGap_PaPerM;
       out.realAreaFraction(i, j) = node.realAreaFraction;

@@ -64,6 +64,12 @@ GreenwoodTrippLaw::GreenwoodTrippLaw(const GreenwoodTrippParameters& parameters)
       throw std::invalid_argument("GreenwoodTrippLaw: tailModel is not a TailIntegralModel value");
   }
   sigma_m_ = compositeRoughness_m(p.roughnessSurface1_m, p.roughnessSurface2_m);
+  if (!(sigma_m_ >= kMinCompositeRoughness_m)) {
+    detail::throwInvalid(kWhere, "sqrt(roughnessSurface1_m^2 + roughnessSurface2_m^2)", sigma_m_,
+                         "m",
+                         "at least 1e-12 m (no engineering surface is smoother than a "
+                         "picometre; a length converted to metres twice?)");
+  }
   effectiveModulus_Pa_ = contact::effectiveModulus_Pa(p.surface1, p.surface2);
   coefficientK_ = greenwoodTrippCoefficient(p.roughnessParameter, p.sigmaOverBeta);
   pressureScale_Pa_ = coefficientK_ * effectiveModulus_Pa_;

@@ -56,8 +56,13 @@ PressureAndSlope PenaltyContactLaw::evalPressureAndSlope(double gap_m) const {
   const double powerSlope =                             // d/dδ (δ/δ_ref)^e
       p.exponent * std::pow(relative, p.exponent - 1.0) / p.referencePenetration_m;
   const double pressure = p.referencePressure_Pa * power * s.value;
-  const double dPressure_dPenetration =
-      p.referencePressure_Pa * (powerSlope * s.value + power * s.slope / p.transitionDepth_m);
+  // Past the onset ramp S = 1 and S' = 0: the product power·S' is left out there, so that
+  // a power that overflowed gives p = inf (reported by the base class), never inf·0 = NaN.
+  double slopeSum = powerSlope * s.value;
+  if (s.slope != 0.0) {
+    slopeSum += power * s.slope / p.transitionDepth_m;
+  }
+  const double dPressure_dPenetration = p.referencePressure_Pa * slopeSum;
   return {pressure, -dPressure_dPenetration};  // dδ/dh = −1
 }
 

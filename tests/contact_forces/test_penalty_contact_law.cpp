@@ -4,6 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "pistondyn/contact_forces/PenaltyContactLaw.h"
 
@@ -60,6 +64,44 @@ TEST(PenaltyContact, SlopeMatchesCentralDifference) {
       const double slope = law.calcPressureAndSlope(gap).dPressure_dGap_PaPerM;
       ASSERT_LT(slope, 0.0);
       ASSERT_NEAR(slope / difference, 1.0, 1e-6) << "exponent " << exponent << ", gap " << gap;
+    }
+  }
+}
+
+// Overflow (reference: the double range). (δ/δ_ref)^e overflows for a deep enough overlap;
+// before the fix the law returned p = inf and, from inf · S'(1) = inf · 0, dp/dh = NaN.
+// Now the slope term of the step is skipped where S = 1, and the base class reports a
+// non-finite result as an error naming the gap. Just below the overflow the result is the
+// plain power law, finite, slope −p_ref·e·(δ/δ_ref)^(e−1)/δ_ref (hand value).
+TEST(PenaltyContact, OverflowingOverlapThrowsInsteadOfInfOrNan) {
+  pc::PenaltyContactParameters p;  // 10 MPa at 1 µm, onset 0
+  const pc::PenaltyContactLaw linear(p);
+  const pc::PressureAndSlope big = linear.calcPressureAndSlope(-1e290);  // δ/δ_ref = 1e296
+  EXPECT_NEAR(big.pressure_Pa / 1e303, 1.0, 1e-14);
+  EXPECT_NEAR(big.dPressure_dGap_PaPerM / -1e13, 1.0, 1e-14);
+  p.exponent = 1.5;
+  const pc::PenaltyContactLaw hertzian(p);
+  for (const pc::PenaltyContactLaw* law : {&linear, &hertzian}) {
+    const double gap = law == &linear ? -1e300 : -1e200;  // (1e306)^1 · 1e7, (1e206)^1.5
+    for (const auto& call : std::vector<std::function<void()>>{
+             [&] { law->calcPressure(gap); }, [&] { law->calcPressureAndSlope(gap); },
+             [&] { law->calcNode(gap); }}) {
+      try {
+        call();
+        ADD_FAILURE() << "no exception for gap " << gap;
+      } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("gap_m"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("overflow"), std::string::npos) << e.what();
+      }
+    }
+    Eigen::ArrayXXd field = Eigen::ArrayXXd::Constant(3, 2, -1e-7);
+    field(2, 1) = gap;
+    pc::ContactField out;
+    try {
+      law->calcField(field, out);
+      ADD_FAILURE() << "no exception for the field";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("gap_m(2, 1)"), std::string::npos) << e.what();
     }
   }
 }

@@ -118,6 +118,10 @@ TEST(BadInput, NanGaps) {
   expectInvalidArgumentNaming([&] { law.calcPressureAndSlope(kNaN); }, "gap_m");
   expectInvalidArgumentNaming([&] { law.calcNode(-kInf); }, "gap_m");
   expectInvalidArgumentNaming([&] { law.classify(kNaN); }, "gap_m");
+  // −inf is rejected by classify as by the pressure calls (it used to return "boundary"
+  // while calcPressure threw).
+  expectInvalidArgumentNaming([&] { law.classify(-kInf); }, "GreenwoodTripp::classify");
+  EXPECT_EQ(law.classify(kInf), LubricationRegime::Hydrodynamic);
   Eigen::ArrayXXd gap = Eigen::ArrayXXd::Constant(4, 3, 1e-6);
   gap(2, 1) = kNaN;
   pc::ContactField field;
@@ -166,4 +170,30 @@ TEST(BadInput, PenaltyAndFrictionParameters) {
   vy(1, 0) = kInf;
   expectInvalidArgumentNaming([&] { f.calcShearStressField(p, vx, vy, tx, ty); },
                               "slidingVelocityY_mps(1, 0)");
+}
+
+// Greenwood–Tripp at the edges of the double range (reference: the double range and the
+// physical scale of surfaces). A denormal or sub-picometre σ is rejected at construction
+// (it made h/σ = ±inf for ordinary gaps, hence p = inf in overlap); an overlap so deep
+// that F_{5/2} overflows throws naming the gap (it returned p = inf); just inside the range
+// the pressure is finite and follows the overlap asymptote F_{5/2}(λ) ≈ |λ|^{5/2} (1 + …).
+TEST(BadInput, GreenwoodTrippOverflowAndDenormalSigma) {
+  pc::GreenwoodTrippParameters p;
+  p.roughnessSurface1_m = 1e-320;  // denormal
+  p.roughnessSurface2_m = 0.0;
+  expectInvalidArgumentNaming([&] { const pc::GreenwoodTrippLaw law(p); },
+                              "roughnessSurface1_m^2 + roughnessSurface2_m^2");
+  p.roughnessSurface1_m = 0.5e-12;
+  expectInvalidArgumentNaming([&] { const pc::GreenwoodTrippLaw law(p); }, "1e-12 m");
+  p.roughnessSurface1_m = 1e-12;
+  EXPECT_NO_THROW(const pc::GreenwoodTrippLaw law(p));
+
+  const pc::GreenwoodTrippLaw law;  // σ = 0.5 µm
+  expectInvalidArgumentNaming([&] { law.calcPressure(-1e300); }, "gap_m");
+  expectInvalidArgumentNaming([&] { law.calcPressureAndSlope(-1e300); }, "overflow");
+  expectInvalidArgumentNaming([&] { law.calcNode(-1e300); }, "gap_m");
+  const double deep = -1e100 * law.compositeSigma_m();  // λ = −1e100: F ≈ 1e250
+  const double p52 = law.calcPressure(deep);
+  EXPECT_TRUE(std::isfinite(p52));
+  EXPECT_NEAR(p52 / (law.pressureScale_Pa() * 1e250), 1.0, 1e-12);
 }

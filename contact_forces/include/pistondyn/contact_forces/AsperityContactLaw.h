@@ -17,7 +17,10 @@
 //   - per field: calcField(gap, out) over a whole grid (any shape; Eigen array), filling
 //                a reusable ContactField (no allocation after the first call at a size).
 // Inputs are checked here (non-virtual interface); implementations override the eval*
-// hooks, which may assume a gap that is not NaN and not −inf.
+// hooks, which may assume a gap that is not NaN and not −inf. Outputs are checked here too:
+// a finite gap whose pressure or slope is not finite (an overlap so deep that a power of it
+// overflows the double range — e.g. gap −1e300 m — or a law that fails) throws
+// std::invalid_argument naming the gap; no call ever returns inf or NaN.
 
 #include <Eigen/Core>
 #include <limits>
@@ -67,7 +70,7 @@ class AsperityContactLaw {
   // Asperity pressure at gap h.
   // Inputs:  gap_m  nominal gap h [m]; NaN and −inf throw std::invalid_argument,
   //                 +inf means "far apart" (no contact)
-  // Outputs: p_c [Pa] ≥ 0
+  // Outputs: p_c [Pa] ≥ 0 and finite (an overflowing overlap throws, see above)
   double calcPressure(double gap_m) const;
 
   // Pressure and ∂p_c/∂h at gap h (same inputs as calcPressure).
@@ -78,11 +81,15 @@ class AsperityContactLaw {
 
   // All of calcNode over a gap field of any shape (a column ArrayXd binds too).
   // Inputs:  gap_m  nominal gap per node [m]; a NaN or −inf entry throws
-  //                 std::invalid_argument naming its index
+  //                 std::invalid_argument naming its index, before `out` is touched; an
+  //                 overflowing overlap throws naming its index too (`out` is then
+  //                 partly overwritten)
   // Outputs: out    resized to the shape of gap_m and filled
   void calcField(const Eigen::Ref<const Eigen::ArrayXXd>& gap_m, ContactField& out) const;
 
-  // Regime at gap h (h/σ with this law's σ).
+  // Regime at gap h (h/σ with this law's σ). Same domain as calcPressure: NaN and −inf
+  // throw std::invalid_argument, +inf is hydrodynamic. (classifyRegime() on a film ratio
+  // accepts −inf as boundary; a gap of −inf has no pressure, so the law rejects it.)
   LubricationRegime classify(double gap_m) const;
 
  protected:

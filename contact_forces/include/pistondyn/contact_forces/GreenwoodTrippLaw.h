@@ -51,13 +51,18 @@ struct GreenwoodTrippParameters {
   PolynomialTailFit polynomialF2 = kPolynomialFitF2;       // used with PolynomialFit
 };
 
+// Smallest composite roughness σ the law accepts [m]: 1 pm. Below it σ can only be a unit
+// mistake (or a denormal), and h/σ overflows for ordinary gaps.
+inline constexpr double kMinCompositeRoughness_m = 1e-12;
+
 // K = (8√2/15)·π·(ηβσ)²·√(σ/β) [-].
 // Throws std::invalid_argument when either argument is ≤ 0 or not finite.
 double greenwoodTrippCoefficient(double roughnessParameter, double sigmaOverBeta);
 
 class GreenwoodTrippLaw final : public AsperityContactLaw {
  public:
-  // Checks every parameter; throws std::invalid_argument naming the bad one.
+  // Checks every parameter; throws std::invalid_argument naming the bad one, also when the
+  // composite σ is below kMinCompositeRoughness_m.
   explicit GreenwoodTrippLaw(const GreenwoodTrippParameters& parameters = {});
 
   const char* name() const override { return "GreenwoodTripp"; }

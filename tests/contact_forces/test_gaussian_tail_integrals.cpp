@@ -201,6 +201,29 @@ TEST(GaussianTail, FitErrorsAtIssuePoints) {
   EXPECT_EQ(at(2.5).polyF2, -1.0);
 }
 
+// The fits in overlap (λ < 0, mean planes crossed), where no fit was made (they were fitted
+// for 0 ≤ λ ≲ 4) but a solver can still take them: against long-double quadrature
+// (independent). The power law grows like (4 − λ)^6.8 instead of |λ|^2.5: ratio to the
+// exact F_{5/2} 0.91 at λ = −1, 1.32 at −3, 8.6 at −10; the quintics 1.03, 1.30, 4.2;
+// the quoted F_2 power law 0.53, 1.01, 11.4. Pinned to 0.5 % (figures in README).
+TEST(GaussianTail, FitRatiosInOverlap) {
+  const pc::test::ReferenceTailQuadrature quadrature;
+  struct Row {
+    double lambda, power52, poly52, power2, poly2;
+  };
+  const Row expected[] = {{-1.0, 0.9114, 1.0292, 0.5269, 1.0563},
+                          {-3.0, 1.3175, 1.3018, 1.0103, 1.5025},
+                          {-10.0, 8.5964, 4.2085, 11.3961, 6.8804}};
+  for (const Row& r : expected) {
+    const double f52 = static_cast<double>(quadrature.tail(2.5L, r.lambda));
+    const double f2 = static_cast<double>(quadrature.tail(2.0L, r.lambda));
+    EXPECT_NEAR(pc::kPowerLawFitF52.value(r.lambda) / f52 / r.power52, 1.0, 5e-3) << r.lambda;
+    EXPECT_NEAR(pc::kPolynomialFitF52.value(r.lambda) / f52 / r.poly52, 1.0, 5e-3) << r.lambda;
+    EXPECT_NEAR(pc::kPowerLawQuotedF2.value(r.lambda) / f2 / r.power2, 1.0, 5e-3) << r.lambda;
+    EXPECT_NEAR(pc::kPolynomialFitF2.value(r.lambda) / f2 / r.poly2, 1.0, 5e-3) << r.lambda;
+  }
+}
+
 // The cut points recorded with the published quintics: where the F_{5/2} fit stops
 // decreasing (slope 0) and where the F_2 fit crosses zero; and the jump left at the first.
 TEST(GaussianTail, PolynomialFitCutPoints) {

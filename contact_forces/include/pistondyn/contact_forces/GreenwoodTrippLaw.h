@@ -11,6 +11,18 @@
 // σ  composite RMS roughness √(Rq1² + Rq2²);  η asperity density;  β asperity radius;
 // E′ = 2 / [(1−ν1²)/E1 + (1−ν2²)/E2] = 2E* (see SurfacePair.h).
 //
+// σ here is the composite SURFACE Rq and h the separation of the surfaces' mean planes, as
+// in the ring-pack/skirt literature whose parameter sets (ηβσ = 0.04, σ/β = 0.001) are the
+// defaults. Greenwood & Tripp's own σ is the standard deviation of the SUMMIT heights σ_s
+// (smaller than Rq: σ_s² ≈ (1 − 0.8968/α) Rq², α the bandwidth parameter; McCool 1986),
+// with h measured from the summits' mean plane. Use σ and the parameter set together as
+// published; see contact_forces/README.md for using the summit definition instead.
+//
+// Fits (TailIntegralModel::PowerLawFit, PolynomialFit) outside λ ≥ 0: they were fitted for
+// separated surfaces and overshoot in overlap; the F_{5/2} power law is 1.32× the exact
+// value at λ = −3 and 8.6× at λ = −10 (table in the README). The exact integrals follow
+// |λ|^{5/2} there.
+//
 // Why K goes with E′ = 2E*: for a pair of asperities (radius β each, so Hertz radius β/2)
 // whose summits are offset laterally by r and overlap by w0 − r²/(4β), Hertz gives the
 // load (4/3)E*(β/2)^½ (w0 − r²/4β)^{3/2}. Summing over partners (η per unit area each

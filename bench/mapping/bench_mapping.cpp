@@ -127,15 +127,58 @@ void BM_TensorForceMap_ContactToLiner_Traction3DStep(benchmark::State& state) {
   pm::TensorForceMap::Workspace ws;
   const Eigen::VectorXd p = contactPressure(contact);
   const Eigen::VectorXd tau = 0.01 * p;
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(p.size());  // no temporary per call
   Eigen::VectorXd fx(liner.nodeCount()), fy(liner.nodeCount()), fz(liner.nodeCount());
   int k = 0;
   for (auto _ : state) {
     map.setAxialOffset(pistonPosition_m(k++), ws);
-    benchmark::DoNotOptimize(map.applyTraction(ws, p, 0.0 * tau, tau, fx, fy, fz));
+    benchmark::DoNotOptimize(map.applyTraction(ws, p, zero, tau, fx, fy, fz));
     benchmark::DoNotOptimize(fx.data());
   }
 }
 BENCHMARK(BM_TensorForceMap_ContactToLiner_Traction3DStep);
+
+// The windowed paths per step, as the plugin would use them: clear the liner rows the
+// previous step wrote, move, add the new loads into the rows the contact grid overlaps.
+// Cost scales with the contact grid, not with the 14400-node liner.
+void BM_TensorForceMap_ContactToLiner_StepAndAccumulate(benchmark::State& state) {
+  const auto contact = contactGrid(), liner = linerGrid();
+  const pm::TensorForceMap map(contact, liner, 0.0);
+  pm::TensorForceMap::Workspace ws;
+  const Eigen::VectorXd p = contactPressure(contact);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(liner.nodeCount());
+  const int nPhi = liner.nPhi();
+  int k = 0;
+  for (auto _ : state) {
+    f.segment(nPhi * ws.rows.first, nPhi * ws.rows.count).setZero();
+    map.setAxialOffset(pistonPosition_m(k++), ws);
+    benchmark::DoNotOptimize(map.accumulate(ws, p, f));
+    benchmark::DoNotOptimize(f.data());
+  }
+}
+BENCHMARK(BM_TensorForceMap_ContactToLiner_StepAndAccumulate);
+
+void BM_TensorForceMap_ContactToLiner_Traction3DStepWindowed(benchmark::State& state) {
+  const auto contact = contactGrid(), liner = linerGrid();
+  const pm::TensorForceMap map(contact, liner, 0.0);
+  pm::TensorForceMap::Workspace ws;
+  const Eigen::VectorXd p = contactPressure(contact);
+  const Eigen::VectorXd tau = 0.01 * p;
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(p.size());  // no temporary per call
+  Eigen::VectorXd fx = Eigen::VectorXd::Zero(liner.nodeCount()), fy = fx, fz = fx;
+  const int nPhi = liner.nPhi();
+  int k = 0;
+  for (auto _ : state) {
+    const Eigen::Index first = nPhi * ws.rows.first, count = nPhi * ws.rows.count;
+    fx.segment(first, count).setZero();
+    fy.segment(first, count).setZero();
+    fz.segment(first, count).setZero();
+    map.setAxialOffset(pistonPosition_m(k++), ws);
+    benchmark::DoNotOptimize(map.accumulateTraction(ws, p, zero, tau, fx, fy, fz));
+    benchmark::DoNotOptimize(fx.data());
+  }
+}
+BENCHMARK(BM_TensorForceMap_ContactToLiner_Traction3DStepWindowed);
 
 // For comparison: rebuilding a full ForceMap for every new offset, then applying it.
 void BM_ForceMap_ContactToLiner_FullRebuildPerStep(benchmark::State& state) {

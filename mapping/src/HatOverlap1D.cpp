@@ -156,6 +156,10 @@ void calcHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceClosed,
   const double t0 = tgt.node(0), t1 = tgt.end();
   const int targetCells = tgt.cells();
   double piece[3] = {0.0, 0.0, 0.0};
+  // Without a period (axial factors, rebuilt every step) the overlaps start at
+  // non-decreasing positions as k runs, so the first target cell is found by walking on
+  // from the previous one instead of a binary search over all target nodes.
+  int cursor = 0;
 
   for (int k = 0; k < ns; ++k) {
     column.clear();
@@ -188,7 +192,15 @@ void calcHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceClosed,
       // Inside the target range: sweep the target cells under each overlap.
       forEachOverlap(a, b, t0, t1, period, [&](double lo, double hi, double shift) {
         int j = 0;
-        {
+        if (period == 0.0) {
+          // Same cell as upper_bound(lo) - 1, clamped: the last j with node(j) <= lo.
+          j = std::min(cursor, targetCells - 1);
+          while (j > 0 && tgt.x[j] > lo)
+            --j;
+          while (j + 1 < targetCells && tgt.x[j + 1] <= lo)
+            ++j;
+          cursor = j;
+        } else {
           const double* begin = tgt.x.data();
           j = static_cast<int>(std::upper_bound(begin, begin + nt, lo - shift) - begin) - 1;
           j = std::clamp(j, 0, targetCells - 1);
@@ -253,10 +265,13 @@ void calcHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceClosed,
       }
     }
 
-    // Merge the column: sort by target node, sum duplicates.
-    std::sort(
-        column.begin(), column.end(),
-        [](const HatOverlap1D::Entry& l, const HatOverlap1D::Entry& r) { return l.row < r.row; });
+    // Merge the column: sort by target node (the sweep usually produces them in order
+    // already; only wrapped overlaps on a ring do not), sum duplicates.
+    const auto byRow = [](const HatOverlap1D::Entry& l, const HatOverlap1D::Entry& r) {
+      return l.row < r.row;
+    };
+    if (!std::is_sorted(column.begin(), column.end(), byRow))
+      std::sort(column.begin(), column.end(), byRow);
     for (size_t e = 0; e < column.size();) {
       const int row = column[e].row;
       double sum[3] = {0.0, 0.0, 0.0};

@@ -395,6 +395,102 @@ TEST(TensorForceMap, AxialUpdateEqualsFullRebuild) {
   }
 }
 
+// Windowed paths (issue 5's liner step): accumulate() and accumulateTraction() add into
+// full-size liner vectors and touch only the rows ws.rows. Two skirt sides (thrust at
+// phi = 0.05, anti-thrust at phi = pi + 0.05) add into one load vector over 25 piston
+// positions, partly beyond both liner ends at the extremes. References:
+// - scalar: ForceMap rebuilt at every offset (independent sparse assembly), 1e-13;
+// - traction: the full applyTraction (checked against direct Gauss integration of the
+//   3-D traction in test_force_map_cylinder.cpp), 1e-13 of the largest nodal force;
+// - entries outside the window: bit-for-bit untouched (sentinel values); the full paths
+//   are exactly 0 there, so the window holds every non-zero load; its first and last rows
+//   carry load (the window is tight).
+TEST(TensorForceMap, WindowedAccumulateEqualsFullPath) {
+  std::mt19937 rng(16);
+  const double r = 0.0325;
+  const auto contact = pm::CylinderGrid::sector(r, pm::uniformNodes(-0.7, 0.7, 64),
+                                                pm::test::randomNodes(rng, 0.0, 0.03, 48, 1.5));
+  const auto liner = pm::CylinderGrid::fullCircle(r, pm::fullCircleNodes_rad(36, -0.05),
+                                                  pm::uniformNodes(0.0, 0.12, 400));
+  const int ns = contact.nodeCount(), nt = liner.nodeCount(), ntPhi = liner.nPhi();
+  std::vector<Eigen::VectorXd> pn, ps, py;
+  for (int side = 0; side < 2; ++side) {
+    pn.push_back(pm::test::randomVector(rng, ns, 1e5, 2e6));  // > 0: every row is loaded
+    ps.push_back(pm::test::randomVector(rng, ns, -2e4, 2e4));
+    py.push_back(pm::test::randomVector(rng, ns, -1e5, 1e5));
+  }
+  const pm::TensorForceMap thrust(contact, liner, 0.05), antiThrust(contact, liner, kPi + 0.05);
+  const pm::TensorForceMap* sides[2] = {&thrust, &antiThrust};
+  pm::TensorForceMap::Workspace ws[2];
+  const Eigen::VectorXd sentinel = pm::test::randomVector(rng, nt, -1e3, 1e3);
+  for (int step = 0; step <= 24; ++step) {
+    const double yOffset = -0.01 + 0.11 * step / 24.0;
+    Eigen::VectorXd full = Eigen::VectorXd::Zero(nt), fx = full, fy = full, fz = full;
+    Eigen::VectorXd acc = sentinel, ax = sentinel, ay = sentinel, az = sentinel;
+    Eigen::VectorXd one(nt), ox(nt), oy(nt), oz(nt);
+    for (int k = 0; k < 2; ++k) {
+      sides[k]->setAxialOffset(yOffset, ws[k]);
+      const pm::ForceMap rebuilt(contact, liner, {sides[k]->phiOffset_rad(), yOffset});
+      const pm::LoadBalance bFull = rebuilt.apply(pn[k], one);
+      full += one;
+      const pm::CartesianLoadBalance tFull =
+          sides[k]->applyTraction(ws[k], pn[k], ps[k], py[k], ox, oy, oz);
+      fx += ox;
+      fy += oy;
+      fz += oz;
+      // The full paths are exactly zero outside the window.
+      const pm::TensorForceMap::RowWindow w = ws[k].rows;
+      ASSERT_GT(w.count, 0) << "step " << step;
+      for (int j = 0; j < liner.nY(); ++j) {
+        const bool inside = j >= w.first && j < w.end();
+        const double rowMax = std::max({one.segment(ntPhi * j, ntPhi).cwiseAbs().maxCoeff(),
+                                        ox.segment(ntPhi * j, ntPhi).cwiseAbs().maxCoeff(),
+                                        oy.segment(ntPhi * j, ntPhi).cwiseAbs().maxCoeff()});
+        if (!inside)
+          ASSERT_EQ(rowMax, 0.0) << "step " << step << " row " << j;
+        else if (j == w.first || j == w.end() - 1)
+          EXPECT_GT(rowMax, 0.0) << "window not tight: step " << step << " row " << j;
+      }
+      const pm::LoadBalance bAcc = sides[k]->accumulate(ws[k], pn[k], acc);
+      const pm::CartesianLoadBalance tAcc =
+          sides[k]->accumulateTraction(ws[k], pn[k], ps[k], py[k], ax, ay, az);
+      EXPECT_NEAR(bAcc.sourceTotal_N, bFull.sourceTotal_N, 1e-13 * bFull.sourceTotal_N);
+      EXPECT_NEAR(bAcc.unmapped_N, bFull.unmapped_N, 1e-13 * bFull.sourceTotal_N);
+      EXPECT_EQ(tAcc.sourceTotal_N, tFull.sourceTotal_N);
+      EXPECT_EQ(tAcc.unmapped_N, tFull.unmapped_N);
+    }
+    // Rows neither side reaches keep their sentinel values bit for bit.
+    auto touched = [&](int j) {
+      for (const auto& w : ws)
+        if (j >= w.rows.first && j < w.rows.end())
+          return true;
+      return false;
+    };
+    for (int j = 0; j < liner.nY(); ++j)
+      if (!touched(j))
+        for (int i = 0; i < ntPhi; ++i) {
+          const int n = i + ntPhi * j;
+          ASSERT_EQ(acc[n], sentinel[n]);
+          ASSERT_EQ(ax[n], sentinel[n]);
+          ASSERT_EQ(ay[n], sentinel[n]);
+          ASSERT_EQ(az[n], sentinel[n]);
+        }
+    const double scale = full.cwiseAbs().maxCoeff();
+    EXPECT_LE((acc - sentinel - full).cwiseAbs().maxCoeff(), 1e-13 * scale) << "step " << step;
+    EXPECT_LE((ax - sentinel - fx).cwiseAbs().maxCoeff(), 1e-13 * scale) << "step " << step;
+    EXPECT_LE((ay - sentinel - fy).cwiseAbs().maxCoeff(), 1e-13 * scale) << "step " << step;
+    EXPECT_LE((az - sentinel - fz).cwiseAbs().maxCoeff(), 1e-13 * scale) << "step " << step;
+  }
+  // No overlap at all: an empty window, nothing written, everything unmapped.
+  pm::TensorForceMap::Workspace far;
+  thrust.setAxialOffset(0.5, far);
+  EXPECT_EQ(far.rows.count, 0);
+  Eigen::VectorXd untouched = sentinel;
+  const pm::LoadBalance b = thrust.accumulate(far, pn[0], untouched);
+  EXPECT_EQ(untouched, sentinel);
+  EXPECT_NEAR(b.unmapped_N, b.sourceTotal_N, 1e-13 * b.sourceTotal_N);
+}
+
 TEST(ForceMap, RejectsBadInputNamingTheArgument) {
   const double r = 0.0325;
   const auto src =

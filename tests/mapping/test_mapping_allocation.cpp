@@ -100,6 +100,8 @@ TEST(MappingAllocation, PerStepCallsDoNotAllocate) {
                 toLiner.setAxialOffset(0.0017 * step, ws);
                 (void)toLiner.apply(ws, p, fl);
                 (void)toLiner.applyTraction(ws, p, p, p, fx, fy, fz);
+                (void)toLiner.accumulate(ws, p, fl);
+                (void)toLiner.accumulateTraction(ws, p, p, p, fx, fy, fz);
               }
             }),
             0);

@@ -35,6 +35,8 @@
 // shared between threads; TensorForceMap's per-step state and scratch live in the
 // caller's TensorForceMap::Workspace (one per thread).
 
+#include <vector>
+
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
@@ -92,12 +94,22 @@ class ForceMap {
 
 class TensorForceMap {
  public:
+  // Target rows (axial node indices j of the target) that the source overlaps at the
+  // current axial offset: j in [first, first + count). count = 0 when nothing overlaps.
+  struct RowWindow {
+    int first = 0;
+    int count = 0;
+    int end() const { return first + count; }
+  };
+
   // Per-caller state: the axial factor for the current axial offset, and scratch.
   struct Workspace {
-    HatOverlap1D axial;          // A_y for the offset set last
-    double yOffset_m = 0.0;      // that offset
-    bool ready = false;          // setAxialOffset() was called
-    Eigen::MatrixXd q0, q1, q2;  // A_phi * P products (target nPhi x source nY)
+    HatOverlap1D axial;      // A_y for the offset set last
+    double yOffset_m = 0.0;  // that offset
+    bool ready = false;      // setAxialOffset() was called
+    RowWindow rows;          // target rows A_y reaches at that offset
+    // R A_phi P products on the reached target phi nodes (row-major: rows are written).
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> q0, q1, q2;
   };
 
   // Builds the circumferential factors (plain, and cos/sin-weighted for applyTraction);
@@ -106,8 +118,8 @@ class TensorForceMap {
                  LoadRule rule = LoadRule::Consistent);
 
   // New axial offset (source node y lies at y + yOffset_m of the target): rebuilds the
-  // 1-D axial factor only, O(source nY + target nodes it touches); no allocation once
-  // the workspace has seen a similar overlap.
+  // 1-D axial factor only, O(source nY + target nodes it touches), and sets ws.rows, the
+  // target rows it reaches; no allocation once the workspace has seen a similar overlap.
   void setAxialOffset(double yOffset_m, Workspace& ws) const;
 
   // Same result as ForceMap(source, target, {phiOffset, ws.yOffset_m}, rule).apply(...),
@@ -129,6 +141,25 @@ class TensorForceMap {
       const Eigen::Ref<const Eigen::VectorXd>& axial_Pa, Eigen::Ref<Eigen::VectorXd> forceX_N,
       Eigen::Ref<Eigen::VectorXd> forceY_N, Eigen::Ref<Eigen::VectorXd> forceZ_N) const;
 
+  // Windowed paths: their cost scales with the source (contact) grid, not the target.
+  // They ADD the mapped forces into full-size target vectors and touch only the target
+  // rows ws.rows (all target phi nodes of those rows); every other entry is left as it
+  // was. The full paths above write (zero) every target entry, which for the 36 x 400
+  // liner is most of their cost. Typical use per step, with one or several source grids
+  // (e.g. thrust and anti-thrust skirt sides) adding into one liner load vector:
+  //   zero the rows the previous step wrote (its ws.rows), setAxialOffset(), then
+  //   accumulate*(); ws.rows says which rows now hold loads.
+  // Results equal the full paths (same operations on the window; tested to 1e-13 of the
+  // largest nodal force). Same checks and throws as apply()/applyTraction().
+  [[nodiscard]] LoadBalance accumulate(Workspace& ws,
+                                       const Eigen::Ref<const Eigen::VectorXd>& sourcePressure_Pa,
+                                       Eigen::Ref<Eigen::VectorXd> targetForce_N) const;
+  [[nodiscard]] CartesianLoadBalance accumulateTraction(
+      Workspace& ws, const Eigen::Ref<const Eigen::VectorXd>& normal_Pa,
+      const Eigen::Ref<const Eigen::VectorXd>& circumferential_Pa,
+      const Eigen::Ref<const Eigen::VectorXd>& axial_Pa, Eigen::Ref<Eigen::VectorXd> forceX_N,
+      Eigen::Ref<Eigen::VectorXd> forceY_N, Eigen::Ref<Eigen::VectorXd> forceZ_N) const;
+
   const CylinderGrid& source() const { return source_; }
   const CylinderGrid& target() const { return target_; }
   double phiOffset_rad() const { return phiOffset_rad_; }
@@ -136,14 +167,42 @@ class TensorForceMap {
   // The circumferential factor A_phi (target nPhi x source nPhi, [rad]).
   const HatOverlap1D& circumferentialFactor() const { return phi_; }
 
+  // Run of consecutive reached target phi nodes: target nodes [target, target + length)
+  // are rows [compact, compact + length) of the compact products (implementation detail).
+  struct PhiRun {
+    int target, compact, length;
+  };
+
  private:
   friend class ForceMap;
   void checkWorkspace(const char* fn, const Workspace& ws) const;
+  LoadBalance mapScalar(const char* fn, Workspace& ws,
+                        const Eigen::Ref<const Eigen::VectorXd>& sourcePressure_Pa,
+                        Eigen::Ref<Eigen::VectorXd> targetForce_N, bool overwrite) const;
+  CartesianLoadBalance mapTraction(const char* fn, Workspace& ws,
+                                   const Eigen::Ref<const Eigen::VectorXd>& normal_Pa,
+                                   const Eigen::Ref<const Eigen::VectorXd>& circumferential_Pa,
+                                   const Eigen::Ref<const Eigen::VectorXd>& axial_Pa,
+                                   Eigen::Ref<Eigen::VectorXd> forceX_N,
+                                   Eigen::Ref<Eigen::VectorXd> forceY_N,
+                                   Eigen::Ref<Eigen::VectorXd> forceZ_N, bool overwrite) const;
 
   CylinderGrid source_, target_;
   double phiOffset_rad_;
   LoadRule rule_;
   HatOverlap1D phi_;  // with cos/sin weights
+  // The target phi nodes A_phi reaches (increasing) and R * A_phi on those rows, dense and
+  // row-major (nWin x source nPhi): plain, cos- and sin-weighted; per row the band of
+  // source nodes [begin, begin + length) holding its non-zeros.
+  struct PhiBand {
+    int begin, length;
+  };
+  using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  std::vector<int> phiRows_;
+  std::vector<PhiBand> phiBands_;
+  RowMajorMatrix phiPlain_, phiCos_, phiSin_;
+  std::vector<PhiRun> phiRuns_;  // phiRows_ as runs of consecutive target phi nodes
+  bool phiHasOutside_ = false;   // part of the source lies outside a sector target in phi
 };
 
 }  // namespace pistondyn::mapping

@@ -28,6 +28,15 @@
 //   circumferential components; the axial component's x/z moments and the moment
 //   about the cylinder axis are not exact (errors bounded in mapping/README.md).
 //
+// REQUIREMENT for force elements (plugin/): the tilt moments of the friction (axial
+// traction) and the moment about the cylinder axis are NOT preserved by the mapping on
+// the curved cylinder (on a 36-node liner the friction tilt moment is off by up to
+// R h^2/8 of the friction force magnitude, h = 10 deg). A force element must therefore
+// take the piston's resultant force and moments from the contact (film) grid directly,
+// integrating the traction there (e.g. with the film solver's exact load and moment
+// weights); use these maps only to load the liner and the structural (compliance) grids,
+// never to compute the forces and moments applied to the piston body.
+//
 // Partial overlap: source cells (parts of cells) outside the target grid cannot be
 // mapped; their force is reported in LoadBalance::unmapped_N, never dropped silently.
 //

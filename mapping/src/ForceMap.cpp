@@ -1,6 +1,7 @@
 #include "pistondyn/mapping/ForceMap.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,29 @@ double weightedSum(const Eigen::Ref<const Eigen::VectorXd>& a, const ConstMatrix
   return sum;
 }
 
+// 64-bit FNV-1a over everything the axial factor is built from besides the offset: the
+// source and target axial nodes (bit patterns) and the load rule. Two maps with the same
+// key build the same A_y for an offset, so they may share a workspace.
+std::uint64_t axialFingerprint(const Eigen::VectorXd& sourceY, const Eigen::VectorXd& targetY,
+                               LoadRule rule) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto add = [&h](const void* data, std::size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) {
+      h ^= p[i];
+      h *= 1099511628211ull;
+    }
+  };
+  for (const Eigen::VectorXd* v : {&sourceY, &targetY}) {
+    const Eigen::Index n = v->size();
+    add(&n, sizeof n);
+    add(v->data(), sizeof(double) * static_cast<std::size_t>(n));
+  }
+  const int r = static_cast<int>(rule);
+  add(&r, sizeof r);
+  return h;
+}
+
 void checkOutput(const char* fn, const char* argument, Eigen::Index size, int expected) {
   if (size != expected)
     detail::fail(fn, std::string(argument) + " has " + std::to_string(size) +
@@ -124,6 +148,7 @@ TensorForceMap::TensorForceMap(const CylinderGrid& source, const CylinderGrid& t
       phiRuns_.push_back({phiRows_[r], r, 1});
   }
   phiHasOutside_ = phi_.outsideIntegral.cwiseAbs().maxCoeff() > 0.0;
+  axialKey_ = axialFingerprint(source.y_m(), target.y_m(), rule);
 }
 
 void TensorForceMap::setAxialOffset(double yOffset_m, Workspace& ws) const {
@@ -131,6 +156,7 @@ void TensorForceMap::setAxialOffset(double yOffset_m, Workspace& ws) const {
   calcHatOverlap1D(source_.y_m(), false, target_.y_m(), false, 0.0, yOffset_m, rule_,
                    /*withTrig=*/false, ws.axial);
   ws.yOffset_m = yOffset_m;
+  ws.axialKey = axialKey_;
   ws.ready = true;
   // The rows of A_y (sorted within each column; the source columns overlap target rows
   // in increasing order, but min/max over all entries needs no such assumption).
@@ -144,8 +170,13 @@ void TensorForceMap::setAxialOffset(double yOffset_m, Workspace& ws) const {
 }
 
 void TensorForceMap::checkWorkspace(const char* fn, const Workspace& ws) const {
-  if (!ws.ready || ws.axial.sourceCount != source_.nY() || ws.axial.targetCount != target_.nY())
-    detail::fail(fn, "workspace has no axial factor for this map (call setAxialOffset first)");
+  if (!ws.ready)
+    detail::fail(fn, "ws has no axial factor (call setAxialOffset with this workspace first)");
+  if (ws.axialKey != axialKey_ || ws.axial.sourceCount != source_.nY() ||
+      ws.axial.targetCount != target_.nY())
+    detail::fail(fn,
+                 "ws holds the axial factor of another map (different source or target axial "
+                 "nodes or load rule); call setAxialOffset of this map with it first");
 }
 
 LoadBalance TensorForceMap::apply(Workspace& ws,
@@ -174,10 +205,10 @@ LoadBalance TensorForceMap::mapScalar(const char* fn, Workspace& ws,
   // nodes (about 16 of 64 for a skirt side on a 36-node liner).
   const int nWin = static_cast<int>(phiRows_.size());
   ws.q2.resize(nWin, source_.nY());
-  for (int r = 0; r < nWin; ++r) {
-    const PhiBand b = phiBands_[r];
-    ws.q2.row(r).noalias() =
-        phiPlain_.row(r).segment(b.begin, b.length) * p.middleRows(b.begin, b.length);
+  for (int row = 0; row < nWin; ++row) {
+    const PhiBand b = phiBands_[row];
+    ws.q2.row(row).noalias() =
+        phiPlain_.row(row).segment(b.begin, b.length) * p.middleRows(b.begin, b.length);
   }
   if (overwrite)
     f.setZero();
@@ -250,18 +281,18 @@ CartesianLoadBalance TensorForceMap::mapTraction(
   ws.q0.resize(nWin, nsY);
   ws.q1.resize(nWin, nsY);
   ws.q2.resize(nWin, nsY);
-  for (int r = 0; r < nWin; ++r) {
-    const PhiBand b = phiBands_[r];
-    const auto cosRow = phiCos_.row(r).segment(b.begin, b.length);
-    const auto sinRow = phiSin_.row(r).segment(b.begin, b.length);
+  for (int row = 0; row < nWin; ++row) {
+    const PhiBand b = phiBands_[row];
+    const auto cosRow = phiCos_.row(row).segment(b.begin, b.length);
+    const auto sinRow = phiSin_.row(row).segment(b.begin, b.length);
     const auto pnBand = pn.middleRows(b.begin, b.length);
     const auto psBand = ps.middleRows(b.begin, b.length);
-    ws.q0.row(r).noalias() = cosRow * pnBand;  // x: A cos Pn - A sin Ps
-    ws.q0.row(r).noalias() -= sinRow * psBand;
-    ws.q1.row(r).noalias() = sinRow * pnBand;  // z: A sin Pn + A cos Ps
-    ws.q1.row(r).noalias() += cosRow * psBand;
-    ws.q2.row(r).noalias() =  // y: A Py
-        phiPlain_.row(r).segment(b.begin, b.length) * py.middleRows(b.begin, b.length);
+    ws.q0.row(row).noalias() = cosRow * pnBand;  // x: A cos Pn - A sin Ps
+    ws.q0.row(row).noalias() -= sinRow * psBand;
+    ws.q1.row(row).noalias() = sinRow * pnBand;  // z: A sin Pn + A cos Ps
+    ws.q1.row(row).noalias() += cosRow * psBand;
+    ws.q2.row(row).noalias() =  // y: A Py
+        phiPlain_.row(row).segment(b.begin, b.length) * py.middleRows(b.begin, b.length);
   }
   const auto& qx = ws.q0;
   const auto& qz = ws.q1;

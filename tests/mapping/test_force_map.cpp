@@ -446,10 +446,11 @@ TEST(TensorForceMap, WindowedAccumulateEqualsFullPath) {
         const double rowMax = std::max({one.segment(ntPhi * j, ntPhi).cwiseAbs().maxCoeff(),
                                         ox.segment(ntPhi * j, ntPhi).cwiseAbs().maxCoeff(),
                                         oy.segment(ntPhi * j, ntPhi).cwiseAbs().maxCoeff()});
-        if (!inside)
+        if (!inside) {
           ASSERT_EQ(rowMax, 0.0) << "step " << step << " row " << j;
-        else if (j == w.first || j == w.end() - 1)
+        } else if (j == w.first || j == w.end() - 1) {
           EXPECT_GT(rowMax, 0.0) << "window not tight: step " << step << " row " << j;
+        }
       }
       const pm::LoadBalance bAcc = sides[k]->accumulate(ws[k], pn[k], acc);
       const pm::CartesianLoadBalance tAcc =
@@ -489,6 +490,38 @@ TEST(TensorForceMap, WindowedAccumulateEqualsFullPath) {
   const pm::LoadBalance b = thrust.accumulate(far, pn[0], untouched);
   EXPECT_EQ(untouched, sentinel);
   EXPECT_NEAR(b.unmapped_N, b.sourceTotal_N, 1e-13 * b.sourceTotal_N);
+}
+
+// A workspace carries the axial factor of the map that filled it. Used with a map whose
+// target has the same sizes but other axial nodes it used to be accepted silently (the
+// forces were those of the wrong axial factor); now it throws naming `ws`. A map with the
+// same axial nodes and rule (here the other skirt side, another phi offset) builds the same
+// A_y and may share it: reference, its own freshly set workspace (bit-identical result).
+TEST(TensorForceMap, WorkspaceOfAnotherMapIsRejected) {
+  const double r = 0.0325;
+  const auto src =
+      pm::CylinderGrid::sector(r, pm::uniformNodes(-0.3, 0.3, 5), pm::uniformNodes(0.0, 0.03, 4));
+  const auto tgtA =
+      pm::CylinderGrid::sector(r, pm::uniformNodes(-0.5, 0.5, 3), pm::uniformNodes(0.0, 0.05, 3));
+  const auto tgtB = pm::CylinderGrid::sector(r, pm::uniformNodes(-0.5, 0.5, 3),
+                                             pm::uniformNodes(0.04, 0.09, 3));  // same sizes
+  const pm::TensorForceMap mapA(src, tgtA, 0.0), mapB(src, tgtB, 0.0), mapA2(src, tgtA, 0.1);
+  const Eigen::VectorXd p = Eigen::VectorXd::Ones(src.nodeCount());
+  Eigen::VectorXd f(tgtA.nodeCount()), f2(tgtA.nodeCount());
+  pm::TensorForceMap::Workspace wsA;
+  mapA.setAxialOffset(0.0, wsA);
+  expectInvalid([&] { (void)mapB.apply(wsA, p, f); }, "ws holds the axial factor of another map");
+  expectInvalid([&] { (void)mapB.accumulate(wsA, p, f); }, "TensorForceMap::accumulate: ws");
+  expectInvalid([&] { (void)mapB.applyTraction(wsA, p, p, p, f, f, f); }, "applyTraction: ws");
+  // Other load rule, same nodes: another A_y, rejected too.
+  const pm::TensorForceMap halfCell(src, tgtA, 0.0, pm::LoadRule::HalfCell);
+  expectInvalid([&] { (void)halfCell.apply(wsA, p, f); }, "ws");
+  // Same axial nodes and rule: shared legitimately.
+  pm::TensorForceMap::Workspace ws2;
+  mapA2.setAxialOffset(0.0, ws2);
+  (void)mapA2.apply(wsA, p, f);
+  (void)mapA2.apply(ws2, p, f2);
+  EXPECT_EQ(f, f2);
 }
 
 TEST(ForceMap, RejectsBadInputNamingTheArgument) {

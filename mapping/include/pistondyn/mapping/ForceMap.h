@@ -44,6 +44,7 @@
 // shared between threads; TensorForceMap's per-step state and scratch live in the
 // caller's TensorForceMap::Workspace (one per thread).
 
+#include <cstdint>
 #include <vector>
 
 #include <Eigen/Core>
@@ -112,11 +113,18 @@ class TensorForceMap {
   };
 
   // Per-caller state: the axial factor for the current axial offset, and scratch.
+  // A workspace belongs to the map whose setAxialOffset() filled it, or to any map with
+  // the same source and target axial nodes and load rule (they build the same A_y: e.g.
+  // the thrust- and anti-thrust-side maps of one skirt onto one liner may share it).
+  // Using it with any other map throws std::invalid_argument naming `ws` (checked by a
+  // fingerprint of those inputs, so a workspace of another map with the same sizes is not
+  // used silently).
   struct Workspace {
-    HatOverlap1D axial;      // A_y for the offset set last
-    double yOffset_m = 0.0;  // that offset
-    bool ready = false;      // setAxialOffset() was called
-    RowWindow rows;          // target rows A_y reaches at that offset
+    HatOverlap1D axial;          // A_y for the offset set last
+    double yOffset_m = 0.0;      // that offset
+    bool ready = false;          // setAxialOffset() was called
+    std::uint64_t axialKey = 0;  // fingerprint of the axial inputs A_y was built from
+    RowWindow rows;              // target rows A_y reaches at that offset
     // R A_phi P products on the reached target phi nodes (row-major: rows are written).
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> q0, q1, q2;
   };
@@ -212,6 +220,7 @@ class TensorForceMap {
   RowMajorMatrix phiPlain_, phiCos_, phiSin_;
   std::vector<PhiRun> phiRuns_;  // phiRows_ as runs of consecutive target phi nodes
   bool phiHasOutside_ = false;   // part of the source lies outside a sector target in phi
+  std::uint64_t axialKey_ = 0;   // fingerprint of source y, target y, rule (see Workspace)
 };
 
 }  // namespace pistondyn::mapping

@@ -2,6 +2,7 @@
 // Argument checks shared by the mapping sources. Every failure throws
 // std::invalid_argument whose message names the function and the argument.
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -56,6 +57,29 @@ inline void requireIncreasingNodes(const char* function, const char* argument,
       fail(function, std::string(argument) + "[" + std::to_string(k) + "] = " + str(x[k]) +
                          " must be greater than " + argument + "[" + std::to_string(k - 1) +
                          "] = " + str(x[k - 1]) + " (strictly increasing)");
+}
+
+// The closing cell of a ring, x[0] + period - x[last], must be at least this fraction of
+// the smallest other cell. A legitimately graded ring stays far above it (adjacent cells
+// differ by a few times at most); a first node repeated at the end with rounding
+// (2*pi - 1e-13) gives ~1e-13 of a cell and a closing cell that the periodic spline and
+// the force map treat as a real cell (dPhi ~ 1e13 there).
+inline constexpr double kMinClosingCellFraction = 0.01;
+
+inline void requireReasonableClosingCell(const char* function, const char* argument,
+                                         const Eigen::Ref<const Eigen::VectorXd>& x,
+                                         double period) {
+  const Eigen::Index n = x.size();
+  const double closing = x[0] + period - x[n - 1];
+  double smallestOther = x[1] - x[0];
+  for (Eigen::Index k = 2; k < n; ++k)
+    smallestOther = std::min(smallestOther, x[k] - x[k - 1]);
+  if (!(closing >= kMinClosingCellFraction * smallestOther))
+    fail(function, std::string("the closing cell ") + argument + "[0] + " + str(period) + " - " +
+                       argument + "[" + std::to_string(n - 1) + "] = " + str(closing) +
+                       " is less than 1 % of the smallest other cell (" + str(smallestOther) +
+                       "); is the first node repeated at the end? Drop it (the ring closes "
+                       "itself)");
 }
 
 }  // namespace pistondyn::mapping::detail

@@ -58,6 +58,7 @@ CylinderGrid CylinderGrid::fullCircle(double radius_m, const Eigen::VectorXd& ph
   if (!(span < kTwoPi))
     detail::fail(fn, "phi_rad spans " + detail::str(span) +
                          " rad; the closing node phi_rad[0] + 2*pi must not be repeated");
+  detail::requireReasonableClosingCell(fn, "phi_rad", phi_rad, kTwoPi);
   return CylinderGrid(radius_m, phi_rad, y_m, true);
 }
 

@@ -123,6 +123,10 @@ void calcHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceClosed,
   };
   requireSpan("sourceNodes", sourceNodes);
   requireSpan("targetNodes", targetNodes);
+  if (sourceClosed)
+    detail::requireReasonableClosingCell(fn, "sourceNodes", sourceNodes, period);
+  if (targetClosed)
+    detail::requireReasonableClosingCell(fn, "targetNodes", targetNodes, period);
   const Axis src{sourceNodes, sourceClosed, period};
   const Axis tgt{targetNodes, targetClosed, period};
   const int ns = src.n(), nt = tgt.n();

@@ -9,6 +9,7 @@
 
 #include "TestSupport.h"
 #include "pistondyn/mapping/CylinderGrid.h"
+#include "pistondyn/mapping/HatOverlap1D.h"
 
 namespace pm = pistondyn::mapping;
 using pm::test::expectInvalid;
@@ -68,6 +69,28 @@ TEST(CylinderGrid, RejectsBadNodesNamingTheArgument) {
         pm::CylinderGrid::fullCircle(0.03, vec({0.0, kPi}), y);
       },
       "phi_rad has 2 nodes");
+  // The first node repeated at the end with rounding: a closing cell of 1e-13 rad (it
+  // was accepted, giving dPhi ~ -2e13 in the Hermite surface). Reference: the 1 % rule
+  // of CylinderGrid.h, checked on both sides of the threshold (the smallest other cell is
+  // the one before the added node, 2*pi/12 minus the closing cell: 1 % of it is 5.19e-3 rad
+  // for a 5e-3 closing cell and 5.18e-3 rad for 5.5e-3).
+  {
+    Eigen::VectorXd ring(13);
+    ring.head(12) = pm::fullCircleNodes_rad(12);
+    ring[12] = 2 * kPi - 1e-13;
+    expectInvalid([&] { pm::CylinderGrid::fullCircle(0.03, ring, y); }, "closing cell");
+    pm::HatOverlap1D out;
+    expectInvalid(
+        [&] {
+          pm::calcHatOverlap1D(pm::fullCircleNodes_rad(8), true, ring, true, 2 * kPi, 0.0,
+                               pm::LoadRule::Consistent, false, out);
+        },
+        "targetNodes[0]");
+    ring[12] = 2 * kPi - 5.0e-3;  // 0.95 % of the smallest other cell
+    expectInvalid([&] { pm::CylinderGrid::fullCircle(0.03, ring, y); }, "closing cell");
+    ring[12] = 2 * kPi - 5.5e-3;  // 1.05 %: a (strongly) graded ring, accepted
+    EXPECT_NO_THROW(pm::CylinderGrid::fullCircle(0.03, ring, y));
+  }
   expectInvalid([] { pm::uniformNodes(0.0, 1.0, 1); }, "count");
   expectInvalid([] { pm::fullCircleNodes_rad(2); }, "count");
 }

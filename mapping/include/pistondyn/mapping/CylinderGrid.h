@@ -41,6 +41,9 @@ class CylinderGrid {
   // A full-circle grid (periodic in phi): like sector(), but phi_rad needs >= 3 entries
   // and the ring is closed by the cell from phi_rad[last] to phi_rad[0] + 2*pi, so the
   // node at phi_rad[0] + 2*pi must NOT be repeated (phi_rad[last] < phi_rad[0] + 2*pi).
+  // That closing cell must be at least 1 % of the smallest other phi cell: a first node
+  // repeated at the end with rounding (2*pi - 1e-13) throws instead of creating a cell
+  // 1e-13 rad wide.
   static CylinderGrid fullCircle(double radius_m, const Eigen::VectorXd& phi_rad,
                                  const Eigen::VectorXd& y_m);
 

@@ -79,8 +79,9 @@ struct HatOverlap1D {
 //   rule                       target basis (hat or half-cell indicator)
 //   withTrig                   also compute the cos/sin-weighted integrals (angles only)
 // Throws std::invalid_argument naming the argument: nodes not finite or not strictly
-// increasing, fewer than 2 (3 when closed), spanning a period or more; non-finite offset
-// or period; period <= 0 with a closed grid.
+// increasing, fewer than 2 (3 when closed), spanning a period or more, a closing cell of a
+// closed grid below 1 % of its smallest other cell; non-finite offset or period;
+// period <= 0 with a closed grid.
 void calcHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceClosed,
                       const Eigen::VectorXd& targetNodes, bool targetClosed, double period,
                       double offset, LoadRule rule, bool withTrig, HatOverlap1D& out);

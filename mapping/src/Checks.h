@@ -10,6 +10,8 @@
 
 #include <Eigen/Core>
 
+#include "pistondyn/mapping/CylinderGrid.h"
+
 namespace pistondyn::mapping::detail {
 
 [[noreturn]] inline void fail(const char* function, const std::string& what) {
@@ -26,6 +28,13 @@ inline std::string str(double v) {
 inline void requireFiniteScalar(const char* function, const char* argument, double v) {
   if (!std::isfinite(v))
     fail(function, std::string(argument) + " = " + str(v) + " must be finite");
+}
+
+// An angle: finite and within +-kMaxAbsAngle_rad (CylinderGrid.h).
+inline void requireAngle(const char* function, const char* argument, double v) {
+  if (!(std::abs(v) <= kMaxAbsAngle_rad))
+    fail(function, std::string(argument) + " = " + str(v) +
+                       " rad must be finite and within +-1e6 rad (kMaxAbsAngle_rad)");
 }
 
 // Size check, then every entry finite (the first offending index is named).

@@ -41,6 +41,8 @@ CylinderGrid CylinderGrid::sector(double radius_m, const Eigen::VectorXd& phi_ra
   checkRadius(fn, radius_m);
   detail::requireIncreasingNodes(fn, "phi_rad", phi_rad, 2);
   detail::requireIncreasingNodes(fn, "y_m", y_m, 2);
+  detail::requireAngle(fn, "phi_rad[0]", phi_rad[0]);
+  detail::requireAngle(fn, "phi_rad[last]", phi_rad[phi_rad.size() - 1]);
   const double span = phi_rad[phi_rad.size() - 1] - phi_rad[0];
   if (!(span < kTwoPi))
     detail::fail(fn, "phi_rad spans " + detail::str(span) +
@@ -54,6 +56,8 @@ CylinderGrid CylinderGrid::fullCircle(double radius_m, const Eigen::VectorXd& ph
   checkRadius(fn, radius_m);
   detail::requireIncreasingNodes(fn, "phi_rad", phi_rad, 3);
   detail::requireIncreasingNodes(fn, "y_m", y_m, 2);
+  detail::requireAngle(fn, "phi_rad[0]", phi_rad[0]);
+  detail::requireAngle(fn, "phi_rad[last]", phi_rad[phi_rad.size() - 1]);
   const double span = phi_rad[phi_rad.size() - 1] - phi_rad[0];
   if (!(span < kTwoPi))
     detail::fail(fn, "phi_rad spans " + detail::str(span) +

@@ -111,7 +111,7 @@ void checkOutput(const char* fn, const char* argument, Eigen::Index size, int ex
 TensorForceMap::TensorForceMap(const CylinderGrid& source, const CylinderGrid& target,
                                double phiOffset_rad, LoadRule rule)
     : source_(source), target_(target), phiOffset_rad_(phiOffset_rad), rule_(rule) {
-  detail::requireFiniteScalar("TensorForceMap", "phiOffset_rad", phiOffset_rad);
+  detail::requireAngle("TensorForceMap", "phiOffset_rad", phiOffset_rad);
   calcHatOverlap1D(source.phi_rad(), source.isClosed(), target.phi_rad(), target.isClosed(), kTwoPi,
                    phiOffset_rad, rule, /*withTrig=*/true, phi_);
   // Compact dense copy of A_phi restricted to the target phi nodes it reaches (a skirt
@@ -323,7 +323,7 @@ CartesianLoadBalance TensorForceMap::mapTraction(
 // ---------------------------------------------------------------------------------------
 ForceMap::ForceMap(const CylinderGrid& source, const CylinderGrid& target,
                    GridOffset sourceInTarget, LoadRule rule) {
-  detail::requireFiniteScalar("ForceMap", "sourceInTarget.phi_rad", sourceInTarget.phi_rad);
+  detail::requireAngle("ForceMap", "sourceInTarget.phi_rad", sourceInTarget.phi_rad);
   detail::requireFiniteScalar("ForceMap", "sourceInTarget.y_m", sourceInTarget.y_m);
   const TensorForceMap factors(source, target, sourceInTarget.phi_rad, rule);
   TensorForceMap::Workspace ws;

@@ -114,6 +114,12 @@ void calcHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceClosed,
   detail::requireFiniteScalar(fn, "period", period);
   if ((sourceClosed || targetClosed) && !(period > 0.0))
     detail::fail(fn, "period = " + detail::str(period) + " must be positive for a closed grid");
+  // With a period the overlaps are found by counting periods from the offset: keep it
+  // within kMaxAbsAngle_rad's number of turns (the counts stay exact integers).
+  constexpr double kMaxTurns = kMaxAbsAngle_rad / 6.283185307179586;
+  if (period > 0.0 && !(std::abs(offset) <= kMaxTurns * period))
+    detail::fail(fn, "offset = " + detail::str(offset) + " must be within +-" +
+                         detail::str(kMaxTurns) + " periods");
   detail::requireIncreasingNodes(fn, "sourceNodes", sourceNodes, sourceClosed ? 3 : 2);
   detail::requireIncreasingNodes(fn, "targetNodes", targetNodes, targetClosed ? 3 : 2);
   auto requireSpan = [&](const char* argument, const Eigen::VectorXd& x) {

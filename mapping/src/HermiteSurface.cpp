@@ -229,7 +229,7 @@ void HermiteSurface::locateY(const char* fn, double y_m, OutsidePolicy outside, 
 
 HermiteSample HermiteSurface::evaluate(double phi_rad, double y_m, OutsidePolicy outside) const {
   const char* fn = "HermiteSurface::evaluate";
-  detail::requireFiniteScalar(fn, "phi_rad", phi_rad);
+  detail::requireAngle(fn, "phi_rad", phi_rad);
   detail::requireFiniteScalar(fn, "y_m", y_m);
   int ci = 0, cj = 0;
   double t = 0.0, u = 0.0;
@@ -241,7 +241,7 @@ HermiteSample HermiteSurface::evaluate(double phi_rad, double y_m, OutsidePolicy
 void HermiteSurface::prepareGrid(const char* fn, const CylinderGrid& points, GridOffset offset,
                                  Eigen::Index outputSize, HermiteGridWorkspace& ws,
                                  OutsidePolicy outside) const {
-  detail::requireFiniteScalar(fn, "offset.phi_rad", offset.phi_rad);
+  detail::requireAngle(fn, "offset.phi_rad", offset.phi_rad);
   detail::requireFiniteScalar(fn, "offset.y_m", offset.y_m);
   if (outputSize != points.nodeCount())
     detail::fail(fn, "output has " + std::to_string(outputSize) + " entries, expected " +

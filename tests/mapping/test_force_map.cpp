@@ -548,6 +548,9 @@ TEST(ForceMap, RejectsBadInputNamingTheArgument) {
                 "setAxialOffset");
   expectInvalid([&] { tensor.setAxialOffset(nan, ws); }, "yOffset_m");
   expectInvalid([&] { pm::TensorForceMap(src, tgt, nan); }, "phiOffset_rad");
+  // Absurd angles throw (reducing 1e300 modulo 2*pi keeps no digit).
+  expectInvalid([&] { pm::TensorForceMap(src, tgt, 1e300); }, "phiOffset_rad");
+  expectInvalid([&] { pm::ForceMap(src, tgt, {-1e300, 0.0}); }, "sourceInTarget.phi_rad");
 }
 
 // The 1-D building block checks its own arguments (it is public).

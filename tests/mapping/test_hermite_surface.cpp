@@ -272,8 +272,27 @@ TEST(HermiteSurface, RejectsBadInputNamingTheArgument) {
   pm::HermiteSurface surface(grid, v);
   expectInvalid([&] { surface.updateValues(Eigen::VectorXd::Ones(3)); }, "values has 3");
   expectInvalid([&] { surface.evaluate(nan, 0.01); }, "phi_rad");
+  // Absurd angles: the reduction modulo 2*pi of 1e300 keeps no digit (it used to return
+  // garbage); within the bound it is exact to ~1e-10 rad (reference: the same point
+  // given at its reduced angle, 159154 turns back).
+  expectInvalid([&] { surface.evaluate(1e300, 0.01); }, "HermiteSurface::evaluate: phi_rad");
+  expectInvalid([&] { surface.evaluate(-2e6, 0.01); }, "kMaxAbsAngle_rad");
+  {
+    Eigen::VectorXd w(grid.nodeCount());
+    for (int k = 0; k < w.size(); ++k)
+      w[k] = std::sin(0.7 * k);  // O(1) values, slopes O(10) per rad
+    const pm::HermiteSurface varied(grid, w);
+    const double turns = 159154.0, phi = 0.5 * (grid.phi_rad()[1] + grid.phi_rad()[2]);
+    const double y = 0.5 * (grid.y_m()[1] + grid.y_m()[2]);
+    const pm::HermiteSample far = varied.evaluate(phi + turns * 2.0 * kPi, y);
+    const pm::HermiteSample near = varied.evaluate(phi, y);
+    // 1e6 rad carries an ulp of 1.2e-10 rad and the reduction a few of them.
+    EXPECT_NEAR(far.value, near.value, 1e-8);
+  }
   expectInvalid([&] { surface.evaluateInCell(99, 0, 0.5, 0.5); }, "cell (99, 0)");
   pm::HermiteGridWorkspace ws;
   Eigen::VectorXd out(3);
   expectInvalid([&] { surface.evaluateOnGrid(grid, {}, out, ws); }, "output has 3");
+  Eigen::VectorXd full(grid.nodeCount());
+  expectInvalid([&] { surface.evaluateOnGrid(grid, {1e300, 0.0}, full, ws); }, "offset.phi_rad");
 }

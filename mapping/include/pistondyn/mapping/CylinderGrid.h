@@ -19,6 +19,12 @@
 
 namespace pistondyn::mapping {
 
+// Largest |angle| accepted anywhere in pistondyn::mapping (node angles, offsets, evaluation
+// points) [rad]: 1e6 rad, about 159,000 turns. Reducing such an angle modulo 2*pi costs at
+// most ~2e-10 rad of accuracy; far beyond it the reduction returns garbage (at 1e300 every
+// digit is lost), so larger angles throw std::invalid_argument naming the argument.
+inline constexpr double kMaxAbsAngle_rad = 1e6;
+
 // Position of one grid's coordinate origin in another grid's frame: a node at
 // (phi, y) of the moving grid lies at (phi + phi_rad, y + y_m) of the fixed grid.
 struct GridOffset {
@@ -31,7 +37,8 @@ class CylinderGrid {
   // A sector grid (open in phi).
   // Inputs:
   //   radius_m  surface radius R [m], > 0 and finite
-  //   phi_rad   node angles [rad], >= 2 entries, finite, strictly increasing,
+  //   phi_rad   node angles [rad], >= 2 entries, finite, |phi| <= kMaxAbsAngle_rad,
+  //             strictly increasing,
   //             phi_rad[last] - phi_rad[0] < 2*pi (use fullCircle() for a closed ring)
   //   y_m       axial node positions [m], >= 2 entries, finite, strictly increasing
   // Throws std::invalid_argument naming the offending argument.

@@ -107,8 +107,10 @@ class HermiteSurface {
   Eigen::Matrix4d cellCoefficients(int i, int j) const;
 
   // Value and derivatives at (phi_rad, y_m) of this grid's frame. phi is taken modulo
-  // 2*pi. Throws std::invalid_argument for non-finite coordinates, and for points
-  // outside the grid under OutsidePolicy::Throw.
+  // 2*pi. Throws std::invalid_argument for non-finite coordinates, |phi_rad| above
+  // kMaxAbsAngle_rad (1e6 rad; the reduction modulo 2*pi would lose every digit, e.g. at
+  // 1e300), and for points outside the grid under OutsidePolicy::Throw. The same bound
+  // applies to evaluateOnGrid's offset.phi_rad.
   HermiteSample evaluate(double phi_rad, double y_m,
                          OutsidePolicy outside = OutsidePolicy::Throw) const;
 

@@ -369,7 +369,14 @@ TEST(ForceMap, PartialOverlapReportsTheUnmappedForce) {
 // The liner path: a 64 x 48 contact field onto a 36 x 400 full-circle liner while the
 // piston moves (partly beyond both liner ends at the extremes). Updating only the axial
 // factor in one reused workspace must give the same forces and balance as a ForceMap
-// rebuilt from scratch at every offset (reference: the full rebuild) to 1e-13.
+// rebuilt from scratch at every offset, to 1e-13.
+// What this does and does not check: the ForceMap is assembled from the same
+// TensorForceMap / calcHatOverlap1D factors (as kron(A_y, A_phi)), so the reference is not
+// independent of the 1-D integrals. It checks the Kronecker assembly against the tensor
+// application and the reuse of one workspace across offsets (no stale state). The 1-D
+// integrals themselves are checked independently, against Gauss integration of the
+// clipped source cells, by ForceMap.StaticEquivalenceOnRandomGridPairs and the other
+// tests of this file.
 TEST(TensorForceMap, AxialUpdateEqualsFullRebuild) {
   std::mt19937 rng(15);
   const double r = 0.0325;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <random>
 #include <vector>
@@ -174,6 +175,12 @@ TEST(HermiteSurface, ConvergesAtFourthOrderOnSmoothData) {
 // and all derivatives must agree from both sides (reference: each other; both interpolate
 // the same nodal data, so only rounding may differ: 1e-13 of the quantity's scale).
 // Also: evaluating at phi and phi + 2*pi gives the same result.
+// Note: C1 at the seam is true by construction (both cells take the same nodal value and
+// slopes, and the Hermite basis reproduces them exactly at a cell edge), so this test
+// guards the seam's bookkeeping (indices, closing-cell width, wrapping), not the slopes.
+// That the slopes are right (the periodic spline's, across the seam too) is checked by
+// ConvergesAtFourthOrderOnSmoothData (wrong seam slopes would drop the order to 1-2
+// there) and by FourierModeErrorOnAFullCircleMatchesTheClosedForm.
 TEST(HermiteSurface, IsC1AcrossThePeriodicSeam) {
   std::mt19937 rng(5);
   const Eigen::VectorXd phi = pm::test::randomNodes(rng, 0.4, 0.4 + 2 * kPi - 0.3, 17);
@@ -203,6 +210,59 @@ TEST(HermiteSurface, IsC1AcrossThePeriodicSeam) {
     wrap.add(surface.evaluate(p, q), surface.evaluate(p - 4 * kPi, q));
   }
   wrap.expectRelativeBelow(1e-13);
+}
+
+// Resolution of a full-circle grid for bore distortion (Fourier orders 0..12 along the
+// circumference, DESIGN.md section 4). Reference: the closed form of the periodic cubic
+// spline's error for one Fourier mode on n uniform nodes, derived by hand, sharing nothing
+// with the library: the spline slopes of e^{ik phi} are m_j = c f_j with
+// c h = 3 i sin(theta) / (2 + cos(theta)), theta = k h = 2 pi k / n, and at a cell
+// midpoint the Hermite interpolant differs from e^{ik phi} by a factor of modulus
+//   e(theta) = |1 - cos(theta/2) - 3 sin(theta) sin(theta/2) / (4 (2 + cos(theta)))|,
+// the largest error over the cell. The complex mode is interpolated as two surfaces
+// (cos, sin), so the error modulus is seen at every midpoint whatever the phase.
+// Figures: 36 nodes: order 8 -> 1.55 %, order 12 -> 12.5 % of the amplitude; 72 nodes:
+// order 12 -> 0.41 %; 1 % needs 4.94 nodes per wavelength (order 12: 60 nodes), 0.1 %
+// needs 8.27 (order 12: 100 nodes). mapping/README.md gives the rule.
+TEST(HermiteSurface, FourierModeErrorOnAFullCircleMatchesTheClosedForm) {
+  const Eigen::VectorXd y = pm::uniformNodes(0.0, 0.1, 2);
+  auto closedForm = [](double theta) {
+    return std::abs(1.0 - std::cos(theta / 2) -
+                    3.0 * std::sin(theta) * std::sin(theta / 2) / (4.0 * (2.0 + std::cos(theta))));
+  };
+  struct Case {
+    int nodes, order;
+    double expectedPercent;  // closed form, for the record
+  };
+  for (const Case c : {Case{36, 2, 0.0040}, Case{36, 8, 1.5536}, Case{36, 12, 12.5},
+                       Case{72, 8, 0.0697}, Case{72, 12, 0.4071}, Case{144, 12, 0.0209}}) {
+    const auto grid = pm::CylinderGrid::fullCircle(0.0325, pm::fullCircleNodes_rad(c.nodes), y);
+    Eigen::VectorXd re(grid.nodeCount()), im(grid.nodeCount());
+    for (int j = 0; j < grid.nY(); ++j)
+      for (int i = 0; i < grid.nPhi(); ++i) {
+        re[grid.index(i, j)] = std::cos(c.order * grid.phi_rad()[i]);
+        im[grid.index(i, j)] = std::sin(c.order * grid.phi_rad()[i]);
+      }
+    const pm::HermiteSurface cosSurface(grid, re), sinSurface(grid, im);
+    const double h = 2 * kPi / c.nodes;
+    const double expected = closedForm(c.order * h);
+    EXPECT_NEAR(100.0 * expected, c.expectedPercent, 5e-4)
+        << c.nodes << " nodes, order " << c.order;
+    double worstMid = 0.0, worstAnywhere = 0.0;
+    for (int i = 0; i < c.nodes; ++i)
+      for (double t : {0.1, 0.25, 0.4, 0.5, 0.6, 0.75, 0.9}) {
+        const double phi = (i + t) * h;
+        const std::complex<double> spline(cosSurface.evaluate(phi, 0.05).value,
+                                          sinSurface.evaluate(phi, 0.05).value);
+        const double error = std::abs(spline - std::polar(1.0, c.order * phi));
+        worstAnywhere = std::max(worstAnywhere, error);
+        if (t == 0.5)
+          worstMid = std::max(worstMid, error);
+      }
+    // Rounding only (values O(1), 1e-12); the midpoint is the worst point of a cell.
+    EXPECT_NEAR(worstMid, expected, 1e-12) << c.nodes << " nodes, order " << c.order;
+    EXPECT_LE(worstAnywhere, expected + 1e-12) << c.nodes << " nodes, order " << c.order;
+  }
 }
 
 // Reference: the bicubic polynomial at the target nodes. A 17 x 30 structural field read

@@ -127,10 +127,14 @@ constexpr double kPhiFCutoffEpsStar = 1.0 / 300.0;
 // value there is 0.0275, gamma = 1/9 at H = 1) and stops the phi_fp fits before they
 // cross zero (at H = 0.79, 0.76, 0.66, 0.51 for gamma = 1/9, 1/6, 1/3, 1).
 constexpr double kExpFitFloor = 0.02;
+// The continuation's limit as H -> 0 (kPressureFactorFloor, PatirChengFactors.h).
+constexpr double kContinuationFloor = kPressureFactorFloor;
+static_assert(kContinuationFloor < kExpFitFloor, "the continuation starts above its floor");
 
 // 1 - C exp(-r H), used from Hlo = max(Hmin, H where the fit equals kExpFitFloor);
-// below Hlo: phi(Hlo) (H / Hlo)^k with k = Hlo phi'(Hlo) / phi(Hlo), which matches value
-// and slope at Hlo, is positive, increasing, and tends to 0 as H -> 0.
+// below Hlo: f0 + (phi(Hlo) - f0) (H / Hlo)^k, f0 = kContinuationFloor, with
+// k = Hlo phi'(Hlo) / (phi(Hlo) - f0), which matches value and slope at Hlo (C1), is
+// increasing, and tends to the floor f0 > 0 as H -> 0.
 // The fit rises with H, so "H >= Hlo" is "H >= Hmin and fit(H) >= floor"; testing it that
 // way keeps the logarithm for Hlo off the common path.
 double exponentialFitWithContinuation(double C, double r, double Hmin, double H) {
@@ -145,10 +149,10 @@ double exponentialFitWithContinuation(double C, double r, double Hmin, double H)
     Hlo = std::max(Hmin, std::log(C / (1.0 - kExpFitFloor)) / r);
   }
   const double e = std::exp(-r * Hlo);
-  const double phiLo = 1.0 - C * e;
+  const double aboveFloor = 1.0 - C * e - kContinuationFloor;  // phi(Hlo) - f0 > 0
   const double slopeLo = C * r * e;
-  const double k = Hlo * slopeLo / phiLo;
-  return phiLo * std::pow(H / Hlo, k);
+  const double k = Hlo * slopeLo / aboveFloor;
+  return kContinuationFloor + aboveFloor * std::pow(H / Hlo, k);
 }
 
 // 1 + C H^-r, held at its value at Hmin below Hmin (it would grow without bound).

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <stdexcept>
@@ -263,8 +264,8 @@ TEST(PatirChengFactors, DesignNoteFitReproducesTable1) {
 
 // Below the papers' range (the skirt reaches H < 0.5 in asperity contact) every factor
 // stays finite and positive, is continuous, and is monotone: pressure flow and phi_fp
-// rise from 0 at H -> 0 for gamma <= 1 (flow blocked by contacts) and stay constant for
-// the longitudinal rows; Phi_s and Phi_fs rise from 0.
+// rise from their floor 1e-3 at H -> 0 for gamma <= 1 (flow blocked by contacts) and stay constant
+// for the longitudinal rows; Phi_s and Phi_fs rise from 0.
 TEST(PatirChengFactors, LowHTreatmentIsPositiveContinuousMonotone) {
   const std::vector<double> gammas = {1.0 / 9.0, 1.0 / 6.0, 0.25, 1.0 / 3.0, 0.6, 1.0,
                                       1.7,       3.0,       4.5,  6.0,       9.0};
@@ -303,10 +304,103 @@ TEST(PatirChengFactors, LowHTreatmentIsPositiveContinuousMonotone) {
       previousFs = fs;
     }
   }
-  // H -> 0: the flow-blocking factors tend to 0, the held ones to their H = 0.5 value.
+  // H -> 0: the flow-blocking factors tend to their floor (1e-3, checked exactly in
+  // PressureAndPoiseuilleFactorsAreFlooredAsHGoesToZero), the held ones to their H = 0.5 value.
   EXPECT_LT(pc::calcPressureFlowFactor(1e-6, 1.0), 1e-2);
   EXPECT_NEAR(pc::calcPressureFlowFactor(1e-6, 9.0), 1.0 + 0.87 * std::pow(0.5, -1.5), kRoundoff);
   EXPECT_LT(pc::calcShearStressFactorF(1e-9), 1e-7);
+}
+
+// Where the exponential fits hand over to their continuation, H_lo = max(H_min, H where
+// the fit is 0.02), value AND slope must be continuous (the integrator and the film's
+// Newton iterations see the factor and, through the conductance, its slope). Reference:
+// H_lo and the fit's value and slope there, computed here from the printed constants
+// ([PC78] Table 1, [PC79] phi_fp table, DESIGN.md fit). Value: within 1e-12 of the fit at
+// H_lo just below and above it (a jump of 0.005 fails by 9 orders of magnitude). Slope:
+// one-sided second-order differences (step 1e-5, truncation ~1e-9 of the slope) on each
+// side within 1e-6 of the fit's slope.
+TEST(PatirChengFactors, ContinuationMatchesValueAndSlopeAtHlo) {
+  struct Row {
+    const char* what;
+    double C, r, Hmin;
+    std::function<double(double)> phi;
+  };
+  const double gDesign9 = 1.0 / 9.0, gDesign3 = 1.0 / 3.0;
+  auto designC = [](double g) { return 0.89679 - 0.26591 * std::log(g); };
+  auto designR = [](double g) { return 0.43006 - 0.10828 * g + 0.23821 * g * g; };
+  const std::vector<Row> rows = {
+      {"phi_x 1/9", 1.48, 0.42, 1.0,
+       [](double H) { return pc::calcPressureFlowFactor(H, kGammas[0]); }},
+      {"phi_x 1/6", 1.38, 0.42, 1.0,
+       [](double H) { return pc::calcPressureFlowFactor(H, kGammas[1]); }},
+      {"phi_x 1/3", 1.18, 0.42, 0.75,
+       [](double H) { return pc::calcPressureFlowFactor(H, kGammas[2]); }},
+      {"phi_x 1", 0.90, 0.56, 0.5, [](double H) { return pc::calcPressureFlowFactor(H, 1.0); }},
+      {"phi_y 9 (= phi_x 1/9)", 1.48, 0.42, 1.0,
+       [](double H) { return pc::calcPressureFlowFactor(H, 1.0 / 9.0); }},
+      {"phi_fp 1/9", 1.51, 0.52, 0.5,
+       [](double H) { return pc::calcShearStressFactorFp(H, kGammas[0]); }},
+      {"phi_fp 1/6", 1.51, 0.54, 0.5,
+       [](double H) { return pc::calcShearStressFactorFp(H, kGammas[1]); }},
+      {"phi_fp 1/3", 1.47, 0.58, 0.5,
+       [](double H) { return pc::calcShearStressFactorFp(H, kGammas[2]); }},
+      {"phi_fp 1", 1.40, 0.66, 0.5, [](double H) { return pc::calcShearStressFactorFp(H, 1.0); }},
+      {"phi_fp 3", 0.98, 0.79, 0.5, [](double H) { return pc::calcShearStressFactorFp(H, 3.0); }},
+      {"phi_fp 6", 0.97, 0.91, 0.5, [](double H) { return pc::calcShearStressFactorFp(H, 6.0); }},
+      {"phi_fp 9", 0.73, 0.91, 0.5, [](double H) { return pc::calcShearStressFactorFp(H, 9.0); }},
+      {"design fit 1/9", designC(gDesign9), designR(gDesign9), 0.5,
+       [=](double H) {
+         return pc::calcPressureFlowFactor(H, gDesign9, pc::PressureFlowGammaModel::kDesignNoteFit);
+       }},
+      {"design fit 1/3", designC(gDesign3), designR(gDesign3), 0.5,
+       [=](double H) {
+         return pc::calcPressureFlowFactor(H, gDesign3, pc::PressureFlowGammaModel::kDesignNoteFit);
+       }},
+  };
+  for (const Row& row : rows) {
+    const double Hlo = std::max(row.Hmin, row.C > 0.98 ? std::log(row.C / 0.98) / row.r : 0.0);
+    const double value = 1.0 - row.C * std::exp(-row.r * Hlo);
+    const double slope = row.C * row.r * std::exp(-row.r * Hlo);
+    ASSERT_GE(value, 0.02 - 1e-12) << row.what;
+    const double delta = 1e-9;
+    EXPECT_NEAR(row.phi(Hlo - delta), value, slope * delta + 1e-12) << row.what;
+    EXPECT_NEAR(row.phi(Hlo + delta), value, slope * delta + 1e-12) << row.what;
+    const double d = 1e-5;
+    const double left = (3 * row.phi(Hlo) - 4 * row.phi(Hlo - d) + row.phi(Hlo - 2 * d)) / (2 * d);
+    const double right =
+        (-3 * row.phi(Hlo) + 4 * row.phi(Hlo + d) - row.phi(Hlo + 2 * d)) / (2 * d);
+    EXPECT_NEAR(left / slope, 1.0, 1e-6) << row.what << ", H_lo = " << Hlo;
+    EXPECT_NEAR(right / slope, 1.0, 1e-6) << row.what << ", H_lo = " << Hlo;
+  }
+}
+
+// The continuations tend to the documented floor (1e-3) as H -> 0 and never go below it,
+// for tabulated and interpolated gamma; before the floor phi_x(1e-3, 1/9) was 1e-46 and
+// phi_x, phi_fp were exactly 0 from H ~ 1e-21 / 1e-15 (reference: the floor's definition).
+TEST(PatirChengFactors, PressureAndPoiseuilleFactorsAreFlooredAsHGoesToZero) {
+  EXPECT_EQ(pc::kPressureFactorFloor, 1e-3);
+  for (const double gamma : {1.0 / 9.0, 0.14, 1.0 / 6.0, 0.25, 1.0 / 3.0, 0.7, 1.0, 2.0, 9.0}) {
+    for (const double H : {1e-300, 1e-100, 1e-21, 1e-15, 1e-6, 1e-3, 0.1, 0.4}) {
+      const double px = pc::calcPressureFlowFactor(H, gamma);
+      const double py = pc::calcPressureFlowFactor(H, 1.0 / gamma);
+      const double fp = pc::calcShearStressFactorFp(H, gamma);
+      ASSERT_GE(px, 1e-3) << gamma << " " << H;
+      ASSERT_GE(py, 1e-3) << gamma << " " << H;
+      ASSERT_GE(fp, 1e-3) << gamma << " " << H;
+      ASSERT_GE(pc::calcPressureFlowFactor(H, gamma, pc::PressureFlowGammaModel::kDesignNoteFit),
+                1e-3)
+          << gamma << " " << H;
+    }
+    // At H = 1e-300 every continuation has reached its floor (the blocking rows) or is a
+    // held power-law row (> 1).
+    const double px = pc::calcPressureFlowFactor(1e-300, gamma);
+    if (gamma <= 1.0) {
+      EXPECT_NEAR(px, 1e-3, 1e-15) << gamma;
+    }
+    EXPECT_NEAR(pc::calcShearStressFactorFp(1e-300, gamma), 1e-3, 1e-15) << gamma;
+  }
+  // At H = 1e-3 the gamma = 1/9 row is essentially at the floor: it was 1e-46.
+  EXPECT_NEAR(pc::calcPressureFlowFactor(1e-3, 1.0 / 9.0), 1e-3, 1e-15);
 }
 
 TEST(PatirChengFactors, BadInputThrowsNamingTheArgument) {

@@ -42,21 +42,34 @@ enum class PressureFlowGammaModel {
   kDesignNoteFit,
 };
 
+// Smallest value of the pressure flow factors phi_x, phi_y and of phi_fp [-]: their
+// continuations below the fitted range tend to it as H -> 0 instead of to 0.
+// Why a floor, and why 1e-3: below H_lo there are no data (P&C simulated H >= 0.5); the
+// fits' own continuation towards the percolation limit is an extrapolation, not physics,
+// and without a floor it fell to 1e-46 at H = 1e-3 (gamma = 1/9) and to exactly 0 near
+// H = 1e-21 (phi_fp near 1e-15), breaking the "> 0" contract and making the film matrix
+// singular where contacts close the gap. 1e-3 keeps the ratio of conductances that phi
+// adds to the film matrix (on top of h^3) below 1e3, while a node at the floor passes only
+// 0.1 % of the flow of a smooth film of the same gap, i.e. flow is still blocked for any
+// load or friction result (the contact law carries the load there anyway).
+inline constexpr double kPressureFactorFloor = 1e-3;
+
 // Pressure flow factor phi_x(H, gamma) of [PC78] for flow along x (the direction in
 // which gamma's numerator correlation length lies). The factor across is
 // phi_y(H, gamma) = phi_x(H, 1/gamma) [PC78].
 // Below the paper's lower validity bound H_lo (1 for gamma = 1/9 and 1/6, 0.75 for 1/3,
 // 0.5 otherwise; raised where the fit would fall below 0.02) the factor is continued
 // so that it stays positive, continuous and monotone: rows of the form 1 - C exp(-r H)
-// continue as phi(H_lo) (H/H_lo)^k with k matching the slope at H_lo (C1, tending to 0
-// as H -> 0, where flow is blocked by contacts); rows of the form 1 + C H^-r keep their
-// value at H_lo (they would grow without bound).
+// continue as f0 + (phi(H_lo) - f0) (H/H_lo)^k, f0 = kPressureFactorFloor, with k matching
+// the slope at H_lo (value and slope continuous at H_lo; tends to the floor f0 = 1e-3 as
+// H -> 0, where flow is blocked by contacts); rows of the form 1 + C H^-r keep their value
+// at H_lo (they would grow without bound).
 // Inputs:
 //   H      film parameter h/sigma, finite and > 0 [-]
 //   gamma  Peklenik number of the composite roughness, finite and > 0 [-]
 //   model  how gamma between and beyond the tabulated values is handled
 // Outputs:
-//   returns phi_x > 0 [-]; tends to 1 as H -> infinity.
+//   returns phi_x >= kPressureFactorFloor [-]; tends to 1 as H -> infinity.
 double calcPressureFlowFactor(
     double H, double gamma, PressureFlowGammaModel model = PressureFlowGammaModel::kTableLogGamma);
 
@@ -101,13 +114,13 @@ double calcShearStressFactorFs(double H, double gamma);
 // Poiseuille shear-stress factor phi_fp(H, gamma) = 1 - D exp(-s H) of [PC79] for the
 // composite roughness. Below H_lo (0.5, raised where the fit would fall below 0.02; the
 // gamma <= 1 fits cross zero between H = 0.51 and 0.79) it continues as
-// phi(H_lo) (H/H_lo)^k, C1, positive, -> 0 as H -> 0. Gamma handled as
-// calcPressureFlowFactor with kTableLogGamma.
+// f0 + (phi(H_lo) - f0) (H/H_lo)^k, C1 at H_lo, -> f0 = kPressureFactorFloor as H -> 0.
+// Gamma handled as calcPressureFlowFactor with kTableLogGamma.
 // Inputs:
 //   H      film parameter, finite and > 0 [-]
 //   gamma  Peklenik number of the composite roughness, finite and > 0 [-]
 // Outputs:
-//   returns phi_fp > 0 [-]; tends to 1 as H -> infinity.
+//   returns phi_fp >= kPressureFactorFloor [-]; tends to 1 as H -> infinity.
 double calcShearStressFactorFp(double H, double gamma);
 
 }  // namespace pistondyn::lubrication::patir_cheng

@@ -62,6 +62,18 @@ class PatirChengFlowFactors final : public FlowFactorModel {
   //   phiF = phi_f(H); phiFs = Vr1 Phi_fs(H, gamma1) - Vr2 Phi_fs(H, gamma2);
   //   phiFp = phi_fp(H, gammaC).
   // Throws std::invalid_argument if h_m is not positive and finite.
+  //
+  // Gap clamp for h -> 0 (asperity contact closing the film). For every h > 0 the factors
+  // are bounded: phi_x, phi_y, phi_fp >= kPressureFactorFloor (1e-3), Phi_s, Phi_fs, phi_f
+  // -> 0 and h_T > 0; below H ~ 0.5 they are continuations, not data. But the film's
+  // conductance carries the nominal h^3 and the film solver needs h > 0, so the caller
+  // (the gap assembly) must hand the film a positive gap where the nominal one closes or
+  // turns negative. Recommended: a smooth (C-infinity) clamp that is >= h_c everywhere,
+  //   h_film = (h + h_c + sqrt((h - h_c)^2 + h_c^2)) / 2,   h_c = 0.1 sigma,
+  // which changes the film gap by < 1.2 % at H >= 0.5 (the bottom of P&C's data) and
+  // < 0.3 % at H >= 1, and keeps the gap ratio of a skirt film (h up to ~100 um, sigma
+  // ~0.5 um) near 2000. The asperity contact law gets the unclamped h (it carries the
+  // load there). A hard max(h, h_c) would put a kink in the film forces.
   NodeFlowFactors calcFactors(double h_m) const override;
 
   // sqrt(Rq1^2 + Rq2^2) [m].

@@ -116,10 +116,10 @@ constexpr std::array<ShearStressFpRow, kRows> kShearStressFp = {{
 }};
 constexpr double kShearStressFpHmin = 0.5;
 
-// phi_f cut-off: the local film is taken as at least eps = eps* * 3 sigma = 0.01 sigma
-// where asperities touch; eps* = 1/300 as in [RB] (ln(300 (z + 1))). The H <= 3 branch
-// is the only one with contacts, so only it carries eps*.
-constexpr double kPhiFCutoffEpsStar = 1.0 / 300.0;
+// phi_f cut-off: the local film is taken as at least eps = eps* * 3 sigma (0.01 sigma
+// for the default eps* = 1/300 of [RB], ln(300 (z + 1))) where asperities touch. The
+// H <= 3 branch is the only one with contacts, so only it carries eps* (a parameter:
+// kDefaultPhiFCutoff, PatirChengFactors.h).
 
 // Smallest value an exponential-type fit (1 - C exp(-r H)) is used down to; below it
 // (or below the paper's bound, whichever H is larger) the C1 power-law continuation
@@ -285,14 +285,20 @@ double calcShearStressFactorFp(double H, double gamma) {
   return detail::blend(detail::bracketGamma(gamma), H, detail::shearStressFpRow);
 }
 
-double calcShearStressFactorF(double H) {
+double calcShearStressFactorF(double H, double epsStar) {
   checkH("calcShearStressFactorF", H);
+  if (!(epsStar > 0.0 && epsStar <= kMaxPhiFCutoff)) {
+    std::ostringstream msg;
+    msg << "patir_cheng::calcShearStressFactorF: cut-off epsStar = " << epsStar
+        << " must be in (0, " << kMaxPhiFCutoff << "] (default 1/300)";
+    throw std::invalid_argument(msg.str());
+  }
   const double z = H / 3.0;
   if (z <= 1.0) {
     const double a = 1.0 - z * z;
     const double poly =
         -55.0 + z * (132.0 + z * (345.0 + z * (-160.0 + z * (-405.0 + z * (60.0 + 147.0 * z)))));
-    return 35.0 / 32.0 * z * (a * a * a * std::log((1.0 + z) / kPhiFCutoffEpsStar) + poly / 60.0);
+    return 35.0 / 32.0 * z * (a * a * a * std::log((1.0 + z) / epsStar) + poly / 60.0);
   }
   if (z < 2.0) {
     const double a = 1.0 - z * z;

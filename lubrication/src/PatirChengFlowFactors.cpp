@@ -36,6 +36,12 @@ PatirChengFlowFactors::PatirChengFlowFactors(const PatirChengParameters& paramet
   checkRoughness("rq2_m", parameters.rq2_m);
   checkPeklenik("peklenik1", parameters.peklenik1);
   checkPeklenik("peklenik2", parameters.peklenik2);
+  if (!(parameters.phiFCutoff > 0.0 && parameters.phiFCutoff <= patir_cheng::kMaxPhiFCutoff)) {
+    std::ostringstream msg;
+    msg << "PatirChengFlowFactors: phiFCutoff = " << parameters.phiFCutoff << " must be in (0, "
+        << patir_cheng::kMaxPhiFCutoff << "] (default 1/300)";
+    throw std::invalid_argument(msg.str());
+  }
   if (parameters.peklenikComposite.has_value()) {
     checkPeklenik("peklenikComposite", *parameters.peklenikComposite);
     gammaComposite_ = *parameters.peklenikComposite;
@@ -105,7 +111,7 @@ NodeFlowFactors PatirChengFlowFactors::calcFactors(double h_m) const {
   f.expectedGap_m = gap.value_m;
   f.dExpectedGap_dh = gap.dValue_dh;
 
-  f.phiF = patir_cheng::calcShearStressFactorF(H);
+  f.phiF = patir_cheng::calcShearStressFactorF(H, parameters_.phiFCutoff);
   f.phiFp = blend(bracketSliding_, H, pcd::shearStressFpRow);
   return f;
 }

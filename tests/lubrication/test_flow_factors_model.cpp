@@ -22,7 +22,8 @@ namespace {
 PatirChengParameters skirtAndLiner() {
   PatirChengParameters p;
   p.rq1_m = 0.3e-6;  // surface 1: the liner (moves at U relative to the grid)
-  p.rq2_m = 0.4e-6;  // surface 2: the skirt (carries the grid); sigma = 0.5 um, Vr1 = 0.36, Vr2 = 0.64
+  p.rq2_m =
+      0.4e-6;  // surface 2: the skirt (carries the grid); sigma = 0.5 um, Vr1 = 0.36, Vr2 = 0.64
   return p;
 }
 
@@ -202,6 +203,27 @@ TEST(PatirChengFlowFactors, BadInputThrowsNamingTheArgument) {
       ADD_FAILURE() << "no exception for h = " << h;
     } catch (const std::invalid_argument& e) {
       EXPECT_NE(std::string(e.what()).find("h_m"), std::string::npos) << e.what();
+    }
+  }
+}
+
+// The phi_f cut-off reaches the model (reference: the single-surface function with the
+// same eps*), and a bad one is rejected naming the member.
+TEST(PatirChengFlowFactors, PhiFCutoffIsPassedThrough) {
+  PatirChengParameters p = skirtAndLiner();
+  EXPECT_EQ(p.phiFCutoff, 1.0 / 300.0);
+  p.phiFCutoff = 0.01;
+  const PatirChengFlowFactors model(p);
+  const double sigma = model.compositeSigma_m();
+  for (const double H : {0.3, 1.0, 2.5, 4.0})
+    EXPECT_EQ(model.calcFactors(H * sigma).phiF, pc::calcShearStressFactorF(H, 0.01)) << H;
+  for (const double bad : {0.0, 0.5, std::nan("")}) {
+    p.phiFCutoff = bad;
+    try {
+      const PatirChengFlowFactors m(p);
+      ADD_FAILURE() << "no throw for phiFCutoff = " << bad;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("phiFCutoff"), std::string::npos) << e.what();
     }
   }
 }

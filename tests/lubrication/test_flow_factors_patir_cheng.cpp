@@ -197,6 +197,44 @@ TEST(PatirChengFactors, CouetteShearStressFactorMatchesDefiningIntegral) {
   EXPECT_NEAR(pc::calcShearStressFactorF(3.0), 7.0 / 6.0, kRoundoff);
 }
 
+// The cut-off eps* of phi_f is a parameter (default 1/300). Reference: the closed form's
+// dependence on it, d phi_f / d ln eps* = -(35/32) z (1 - z^2)^3 for H <= 3 (exact, so
+// finite changes are exact too) and none for H > 3; and the defining integral with the
+// cut-off (as in CouetteShearStressFactorMatchesDefiningIntegral) at eps* = 1/100.
+TEST(PatirChengFactors, CouetteShearStressFactorCutoffIsAParameter) {
+  const double base = 1.0 / 300.0;
+  EXPECT_EQ(pc::kDefaultPhiFCutoff, base);
+  for (const double epsStar : {1.0 / 1000.0, 1.0 / 100.0, 0.1}) {
+    for (const double H : {0.1, 0.5, 1.0, 2.0, 2.9, 3.0}) {
+      const double z = H / 3.0;
+      const double expected =
+          -35.0 / 32.0 * z * std::pow(1.0 - z * z, 3) * std::log(epsStar / base);
+      EXPECT_NEAR(pc::calcShearStressFactorF(H, epsStar) - pc::calcShearStressFactorF(H), expected,
+                  1e-13)
+          << "eps* = " << epsStar << ", H = " << H;
+      EXPECT_GT(pc::calcShearStressFactorF(H, epsStar), 0.0);
+    }
+    for (const double H : {3.3, 6.0, 20.0})
+      EXPECT_EQ(pc::calcShearStressFactorF(H, epsStar), pc::calcShearStressFactorF(H));
+  }
+  // The sensitivity the documentation quotes: 1/300 -> 1/100 is -17 % at H = 1.
+  EXPECT_NEAR(pc::calcShearStressFactorF(1.0, 0.01) / pc::calcShearStressFactorF(1.0) - 1.0, -0.172,
+              5e-4);
+  // Defining integral with the cut-off at eps* = 1/100 (Simpson in u = ln(z - t)).
+  const double epsStar = 0.01;
+  for (const double H : {0.5, 1.0, 2.0}) {
+    const double z = H / 3.0;
+    const double cutIntegral =
+        simpson([z](double u) { return std::pow(1.0 - std::pow(z - std::exp(u), 2), 3); },
+                std::log(epsStar), std::log(z + 1.0), 4000);
+    EXPECT_NEAR(pc::calcShearStressFactorF(H, epsStar), 35.0 / 32.0 * z * cutIntegral,
+                6.0 * epsStar * 35.0 / 32.0 * z)
+        << "H = " << H;
+  }
+  for (const double bad : {0.0, -0.01, 0.2, std::nan("")})
+    EXPECT_THROW(pc::calcShearStressFactorF(1.0, bad), std::invalid_argument) << bad;
+}
+
 // The two branches of phi_f meet at H = 3: the ln term is multiplied by (1 - z^2)^3,
 // which vanishes there, and both polynomials give 16/15. The series used from H = 6 on
 // must agree with the closed form there.

@@ -36,6 +36,10 @@ struct PatirChengParameters {
   // and must be given.
   std::optional<double> peklenikComposite;
   ExpectedGapForm expectedGapForm = ExpectedGapForm::kGaussian;  // default Gaussian
+  // Cut-off eps* of phi_f [-], in (0, 0.1]; default 1/300 (R. Boman's EHD code). phi_f
+  // depends on it where asperities touch (H <= 3): 1/300 -> 1/100 lowers phi_f by 17 % at
+  // H = 1 (patir_cheng::calcShearStressFactorF documents the sensitivity).
+  double phiFCutoff = patir_cheng::kDefaultPhiFCutoff;
   // How phi_x, phi_y are evaluated between the tabulated gamma; default table + ln(gamma).
   patir_cheng::PressureFlowGammaModel pressureFlowGammaModel =
       patir_cheng::PressureFlowGammaModel::kTableLogGamma;
@@ -47,9 +51,9 @@ class PatirChengFlowFactors final : public FlowFactorModel {
   // Inputs:
   //   parameters  see PatirChengParameters
   // Throws std::invalid_argument naming the member for a negative or non-finite Rq, a
-  // non-positive or non-finite Peklenik number, or an unset peklenikComposite with
-  // peklenik1 != peklenik2. Rq1 = Rq2 = 0 is allowed: the model then returns the smooth
-  // (plain Reynolds) factors.
+  // non-positive or non-finite Peklenik number, an unset peklenikComposite with
+  // peklenik1 != peklenik2, or phiFCutoff outside (0, 0.1]. Rq1 = Rq2 = 0 is allowed: the model
+  // then returns the smooth (plain Reynolds) factors.
   explicit PatirChengFlowFactors(const PatirChengParameters& parameters);
 
   // Factors at one node.
@@ -59,7 +63,7 @@ class PatirChengFlowFactors final : public FlowFactorModel {
   //   phiPressureSliding = phi_x(H, gammaC), phiPressureCross = phi_x(H, 1/gammaC);
   //   sigmaPhiS_m = sigma (Vr1 Phi_s(H, gamma1) - Vr2 Phi_s(H, gamma2)) [m];
   //   expectedGap_m, dExpectedGap_dh from calcExpectedGap with the chosen form;
-  //   phiF = phi_f(H); phiFs = Vr1 Phi_fs(H, gamma1) - Vr2 Phi_fs(H, gamma2);
+  //   phiF = phi_f(H, phiFCutoff); phiFs = Vr1 Phi_fs(H, gamma1) - Vr2 Phi_fs(H, gamma2);
   //   phiFp = phi_fp(H, gammaC).
   // Throws std::invalid_argument if h_m is not positive and finite.
   //

@@ -99,6 +99,11 @@ constexpr std::array<ShearStressFsRow, kRows> kShearStressFs = {{
     {8.7, 2.15, 2.97, 0.18},   // gamma = 9    [FE]
 }};
 constexpr double kShearStressFsCutoffH = 7.0;
+// Departure from [PC79] (which cuts Phi_fs to 0 at H = 7, a jump of 0.004 to 0.023, i.e.
+// up to 2.2 % of phi_f ~ 1.02 there): the fit is multiplied by the C1 step
+// S(x) = 1 - 3 x^2 + 2 x^3, x = (H - 6.5) / 0.5, over [6.5, 7], so Phi_fs and its slope
+// are continuous (no discontinuity for the integrator; DESIGN.md policy).
+constexpr double kShearStressFsTaperStartH = 6.5;
 
 // [PC79] Poiseuille shear-stress factor: 1 - D exp(-s H), H > 0.5.
 struct ShearStressFpRow {
@@ -231,7 +236,13 @@ double shearStressFsRow(int row, double H) {
     return 0.0;
   }
   const ShearStressFsRow& c = kShearStressFs[row];
-  return c.A3 * std::pow(H, c.a4) * std::exp(H * (c.a6 * H - c.a5));
+  const double fit = c.A3 * std::pow(H, c.a4) * std::exp(H * (c.a6 * H - c.a5));
+  if (H <= kShearStressFsTaperStartH) {
+    return fit;
+  }
+  const double x =
+      (H - kShearStressFsTaperStartH) / (kShearStressFsCutoffH - kShearStressFsTaperStartH);
+  return fit * (1.0 - x * x * (3.0 - 2.0 * x));
 }
 
 double shearStressFpRow(int row, double H) {

@@ -115,7 +115,12 @@ TEST(PatirChengFactors, ShearFlowFactorContinuousAtHFive) {
   }
 }
 
-// [PC79] Phi_fs table: A3 H^a4 exp(-a5 H + a6 H^2) for H < 7, 0 beyond.
+// [PC79] Phi_fs table: A3 H^a4 exp(-a5 H + a6 H^2) for H < 7, 0 beyond. The library
+// departs from the paper on [6.5, 7) only, where the fit is multiplied by the documented
+// C1 step 1 - 3x^2 + 2x^3, x = (H - 6.5)/0.5 (the paper's cut at 7 is a jump of up to
+// 0.023; see RoughnessShearStressFactorTaperIsC1). So the value checked at H = 6.99 is the
+// fit times that step (x = 0.98, step 0.001184), written here; before the taper the
+// check at 6.99 was against the bare fit. H = 0.5 .. 4 are unchanged.
 TEST(PatirChengFactors, RoughnessShearStressFactorMatchesPC79Table) {
   struct Row {
     double A3, a4, a5, a6;
@@ -126,8 +131,10 @@ TEST(PatirChengFactors, RoughnessShearStressFactorMatchesPC79Table) {
                         {8.7, 2.15, 2.97, 0.18}};
   for (int i = 0; i < 7; ++i) {
     const Row& c = table[i];
-    for (const double H : {0.5, 1.0, 2.0, 4.0, 6.99}) {
-      const double expected = c.A3 * std::pow(H, c.a4) * std::exp(-c.a5 * H + c.a6 * H * H);
+    for (const double H : {0.5, 1.0, 2.0, 4.0, 6.5, 6.99}) {
+      const double x = H > 6.5 ? (H - 6.5) / 0.5 : 0.0;
+      const double step = 1.0 - 3.0 * x * x + 2.0 * x * x * x;
+      const double expected = c.A3 * std::pow(H, c.a4) * std::exp(-c.a5 * H + c.a6 * H * H) * step;
       EXPECT_NEAR(pc::calcShearStressFactorFs(H, kGammas[i]), expected, kRoundoff * 10)
           << "gamma = " << kGammas[i] << ", H = " << H;
     }
@@ -136,6 +143,49 @@ TEST(PatirChengFactors, RoughnessShearStressFactorMatchesPC79Table) {
   }
   // gamma = 1, H = 1: 11.1 e^(-2.27) (hand-worked).
   EXPECT_NEAR(pc::calcShearStressFactorFs(1.0, 1.0), 1.146765, 5e-7);
+}
+
+// No discontinuity for the integrator: Phi_fs and its slope are continuous at both ends of
+// the taper [6.5, 7] (reference: the paper's fit and its analytic slope at 6.5, and 0 at
+// 7; one-sided second-order differences with step 1e-5, tolerance 1e-6 of the slope
+// scale), and the taper stays between 0 and the fit. The paper's cut left a jump of
+// 0.0036 (gamma = 9) to 0.0227 (gamma = 1/9) at H = 7; now the jump is below 1e-12.
+TEST(PatirChengFactors, RoughnessShearStressFactorTaperIsC1) {
+  const double A3[7] = {14.1, 13.4, 12.3, 11.1, 9.8, 10.1, 8.7};
+  const double a4[7] = {2.45, 2.42, 2.32, 2.31, 2.25, 2.25, 2.15};
+  const double a5[7] = {2.30, 2.30, 2.30, 2.38, 2.80, 2.90, 2.97};
+  const double a6[7] = {0.10, 0.10, 0.10, 0.11, 0.18, 0.18, 0.18};
+  for (int i = 0; i < 7; ++i) {
+    const double g = kGammas[i];
+    auto fit = [&](double H) {
+      return A3[i] * std::pow(H, a4[i]) * std::exp(-a5[i] * H + a6[i] * H * H);
+    };
+    auto fitSlope = [&](double H) { return fit(H) * (a4[i] / H - a5[i] + 2.0 * a6[i] * H); };
+    auto fs = [g](double H) { return pc::calcShearStressFactorFs(H, g); };
+    const double d = 1e-5, delta = 1e-10;
+    // H = 6.5: value and slope of the fit on both sides.
+    const double scale = std::abs(fitSlope(6.5));
+    // Moving by delta changes the value by slope * delta; anything beyond is a jump.
+    EXPECT_NEAR(fs(6.5 - delta), fit(6.5), scale * delta + 1e-14) << g;
+    EXPECT_NEAR(fs(6.5 + delta), fit(6.5), scale * delta + 1e-14) << g;
+    EXPECT_NEAR((3 * fs(6.5) - 4 * fs(6.5 - d) + fs(6.5 - 2 * d)) / (2 * d), fitSlope(6.5),
+                1e-6 * scale)
+        << g;
+    EXPECT_NEAR((-3 * fs(6.5) + 4 * fs(6.5 + d) - fs(6.5 + 2 * d)) / (2 * d), fitSlope(6.5),
+                1e-6 * scale)
+        << g;
+    // H = 7: value 0 and slope 0 from the left (the paper's fit is still 0.004 .. 0.023).
+    EXPECT_GT(fit(7.0), 0.003) << g;
+    EXPECT_LT(fs(7.0 - delta), 1e-12) << g;
+    EXPECT_EQ(fs(7.0), 0.0) << g;
+    EXPECT_NEAR((3 * fs(7.0 - 1e-12) - 4 * fs(7.0 - d) + fs(7.0 - 2 * d)) / (2 * d), 0.0,
+                1e-6 * scale)
+        << g;
+    for (double H = 6.5; H < 7.0; H += 0.01) {
+      ASSERT_GE(fs(H), 0.0) << g << " " << H;
+      ASSERT_LE(fs(H), fit(H) * (1.0 + 1e-14)) << g << " " << H;
+    }
+  }
 }
 
 // [PC79] phi_fp = 1 - D exp(-s H). The gamma = 1 row is confirmed by two sources; the

@@ -14,7 +14,8 @@ enum class ExpectedGapForm {
   //   h_T / sigma = H Phi(H) + phi_N(H),   dh_T/dh = Phi(H) = (1 + erf(H / sqrt 2)) / 2.
   kGaussian,
   // The polynomial density (35/96)(1 - x^2/9)^3 on |x| <= 3 sigma that P&C 1978 use for
-  // their closed forms (and that phi_f is built on). With z = H/3, for |z| < 1:
+  // their closed forms (and that phi_f is built on; choose it for h_T and phi_f on one
+  // density; the Gaussian h_T differs from it by at most 0.0113 sigma). With z = H/3, for |z| < 1:
   //   h_T / sigma = (3/256)(35 + 128 z + 140 z^2 - 70 z^4 + 28 z^6 - 5 z^8),
   //   dh_T/dh     = (1/256)(128 + 280 z - 280 z^3 + 168 z^5 - 40 z^7);
   // h_T = h for z >= 1 (no contact) and 0 for z <= -1.

@@ -115,8 +115,11 @@ inline constexpr double kMaxPhiFCutoff = 0.1;
 double calcShearStressFactorF(double H, double epsStar = kDefaultPhiFCutoff);
 
 // Roughness shear-stress factor Phi_fs(H, gamma) of ONE rough surface [PC79]:
-// A3 H^a4 exp(-a5 H + a6 H^2) for H < 7 and 0 for H >= 7 (as in the paper; the fit is
-// 0.004 to 0.023 at H = 7, so phi_fs has that small jump there). Two surfaces combine
+// A3 H^a4 exp(-a5 H + a6 H^2) for H <= 6.5, 0 for H >= 7, and in between the fit times the
+// C1 step 1 - 3x^2 + 2x^3, x = (H - 6.5)/0.5. DEPARTURE from the paper, which cuts the
+// fit to 0 at H = 7: the fit is 0.004 to 0.023 there, a jump of up to 2.2 % of phi_f
+// (~1.02) in the Couette shear, which an integrator would see; the taper removes it and
+// changes Phi_fs only on [6.5, 7), where it is below 0.04. Two surfaces combine
 // as Vr1 Phi_fs(H, gamma1) - Vr2 Phi_fs(H, gamma2). Below H = 0.5 the fit is used as it
 // stands (positive, increasing, -> 0 as H -> 0). Gamma handled as calcShearFlowFactor.
 // Inputs:

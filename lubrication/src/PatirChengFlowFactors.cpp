@@ -55,12 +55,14 @@ PatirChengFlowFactors::PatirChengFlowFactors(const PatirChengParameters& paramet
     gammaComposite_ = parameters.peklenik1;
   }
 
-  const double var1 = parameters.rq1_m * parameters.rq1_m;
-  const double var2 = parameters.rq2_m * parameters.rq2_m;
-  sigma_m_ = std::sqrt(var1 + var2);
+  // hypot and ratios of Rq to sigma: Rq^2 would underflow for Rq < 1e-162 (sigma = 0,
+  // i.e. silently smooth) and overflow for Rq > 1e154.
+  sigma_m_ = std::hypot(parameters.rq1_m, parameters.rq2_m);
   if (sigma_m_ > 0.0) {
-    varianceRatio1_ = var1 / (var1 + var2);
-    varianceRatio2_ = var2 / (var1 + var2);
+    const double ratio1 = parameters.rq1_m / sigma_m_;
+    const double ratio2 = parameters.rq2_m / sigma_m_;
+    varianceRatio1_ = ratio1 * ratio1;
+    varianceRatio2_ = ratio2 * ratio2;
   }
 
   bracketSliding_ = patir_cheng::detail::bracketGamma(gammaComposite_);

@@ -227,3 +227,25 @@ TEST(PatirChengFlowFactors, PhiFCutoffIsPassedThrough) {
     }
   }
 }
+
+// sigma and the variance ratios at the ends of the double range (reference: hypot and the
+// ratios Rq_i / sigma, and the single-surface factors). sqrt(Rq1^2 + Rq2^2) underflowed to
+// 0 for Rq ~ 1e-170 (the model then silently returned smooth-surface factors) and
+// overflowed for Rq ~ 1e200.
+TEST(PatirChengFlowFactors, SigmaIsRobustForTinyAndHugeRoughness) {
+  for (const double scale : {1e-170, 1e-300, 1e200}) {
+    PatirChengParameters p;
+    p.rq1_m = 0.6 * scale;  // Vr1 = 0.36
+    p.rq2_m = 0.8 * scale;  // Vr2 = 0.64
+    const PatirChengFlowFactors model(p);
+    const double sigma = std::hypot(0.6 * scale, 0.8 * scale);
+    ASSERT_GT(sigma, 0.0);
+    ASSERT_TRUE(std::isfinite(sigma));
+    EXPECT_NEAR(model.compositeSigma_m() / sigma, 1.0, 1e-15) << scale;
+    const NodeFlowFactors f = model.calcFactors(1.5 * sigma);
+    EXPECT_NEAR(f.phiFs, (0.36 - 0.64) * pc::calcShearStressFactorFs(1.5, 1.0), 1e-14) << scale;
+    EXPECT_NEAR(f.phiPressureSliding, pc::calcPressureFlowFactor(1.5, 1.0), 1e-14) << scale;
+    EXPECT_NEAR(f.sigmaPhiS_m / sigma, (0.36 - 0.64) * pc::calcShearFlowFactor(1.5, 1.0), 1e-14)
+        << scale;
+  }
+}

@@ -20,6 +20,41 @@ constexpr double kMaxThermalExpansion_perK = 2e-3;
   throw std::invalid_argument("Oil: " + what);
 }
 
+// Plausibility bounds of the data (unit mistakes, not physics):
+//  - kinematic viscosity at a data point <= 1e-2 m^2/s (10000 mm^2/s): above any engine
+//    oil at its data temperatures; a value given in mm^2/s (cSt) is 1e6 times too large
+//    and lands far above (the lower end, 2e-6 m^2/s, is the Walther form's own limit);
+//  - density in (500, 2000) kg/m^3: oils are 800..1000; g/ml gives ~0.85;
+//  - data temperatures in (-60, 250) degC: oil data are measured between the pour point
+//    (>= -60 C for engine oils) and below the flash point (about 200..250 C); kelvin
+//    values of the usual 15 / 40 / 100 C points (288.15, 313.15, 373.15) land above 250.
+constexpr double kMaxDataViscosity_m2ps = 1e-2;
+constexpr double kMinDensity_kgpm3 = 500.0;
+constexpr double kMaxDensity_kgpm3 = 2000.0;
+constexpr double kMinDataTemperature_degC = -60.0;
+constexpr double kMaxDataTemperature_degC = 250.0;
+
+void checkDataTemperature(const char* name, double temperature_degC) {
+  if (!(temperature_degC > kMinDataTemperature_degC &&
+        temperature_degC < kMaxDataTemperature_degC)) {
+    std::ostringstream msg;
+    msg << name << " = " << temperature_degC << " degC is implausible for oil data (expected "
+        << kMinDataTemperature_degC << " .. " << kMaxDataTemperature_degC
+        << " degC); was it given in kelvin? Subtract 273.15";
+    fail(msg.str());
+  }
+}
+
+void checkDataViscosity(const char* name, double nu_m2ps) {
+  if (!(nu_m2ps <= kMaxDataViscosity_m2ps)) {
+    std::ostringstream msg;
+    msg << name << " = " << nu_m2ps << " m^2/s is implausible for an oil (expected at most "
+        << kMaxDataViscosity_m2ps
+        << " m^2/s = 10000 mm^2/s); was it given in mm^2/s (cSt)? Multiply by 1e-6";
+    fail(msg.str());
+  }
+}
+
 void checkFinite(const char* name, double value) {
   if (!std::isfinite(value)) {
     std::ostringstream msg;
@@ -63,6 +98,9 @@ Oil::Oil(const OilSpec& spec) : spec_(spec) {
   checkAboveAbsoluteZero("temperature1_degC", spec.temperature1_degC);
   checkAboveAbsoluteZero("densityReferenceTemperature_degC", spec.densityReferenceTemperature_degC);
   checkAboveAbsoluteZero("minTemperature_degC", spec.minTemperature_degC);
+  checkDataTemperature("temperature1_degC", spec.temperature1_degC);
+  checkDataTemperature("temperature2_degC", spec.temperature2_degC);
+  checkDataTemperature("densityReferenceTemperature_degC", spec.densityReferenceTemperature_degC);
 
   if (!(spec.temperature2_degC > spec.temperature1_degC)) {
     std::ostringstream msg;
@@ -75,6 +113,8 @@ Oil::Oil(const OilSpec& spec) : spec_(spec) {
   const double nu2_cSt = spec.kinematicViscosity2_m2ps / kM2psPerCSt;
   checkPositive("kinematicViscosity1_m2ps", spec.kinematicViscosity1_m2ps);
   checkPositive("kinematicViscosity2_m2ps", spec.kinematicViscosity2_m2ps);
+  checkDataViscosity("kinematicViscosity1_m2ps", spec.kinematicViscosity1_m2ps);
+  checkDataViscosity("kinematicViscosity2_m2ps", spec.kinematicViscosity2_m2ps);
   if (!(nu2_cSt < nu1_cSt)) {
     std::ostringstream msg;
     msg << "kinematicViscosity2_m2ps = " << spec.kinematicViscosity2_m2ps
@@ -89,6 +129,13 @@ Oil::Oil(const OilSpec& spec) : spec_(spec) {
     fail(msg.str());
   }
   checkPositive("density_kgpm3", spec.density_kgpm3);
+  if (!(spec.density_kgpm3 > kMinDensity_kgpm3 && spec.density_kgpm3 < kMaxDensity_kgpm3)) {
+    std::ostringstream msg;
+    msg << "density_kgpm3 = " << spec.density_kgpm3
+        << " kg/m^3 is implausible for an oil (expected " << kMinDensity_kgpm3 << " .. "
+        << kMaxDensity_kgpm3 << " kg/m^3); was it given in g/ml? Multiply by 1000";
+    fail(msg.str());
+  }
   if (!(spec.thermalExpansion_perK >= 0.0 &&
         spec.thermalExpansion_perK < kMaxThermalExpansion_perK)) {
     std::ostringstream msg;
@@ -171,6 +218,31 @@ double Oil::calcDynamicViscosity_Pas(double temperature_degC) const {
   checkTemperature("calcDynamicViscosity_Pas", temperature_degC);
   return density_kgpm3(temperature_degC) *
          kinematicViscosity_cSt(temperature_degC + kZeroCelsius_K) * kM2psPerCSt;
+}
+
+void Oil::calcDynamicViscosity_Pas(const Eigen::Ref<const Eigen::ArrayXd>& temperature_degC,
+                                   Eigen::Ref<Eigen::ArrayXd> viscosity_Pas) const {
+  if (viscosity_Pas.size() != temperature_degC.size()) {
+    std::ostringstream msg;
+    msg << "Oil::calcDynamicViscosity_Pas: viscosity_Pas has " << viscosity_Pas.size()
+        << " entries, expected " << temperature_degC.size() << " (temperature_degC.size())";
+    throw std::invalid_argument(msg.str());
+  }
+  // Check everything first, so that a bad entry leaves the output untouched.
+  for (Eigen::Index k = 0; k < temperature_degC.size(); ++k) {
+    const double t = temperature_degC[k];
+    if (!(t >= minTemperature_degC_ && t <= maxTemperature_degC_)) {
+      std::ostringstream msg;
+      msg << "Oil::calcDynamicViscosity_Pas: temperature_degC[" << k << "] = " << t
+          << " degC is outside the valid range [" << minTemperature_degC_ << ", "
+          << maxTemperature_degC_ << "] degC of oil '" << spec_.name << "'";
+      throw std::invalid_argument(msg.str());
+    }
+  }
+  for (Eigen::Index k = 0; k < temperature_degC.size(); ++k) {
+    const double t = temperature_degC[k];
+    viscosity_Pas[k] = density_kgpm3(t) * kinematicViscosity_cSt(t + kZeroCelsius_K) * kM2psPerCSt;
+  }
 }
 
 double Oil::calcDynamicViscosityAtKelvin_Pas(double temperature_K) const {

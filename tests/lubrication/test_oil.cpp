@@ -263,6 +263,86 @@ TEST(Oil, BadUserOilThrowsNamingTheArgument) {
   expectThrowMentioning(s, "temperature1_degC");
 }
 
+// Unit mistakes are caught at construction with a message naming the member and the
+// likely mistake (reference: the units of the data sheets). Before, nu given in mm^2/s in
+// the _m2ps fields gave eta(100 C) = 8912 Pa s for a 15W-40 (reviewer's figure), a density
+// in g/ml an oil 1000x too thin, and kelvin temperatures a Walther line 273 K off.
+TEST(Oil, UnitMistakesAreRejectedWithAHint) {
+  const auto expectThrowMentioning = [](const OilSpec& s, const std::string& member,
+                                        const std::string& hint) {
+    try {
+      const Oil oil(s);
+      ADD_FAILURE() << "no exception for " << member;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(member), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(hint), std::string::npos) << e.what();
+    }
+  };
+  const OilSpec sheet = makeSaeGradeOilSpec(SaeGrade::k15W40);  // 109 / 14.5 mm^2/s, 880 kg/m^3
+  OilSpec s = sheet;
+  s.kinematicViscosity1_m2ps = 109.0;  // cSt in the m^2/s field
+  s.kinematicViscosity2_m2ps = 14.5;
+  expectThrowMentioning(s, "kinematicViscosity1_m2ps", "mm^2/s (cSt)");
+  s = sheet;
+  s.kinematicViscosity1_m2ps = 0.02;  // 20000 mm^2/s
+  expectThrowMentioning(s, "kinematicViscosity1_m2ps", "Multiply by 1e-6");
+  s = sheet;
+  s.density_kgpm3 = 0.88;  // g/ml
+  expectThrowMentioning(s, "density_kgpm3", "g/ml");
+  s = sheet;
+  s.density_kgpm3 = 2500.0;
+  expectThrowMentioning(s, "density_kgpm3", "implausible");
+  s = sheet;
+  s.temperature1_degC = 313.15;  // kelvin
+  s.temperature2_degC = 373.15;
+  expectThrowMentioning(s, "temperature1_degC", "kelvin");
+  s = sheet;
+  s.densityReferenceTemperature_degC = 288.15;
+  expectThrowMentioning(s, "densityReferenceTemperature_degC", "kelvin");
+  s = sheet;
+  s.temperature1_degC = -70.0;
+  expectThrowMentioning(s, "temperature1_degC", "implausible");
+  // Edges that are still plausible construct: 1e-2 m^2/s at -20 C, 1500 kg/m^3, 240 C.
+  s = sheet;
+  s.temperature1_degC = -20.0;
+  s.kinematicViscosity1_m2ps = 1e-2;
+  s.minTemperature_degC = -15.0;
+  EXPECT_NO_THROW(const Oil oil(s));
+  s = sheet;
+  s.density_kgpm3 = 1500.0;
+  s.temperature2_degC = 240.0;
+  s.kinematicViscosity2_m2ps = 3e-6;
+  EXPECT_NO_THROW(const Oil oil(s));
+  // Every data sheet passes.
+  for (const SaeGrade g : kAllGrades) {
+    EXPECT_NO_THROW(makeSaeGradeOil(g)) << toString(g);
+  }
+}
+
+// eta over a temperature field equals the scalar calls entry by entry (reference: the
+// scalar call); a temperature outside the range is named by index and leaves the output
+// untouched; a size mismatch is rejected.
+TEST(Oil, DynamicViscosityOverATemperatureField) {
+  const Oil oil = makeSaeGradeOil(SaeGrade::k5W30);
+  Eigen::ArrayXd t = Eigen::ArrayXd::LinSpaced(50, -30.0, 200.0);
+  Eigen::ArrayXd eta(50);
+  oil.calcDynamicViscosity_Pas(t, eta);
+  for (Eigen::Index k = 0; k < t.size(); ++k)
+    EXPECT_EQ(eta[k], oil.calcDynamicViscosity_Pas(t[k])) << t[k];
+  t[17] = 250.0;
+  Eigen::ArrayXd out = Eigen::ArrayXd::Constant(50, -1.0);
+  try {
+    oil.calcDynamicViscosity_Pas(t, out);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("temperature_degC[17]"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE((out == -1.0).all());
+  Eigen::ArrayXd small(3);
+  EXPECT_THROW(oil.calcDynamicViscosity_Pas(Eigen::ArrayXd::Constant(4, 50.0), small),
+               std::invalid_argument);
+}
+
 TEST(Oil, SaeGradeNamesRoundTrip) {
   for (const SaeGrade g : kAllGrades) {
     EXPECT_EQ(parseSaeGrade(toString(g)), g);

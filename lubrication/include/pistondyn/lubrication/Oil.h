@@ -26,15 +26,20 @@
 
 #include <string>
 
+#include <Eigen/Core>
+
 namespace pistondyn::lubrication {
 
+// Bounds in brackets are checked by Oil(OilSpec); the plausibility bounds (data viscosity
+// <= 1e-2 m^2/s, density in (500, 2000) kg/m^3, data temperatures in (-60, 250) degC)
+// catch unit mistakes (mm^2/s, g/ml, kelvin).
 struct OilSpec {
-  std::string name;                                // free text, e.g. grade and data source
-  double temperature1_degC = 40.0;                 // first data temperature [degC], default 40
-  double kinematicViscosity1_m2ps = 0.0;           // nu at temperature1 [m^2/s], > 0 (no default)
-  double temperature2_degC = 100.0;                // second data temperature [degC], default 100
-  double kinematicViscosity2_m2ps = 0.0;           // nu at temperature2 [m^2/s], > 0 (no default)
-  double density_kgpm3 = 0.0;                      // density at densityReference [kg/m^3], > 0
+  std::string name;                       // free text, e.g. grade and data source
+  double temperature1_degC = 40.0;        // first data temperature [degC], default 40
+  double kinematicViscosity1_m2ps = 0.0;  // nu at temperature1 [m^2/s], <= 1e-2 (no default)
+  double temperature2_degC = 100.0;       // second data temperature [degC], default 100
+  double kinematicViscosity2_m2ps = 0.0;  // nu at temperature2 [m^2/s], [2e-6, nu1) (no default)
+  double density_kgpm3 = 0.0;             // density at densityReference [kg/m^3] (no default)
   double densityReferenceTemperature_degC = 15.0;  // [degC], default 15
   double thermalExpansion_perK = 6.5e-4;           // volumetric expansion alpha [1/K], [0, 2e-3)
   double minTemperature_degC = -20.0;              // lowest valid temperature [degC], default -20
@@ -51,6 +56,9 @@ class Oil {
   // nu2 >= nu1 (viscosity must fall with temperature); a viscosity is <= 0 or below the
   // 2 mm^2/s limit of ASTM D341's simple form; density <= 0; alpha outside [0, 2e-3);
   // a temperature is at or below absolute zero; or the valid range is empty.
+  // Plausibility (unit mistakes; the message suggests the likely one): a data viscosity
+  // above 1e-2 m^2/s (given in mm^2/s?), a density outside (500, 2000) kg/m^3 (g/ml?), a
+  // data or density-reference temperature outside (-60, 250) degC (kelvin?).
   explicit Oil(const OilSpec& spec);
 
   // Kinematic viscosity nu(T) [m^2/s] at temperature_degC inside the valid range.
@@ -59,6 +67,14 @@ class Oil {
   double calcDensity_kgpm3(double temperature_degC) const;
   // Dynamic viscosity eta(T) = rho(T) nu(T) [Pa s] at temperature_degC inside the range.
   double calcDynamicViscosity_Pas(double temperature_degC) const;
+  // eta(T) for every entry of a temperature field (e.g. per film node, for
+  // FilmProblem::viscosityPerNode_Pas).
+  // Inputs:  temperature_degC  temperatures [degC], each inside the valid range
+  // Outputs: viscosity_Pas     eta [Pa s], same size (not resized; no allocation)
+  // Throws std::invalid_argument naming the index of the first temperature outside the
+  // range (output untouched), or on a size mismatch.
+  void calcDynamicViscosity_Pas(const Eigen::Ref<const Eigen::ArrayXd>& temperature_degC,
+                                Eigen::Ref<Eigen::ArrayXd> viscosity_Pas) const;
   // Same as calcDynamicViscosity_Pas, temperature given in kelvin.
   double calcDynamicViscosityAtKelvin_Pas(double temperature_K) const;
 

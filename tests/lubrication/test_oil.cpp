@@ -265,7 +265,7 @@ TEST(Oil, BadUserOilThrowsNamingTheArgument) {
 
 // Unit mistakes are caught at construction with a message naming the member and the
 // likely mistake (reference: the units of the data sheets). Before, nu given in mm^2/s in
-// the _m2ps fields gave eta(100 C) = 8912 Pa s for a 15W-40 (reviewer's figure), a density
+// the _m2ps fields gave eta(100 C) in the thousands of Pa s (8912 in the review), a density
 // in g/ml an oil 1000x too thin, and kelvin temperatures a Walther line 273 K off.
 TEST(Oil, UnitMistakesAreRejectedWithAHint) {
   const auto expectThrowMentioning = [](const OilSpec& s, const std::string& member,

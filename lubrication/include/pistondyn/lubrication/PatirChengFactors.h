@@ -134,6 +134,10 @@ double calcShearStressFactorFs(double H, double gamma);
 // gamma <= 1 fits cross zero between H = 0.51 and 0.79) it continues as
 // f0 + (phi(H_lo) - f0) (H/H_lo)^k, C1 at H_lo, -> f0 = kPressureFactorFloor as H -> 0.
 // Gamma handled as calcPressureFlowFactor with kTableLogGamma.
+// SOURCE CAVEAT: only the gamma = 1 row (1.40, 0.66) is confirmed by a second source (R.
+// Boman's EHD code, DESIGN.md). The rows for gamma != 1 are our transcription of the
+// [PC79] table and are NOT cross-checked (no second source found, searched again for this
+// review); verify them against the paper before relying on anisotropic phi_fp.
 // Inputs:
 //   H      film parameter, finite and > 0 [-]
 //   gamma  Peklenik number of the composite roughness, finite and > 0 [-]

@@ -16,8 +16,8 @@
 //   [DN]  DESIGN.md section 4: gamma = 1 rows of phi_x, Phi_s, Phi_fs, phi_fp.
 // All three agree digit for digit wherever they overlap. The phi_fp rows for gamma != 1
 // could NOT be cross-checked: no second source was found (searched again during the
-// module review: public code, docs and pages; only the gamma = 1 row turns up, in [RB]
-// and in codes derived from it); they are our transcription of
+// module review: public code, docs and pages; only the gamma = 1 row turns up, in the two
+// versions of [RB]); they are our transcription of
 // the [PC79] phi_fp table and must be verified against the paper before anisotropic
 // phi_fp results are relied on (isotropic gamma = 1 is confirmed by [RB] and [DN]).
 // The closed form of phi_f was re-derived symbolically from its defining integral (see

@@ -107,6 +107,21 @@ void BM_BoundaryFrictionField(benchmark::State& state) {
 }
 BENCHMARK(BM_BoundaryFrictionField);
 
+// One sliding velocity for the whole field (the piston's axial speed).
+void BM_BoundaryFrictionFieldUniformVelocity(benchmark::State& state) {
+  const pc::BoundaryFriction friction;
+  const Eigen::Index n = 64;
+  const Eigen::ArrayXXd p = 1e6 * (1.0 + Eigen::ArrayXXd::Random(n, n));
+  const Eigen::Vector2d v(0.0, 7.5);
+  Eigen::ArrayXXd tx, ty;
+  for (auto _ : state) {
+    friction.calcShearStressField(p, v, tx, ty);
+    benchmark::DoNotOptimize(tx.data());
+  }
+  state.SetItemsProcessed(state.iterations() * n * n);
+}
+BENCHMARK(BM_BoundaryFrictionFieldUniformVelocity);
+
 }  // namespace
 
 BENCHMARK_MAIN();

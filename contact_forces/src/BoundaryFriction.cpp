@@ -40,6 +40,10 @@ BoundaryFriction::BoundaryFriction(const BoundaryFrictionParameters& parameters)
     throw std::invalid_argument(
         "BoundaryFriction: regularisation is not a FrictionRegularisation value");
   }
+  // |v|² + v_ε² stays finite when both are below 1e150 (see weightedDirection).
+  constexpr double kFastPathLimit_mps = 1e150;
+  fastPathSpeed_mps_ =
+      parameters_.regularisationSpeed_mps <= kFastPathLimit_mps ? kFastPathLimit_mps : 0.0;
 }
 
 // |v| and v/|v| without overflow or underflow: the components are scaled by the larger
@@ -100,6 +104,38 @@ void BoundaryFriction::fractionOverSpeedAndSlope(double speed, double& overSpeed
   }
 }
 
+// (tx, ty) = g(|v|)·v/|v|, so that τ = −f·p·(tx, ty). Below fastPathSpeed_mps_ (1e150 per
+// component, and v_ε below that too) |v|² cannot overflow, and its underflow for tiny v
+// is harmless (both forms then give v/v_ε, the correct limit), so the common case needs
+// one square root and one division instead of the scaled split.
+void BoundaryFriction::weightedDirection(double vx, double vy, double& tx, double& ty) const {
+  const double m = std::max(std::fabs(vx), std::fabs(vy));
+  if (m <= fastPathSpeed_mps_) {
+    const double vEps = parameters_.regularisationSpeed_mps;
+    const double s2 = vx * vx + vy * vy;
+    double w;  // g(s)/s
+    if (parameters_.regularisation == FrictionRegularisation::Algebraic) {
+      w = 1.0 / std::sqrt(s2 + vEps * vEps);
+    } else {
+      const double s = std::sqrt(s2);
+      const double x = s / vEps;
+      if (x < 1e-3) {  // tanh(x)/x = 1 − x²/3 + 2x⁴/15 − …; truncation error < 1e-18
+        const double x2 = x * x;
+        w = (1.0 - x2 / 3.0 + 2.0 * x2 * x2 / 15.0) / vEps;
+      } else {
+        w = std::tanh(x) / s;
+      }
+    }
+    tx = w * vx;
+    ty = w * vy;
+    return;
+  }
+  const SpeedAndDirection v = splitVelocity(vx, vy);
+  const double g = fraction(v.speed);
+  tx = g * v.unitX;
+  ty = g * v.unitY;
+}
+
 double BoundaryFriction::calcEffectiveCoefficient(double slidingSpeed_mps) const {
   if (!(slidingSpeed_mps >= 0.0) || !std::isfinite(slidingSpeed_mps)) {
     detail::throwInvalid("BoundaryFriction::calcEffectiveCoefficient", "slidingSpeed_mps",
@@ -112,10 +148,10 @@ Eigen::Vector2d BoundaryFriction::calcShearStress_Pa(
     double contactPressure_Pa, const Eigen::Vector2d& slidingVelocity_mps) const {
   requirePressure(contactPressure_Pa, "calcShearStress_Pa");
   requireFiniteVelocity(slidingVelocity_mps, "calcShearStress_Pa");
-  const SpeedAndDirection v = splitVelocity(slidingVelocity_mps.x(), slidingVelocity_mps.y());
-  const double magnitude =
-      -parameters_.frictionCoefficient * contactPressure_Pa * fraction(v.speed);
-  return {magnitude * v.unitX, magnitude * v.unitY};
+  double tx = 0.0, ty = 0.0;
+  weightedDirection(slidingVelocity_mps.x(), slidingVelocity_mps.y(), tx, ty);
+  const double scale = -parameters_.frictionCoefficient * contactPressure_Pa;
+  return {scale * tx, scale * ty};
 }
 
 Eigen::Matrix2d BoundaryFriction::calcShearStressVelocityJacobian(
@@ -172,11 +208,11 @@ void BoundaryFriction::calcShearStressField(
   const double f = parameters_.frictionCoefficient;
   for (Eigen::Index j = 0; j < cols; ++j) {
     for (Eigen::Index i = 0; i < rows; ++i) {
-      const SpeedAndDirection v =
-          splitVelocity(slidingVelocityX_mps(i, j), slidingVelocityY_mps(i, j));
-      const double magnitude = -f * contactPressure_Pa(i, j) * fraction(v.speed);
-      shearStressX_Pa(i, j) = magnitude * v.unitX;
-      shearStressY_Pa(i, j) = magnitude * v.unitY;
+      double tx = 0.0, ty = 0.0;
+      weightedDirection(slidingVelocityX_mps(i, j), slidingVelocityY_mps(i, j), tx, ty);
+      const double scale = -f * contactPressure_Pa(i, j);
+      shearStressX_Pa(i, j) = scale * tx;
+      shearStressY_Pa(i, j) = scale * ty;
     }
   }
 }

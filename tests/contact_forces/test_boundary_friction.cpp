@@ -149,12 +149,13 @@ TEST(BoundaryFriction, FieldMatchesScalarCalls) {
 // |v| ≫ v_ε, τ = −f·p·v/|v| and ∂τ/∂v = −f·p/|v|·(I − e eᵀ) (e = v/|v|; the slope along v
 // is (v_ε/|v|)³/v_ε or sech², both below 1e-300 here); for |v| ≪ v_ε, τ = −f·p·v/v_ε.
 // Before the robust form, |v|² overflowed from |v| ≈ 1e154 and τ came out as exactly 0.
+// 1e149 and 1e151 straddle the switch from the direct |v|² form to the scaled one.
 TEST(BoundaryFriction, ExtremeFiniteSpeedsGiveTheirLimits) {
   const double f = 0.1, p = 2e6;
   const Eigen::Vector2d e(0.6, -0.8);
   for (auto kind : kBoth) {
     const pc::BoundaryFriction friction = makeFriction(kind);
-    for (double speed : {1e154, 1e160, 1e200, 1e300, 1.7e308}) {
+    for (double speed : {1e149, 1e151, 1e154, 1e160, 1e200, 1e300, 1.7e308}) {
       const Eigen::Vector2d v = speed * e;
       const Eigen::Vector2d tau = friction.calcShearStress_Pa(p, v);
       EXPECT_LE((tau + f * p * e).norm(), 1e-15 * f * p) << "speed " << speed;

@@ -112,8 +112,13 @@ class BoundaryFriction {
   double fraction(double speed_mps) const;
   // g(s)/s and g'(s) [s/m], for the Jacobian.
   void fractionOverSpeedAndSlope(double speed_mps, double& overSpeed, double& slope) const;
+  // The factor w with τ = −f·p·w·v [s/m]. Common case (both components and v_ε below
+  // kFastPathSpeed_mps): from |v|² directly, no division per component; otherwise from
+  // splitVelocity (no overflow for any finite v).
+  void weightedDirection(double vx, double vy, double& tx, double& ty) const;
 
   BoundaryFrictionParameters parameters_;
+  double fastPathSpeed_mps_ = 0.0;  // components up to this use |v|² directly
 };
 
 }  // namespace pistondyn::contact

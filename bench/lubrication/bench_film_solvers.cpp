@@ -9,13 +9,13 @@
 // skirt arc +-40 deg, skirt length 25 mm, barrel profile 20 um (top) / 35 um (bottom) around
 // its widest point at 55 % of the length, ovality 60 um sin^2; prescribed secondary motion
 // (lateral displacement and tilt) that drives the skirt from the anti-thrust side onto the
-// thrust side after firing TDC; oil 8 mPa s; composite roughness 0.8 um. The 100 steps cover
+// thrust side after firing TDC; oil 8 mPa s; Patir & Cheng flow factors, composite roughness
+// 0.8 um. The 100 steps cover
 // 360 .. 409.5 deg crank angle in 0.5 deg steps (41.7 us): the force element of a Simbody run
 // calls the film thousands of times per cycle. Before timing, the step preceding the window is
 // solved (untimed) so that the first timed step is warm like every other.
 //
-// Swap in another flow-factor model (e.g. the project's Patir & Cheng set) by changing
-// `makeFlowFactors()`; nothing else depends on it.
+// Swap in another flow-factor model by changing `makeFlowFactors()`; nothing else depends on it.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "pistondyn/lubrication/FilmSolver.h"
+#include "pistondyn/lubrication/PatirChengFlowFactors.h"
 
 namespace {
 
@@ -30,30 +31,17 @@ using namespace pistondyn::lubrication;
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Simple rough-surface flow factors for the benchmark (Patir & Cheng 1978 isotropic fits,
-// exact Gaussian expected gap); the real model arrives with lubrication/FlowFactors*.
-class BenchRoughFactors final : public FlowFactorModel {
- public:
-  explicit BenchRoughFactors(double sigma_m) : sigma_(sigma_m) {}
-  NodeFlowFactors calcFactors(double h) const override {
-    NodeFlowFactors f;
-    const double H = h / sigma_;
-    f.phiPressureSliding = f.phiPressureCross = 1.0 - 0.90 * std::exp(-0.56 * H);
-    const double z = H / std::sqrt(2.0);
-    f.expectedGap_m = 0.5 * h * (1.0 + std::erf(z)) +
-                      (H < 40.0 ? sigma_ / std::sqrt(2.0 * kPi) * std::exp(-0.5 * H * H) : 0.0);
-    f.dExpectedGap_dh = 0.5 * (1.0 + std::erf(z));
-    f.phiFp = 1.0 - 1.40 * std::exp(-0.66 * H);
-    return f;
-  }
-  double compositeSigma_m() const override { return sigma_; }
-
- private:
-  double sigma_;
-};
-
+// The product's own Patir & Cheng model (PatirChengFlowFactors.h): surface 1 = the liner
+// (moving at U relative to the skirt), Rq1 = 0.5 um; surface 2 = the skirt carrying the grid,
+// Rq2 = 0.62 um; composite sigma = sqrt(0.5^2 + 0.62^2) = 0.80 um; isotropic roughness
+// (gamma = 1), Gaussian expected gap. Unlike the simple isotropic fits used before (BENCHMARKS.md),
+// it carries the shear-flow term (Vr1 - Vr2 != 0) and the full shear-stress factors.
 std::unique_ptr<FlowFactorModel> makeFlowFactors() {
-  return std::make_unique<BenchRoughFactors>(0.8e-6);
+  PatirChengParameters p;
+  p.rq1_m = 0.5e-6;
+  p.rq2_m = 0.62e-6;
+  p.peklenik1 = p.peklenik2 = 1.0;
+  return std::make_unique<PatirChengFlowFactors>(p);
 }
 
 struct Step {

@@ -107,11 +107,17 @@ struct Scenario {
 
 const Scenario& scenario(int scale) {
   static const Scenario s1(1), s2(2);
-  return scale == 1 ? s1 : s2;
+  if (scale == 1)
+    return s1;
+  if (scale == 2)
+    return s2;
+  static const Scenario s4(4);  // built only when a 256 x 192 row runs
+  return s4;
 }
 
-// args: scale (1: 64 x 48, 2: 128 x 96), solver (0 fast, 1 reference), model (1 Reynolds,
-// 2 JFO), over-relaxation x 100 of the reference solver (0: the default).
+// args: scale (1: 64 x 48, 2: 128 x 96, 4: 256 x 192), solver (0 fast, 1 reference), model
+// (1 Reynolds, 2 JFO), over-relaxation x 100 of the reference solver (0: the default), linear
+// solver of the fast solver (0 Automatic, 1 SparseDirect, 2 Multigrid).
 void BM_SkirtStroke(benchmark::State& state) {
   const Scenario& sc = scenario(static_cast<int>(state.range(0)));
   FilmSolverOptions opt;
@@ -119,9 +125,13 @@ void BM_SkirtStroke(benchmark::State& state) {
       state.range(1) == 0 ? FilmSolverType::FastActiveSet : FilmSolverType::ReferenceGaussSeidel;
   if (state.range(3) > 0)
     opt.overRelaxation = state.range(3) / 100.0;
+  opt.linearSolver = state.range(4) == 1   ? FastLinearSolver::SparseDirect
+                     : state.range(4) == 2 ? FastLinearSolver::Multigrid
+                                           : FastLinearSolver::Automatic;
   const CavitationModel model =
       state.range(2) == 1 ? CavitationModel::Reynolds : CavitationModel::MassConserving;
-  double sweeps = 0, factorisations = 0, krylov = 0, activeSet = 0, notConverged = 0, cavitated = 0;
+  double sweeps = 0, factorisations = 0, mgBuilds = 0, krylov = 0, activeSet = 0, notConverged = 0,
+         cavitated = 0;
   double solves = 0;
   for (auto _ : state) {
     state.PauseTiming();
@@ -140,6 +150,7 @@ void BM_SkirtStroke(benchmark::State& state) {
       warm = r.state;
       sweeps += opt.solver == FilmSolverType::ReferenceGaussSeidel ? r.iterations : 0;
       factorisations += r.factorisations;
+      mgBuilds += r.multigridBuilds;
       krylov += r.krylovIterations;
       activeSet += r.activeSetIterations;
       notConverged += r.converged ? 0 : 1;
@@ -154,25 +165,31 @@ void BM_SkirtStroke(benchmark::State& state) {
   state.counters["sweeps"] = sweeps / solves;
   state.counters["activeSetIt"] = activeSet / solves;
   state.counters["factorisations"] = factorisations / solves;
+  state.counters["mgBuilds"] = mgBuilds / solves;
   state.counters["krylovIt"] = krylov / solves;
   state.counters["cavitatedFrac"] = cavitated / solves / sc.grid.nodeCount();
   state.counters["notConverged"] = notConverged;
 }
 
 void skirtArgs(benchmark::internal::Benchmark* b) {
-  b->ArgNames({"scale", "reference", "model", "omega"});
+  b->ArgNames({"scale", "reference", "model", "omega", "linsolver"});
   for (int model : {1, 2})
     for (int scale : {1, 2})
       for (int reference : {0, 1})
-        b->Args({scale, reference, model, 0});
+        b->Args({scale, reference, model, 0, 0});
+  // Both linear solvers of the fast Reynolds path, whatever Automatic picks, and 256 x 192 to
+  // show the trend.
+  for (int scale : {1, 2, 4})
+    for (int linsolver : {1, 2})
+      b->Args({scale, 0, 1, 0, linsolver});
   // Over-relaxation of the reference solver: the default 1.8 and the best factors found by
   // scanning (BENCHMARKS.md), so that speed-ups are quoted against a well-tuned baseline.
   for (int omega : {170, 184, 190})
-    b->Args({1, 1, 1, omega});
-  b->Args({1, 1, 2, 184});
+    b->Args({1, 1, 1, omega, 0});
+  b->Args({1, 1, 2, 184, 0});
   for (int omega : {192, 194})
     for (int model : {1, 2})
-      b->Args({2, 1, model, omega});
+      b->Args({2, 1, model, omega, 0});
   b->Unit(benchmark::kMillisecond);
   b->UseRealTime();
 }

@@ -23,6 +23,8 @@ void ActiveSetSolver::prepare(const FilmSystem& sys) {
   if (sys.n == shapeN_ && sys.nx == shapeNx_ && sys.periodicX == shapePeriodic_)
     return;
   pat_.build(sys);
+  mg_.prepare(sys);
+  mgBuilt_ = false;
   shapeN_ = sys.n;
   shapeNx_ = sys.nx;
   shapePeriodic_ = sys.periodicX;
@@ -47,6 +49,21 @@ void ActiveSetSolver::prepare(const FilmSystem& sys) {
 }
 
 void ActiveSetSolver::fillJacobian(const FilmSystem& s) {
+  for (int k = 0; k < s.n; ++k) {
+    eqRow_[k] = isEquationRow(s, k) ? 1 : 0;
+    colType_[k] = !eqRow_[k] ? 0 : (s.status[k] == kFull ? 1 : 2);
+  }
+  factorExact_ = false;
+  jacobianCurrent_ = true;
+  valuesCurrent_ = false;
+  // The multigrid preconditioner works on the stencil of FilmSystem directly.
+  if (useMg_)
+    mg_.setFineOperator(s, eqRow_.data());
+  else
+    fillValues(s);
+}
+
+void ActiveSetSolver::fillValues(const FilmSystem& s) {
   std::fill(pat_.values.begin(), pat_.values.end(), 0.0);
   // Identity rows get the node's own Poiseuille diagonal (the film's conductance varies by
   // orders of magnitude): pivot-ratio checks stay meaningful and, should the node become an
@@ -54,8 +71,6 @@ void ActiveSetSolver::fillJacobian(const FilmSystem& s) {
   double scale = 0.0;
   int count = 0;
   for (int k = 0; k < s.n; ++k) {
-    eqRow_[k] = isEquationRow(s, k) ? 1 : 0;
-    colType_[k] = !eqRow_[k] ? 0 : (s.status[k] == kFull ? 1 : 2);
     if (s.status[k] != kFixed) {
       scale += s.diagP[k];
       ++count;
@@ -100,8 +115,7 @@ void ActiveSetSolver::fillJacobian(const FilmSystem& s) {
         v[pat_.posS[k]] -= s.inCy[so];
     }
   }
-  factorExact_ = false;
-  jacobianCurrent_ = true;
+  valuesCurrent_ = true;
   updatePreconditionerScaling();
 }
 
@@ -193,6 +207,74 @@ void ActiveSetSolver::applyPreconditioner(const FilmSystem& s, double* v) {
   }
 }
 
+void ActiveSetSolver::precondition(const FilmSystem& s, const double* r, double* z) {
+  if (useMg_) {
+    mg_.apply(s, eqRow_.data(), r, z);
+    return;
+  }
+  std::copy(r, r + s.n, z);
+  applyPreconditioner(s, z);
+}
+
+bool ActiveSetSolver::rebuildMultigrid(const FilmSystem& s) {
+  mgBuilt_ = mg_.rebuild(s, eqRow_.data());
+  ++multigridBuilds_;
+  // Cost bookkeeping as for a factorisation, except that no direct solve follows.
+  costSinceFactor_ = mg_.rebuildCostInIterations();
+  solvesSinceFactor_ = 0;
+  return mgBuilt_;
+}
+
+// Multigrid-preconditioned CG. The hierarchy's coarse levels are lagged like the factorisation
+// of the sparse-direct path (refreshed by the same cost balance); its finest level always uses
+// the current matrix. Should PCG fail even with a fresh hierarchy, the current Jacobian is
+// factorised (CHOLMOD) and solved directly.
+bool ActiveSetSolver::linearSolveMultigrid(const FilmSystem& s, double* b, double target,
+                                           double looseTarget) {
+  Eigen::Map<Eigen::VectorXd> bv(b, s.n);
+  if (factorExact_) {  // a fallback factorisation of this very Jacobian exists
+    chol_.solve(b, b, 1);
+    return true;
+  }
+  bool fresh = false;
+  if (!mgBuilt_ || refactorNext_) {
+    refactorNext_ = false;
+    fresh = rebuildMultigrid(s);
+  }
+  rhs_ = bv;
+  for (int attempt = 0; attempt < 2 && mgBuilt_; ++attempt) {
+    const int before = krylovIterations_;
+    if (pcg(s, b, target, looseTarget, kMaxKrylovIterations)) {
+      const int k = krylovIterations_ - before;
+      if (k > 0) {
+        costSinceFactor_ += k;
+        ++solvesSinceFactor_;
+        if (solvesSinceFactor_ > 1 && k > costSinceFactor_ / solvesSinceFactor_)
+          refactorNext_ = true;
+      }
+      return true;
+    }
+    bv = rhs_;
+    stoppedLoose_ = false;
+    if (fresh)
+      break;
+    fresh = rebuildMultigrid(s);
+  }
+  if (!valuesCurrent_)
+    fillValues(s);
+  if (!cholAnalysed_) {
+    chol_.analyze(pat_);
+    cholAnalysed_ = true;
+  }
+  const bool ok = chol_.factorize(pat_);
+  cholFactored_ = ok;
+  ++factorisations_;
+  factorExact_ = ok;
+  if (ok)
+    chol_.solve(b, b, 1);
+  return ok;
+}
+
 bool ActiveSetSolver::wouldChangeSet(const FilmSystem& s, const Eigen::VectorXd& dz,
                                      double accuracy) const {
   if (s.model == CavitationModel::None)
@@ -225,8 +307,7 @@ bool ActiveSetSolver::pcg(const FilmSystem& s, double* b, double target, double 
   // While the active set may still move, stop at the loose target if the step would change it;
   // otherwise carry on in the same Krylov space to the tight target.
   bool checkLoose = looseTarget > target;
-  z_ = r_;
-  applyPreconditioner(s, z_.data());
+  precondition(s, r_.data(), z_.data());
   p_ = z_;
   double rz = r_.dot(z_);
   for (int it = 1; it <= maxIt; ++it) {
@@ -251,8 +332,7 @@ bool ActiveSetSolver::pcg(const FilmSystem& s, double* b, double target, double 
         return true;
       }
     }
-    z_ = r_;
-    applyPreconditioner(s, z_.data());
+    precondition(s, r_.data(), z_.data());
     const double rzNew = r_.dot(z_);
     const double beta = rzNew / rz;
     rz = rzNew;
@@ -336,6 +416,8 @@ bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target,
     bv.setZero();
     return true;
   }
+  if (useMg_)
+    return linearSolveMultigrid(s, b, target, looseTarget);
   const bool haveFactor = s.jfo ? kluFactored_ : cholFactored_;
   if (!haveFactor || refactorNext_) {
     refactorNext_ = false;
@@ -386,6 +468,16 @@ bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target,
 
 IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& opt) {
   prepare(s);
+  const bool mg =
+      !s.jfo && (opt.linearSolver == FastLinearSolver::Multigrid ||
+                 (opt.linearSolver == FastLinearSolver::Automatic && s.n >= kMultigridMinNodes));
+  if (mg != useMg_) {
+    // The lagged preconditioner of the other path is stale: start afresh.
+    useMg_ = mg;
+    mgBuilt_ = false;
+    cholFactored_ = false;
+    refactorNext_ = false;
+  }
   jacobianCurrent_ = false;
   IterationReport rep;
   double* p = s.p.data();

@@ -25,6 +25,7 @@
 
 #include <Eigen/Core>
 
+#include "GridMultigrid.h"
 #include "ReferenceSolver.h"
 #include "SparseFactor.h"
 
@@ -47,9 +48,19 @@ class ActiveSetSolver {
 
   int factorisations() const { return factorisations_; }
   int krylovIterations() const { return krylovIterations_; }
+  int multigridBuilds() const { return multigridBuilds_; }
+  // True when the symmetric systems of the last solve() used the multigrid preconditioner.
+  bool usesMultigrid() const { return useMg_; }
+  // The multigrid preconditioner (tests inspect it).
+  GridMultigrid& multigrid() { return mg_; }
 
  private:
-  void fillJacobian(const FilmSystem& sys);
+  void fillJacobian(const FilmSystem& sys);  // row flags, and values unless multigrid is used
+  void fillValues(const FilmSystem& sys);    // sparse Jacobian values (factorisations)
+  bool linearSolveMultigrid(const FilmSystem& sys, double* rhs, double absTarget,
+                            double looseTarget);
+  bool rebuildMultigrid(const FilmSystem& sys);
+  void precondition(const FilmSystem& sys, const double* r, double* z);  // z = M^-1 r
   void updatePreconditionerScaling();
   bool factorCurrent(const FilmSystem& sys);
   // rhs -> solution in place, residual max norm <= absTarget (equation rows). False on failure.
@@ -63,6 +74,11 @@ class ActiveSetSolver {
   bool gmres(const FilmSystem& sys, double* b, double absTarget, int maxIt);
 
   StencilPattern pat_;
+  GridMultigrid mg_;
+  bool useMg_ = false;
+  bool mgBuilt_ = false;
+  bool valuesCurrent_ = false;  // pat_.values hold the current Jacobian (multigrid mode)
+  int multigridBuilds_ = 0;
   CholmodLdl chol_;
   KluLu klu_;
   int shapeN_ = -1, shapeNx_ = -1;

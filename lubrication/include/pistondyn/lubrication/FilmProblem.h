@@ -118,6 +118,19 @@ struct FilmProblem {
   double referencePressure_Pa = 0.0;  // subtracted from p in load and moments, [Pa]
 };
 
+// Linear solver inside the fast solver for the symmetric systems of the Reynolds and
+// full-Sommerfeld models (the mass-conserving model always uses KLU + GMRES). Both are
+// preconditioners of the same PCG iteration, run to the same tolerance; they differ in cost.
+enum class FastLinearSolver {
+  // Multigrid from kMultigridMinNodes grid nodes up, SparseDirect below (BENCHMARKS.md: the
+  // lagged factor is the cheaper one on small grids, multigrid grows linearly with the grid).
+  Automatic,
+  SparseDirect,  // lagged CHOLMOD LDL' factorisation (AMD ordering), drift-rescaled
+  Multigrid,     // geometric multigrid V-cycle with Galerkin coarse levels on the grid
+};
+// Grid size from which FastLinearSolver::Automatic picks multigrid.
+constexpr int kMultigridMinNodes = 0;
+
 // Warm start that the caller keeps between steps (e.g. in the Simbody State cache). Small,
 // copyable. Empty arrays (the default) mean "no warm start".
 struct FilmState {
@@ -136,6 +149,9 @@ struct FilmSolverOptions {
   double overRelaxation = 1.8;
   double fillRelaxation = 1.0;      // relaxation of the fill-fraction update (JFO GS), (0, 1]
   int maxActiveSetIterations = 40;  // active-set (Newton) steps of the fast solver, default 40
+  // Linear solver of the fast solver for the Reynolds / full-Sommerfeld systems, default
+  // Automatic (see FastLinearSolver).
+  FastLinearSolver linearSolver = FastLinearSolver::Automatic;
   // When the active-set iteration does not settle within maxActiveSetIterations, continue from
   // its iterate with the reference Gauss-Seidel (reported in FilmResult::usedFallback).
   bool fallbackToReference = true;
@@ -204,6 +220,7 @@ struct FilmResult {
   int activeSetIterations = 0;
   int factorisations = 0;    // numeric sparse factorisations done in this call (fast solver)
   int krylovIterations = 0;  // preconditioned Krylov iterations done in this call (fast solver)
+  int multigridBuilds = 0;   // multigrid hierarchies (Galerkin levels) built in this call
   double residual = 0.0;
   bool converged = false;
   bool usedFallback = false;

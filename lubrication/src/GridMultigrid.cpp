@@ -1,0 +1,545 @@
+#include "GridMultigrid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pistondyn::lubrication::detail {
+
+namespace {
+
+// Slot of coarse node (I2, J2) in the 9-point row of (I1, J1); the nodes are at most one
+// coarse spacing apart (wrapping round a periodic x).
+inline int slotOf(int I1, int J1, int I2, int J2, int nx, bool periodic) {
+  int dI = I2 - I1;
+  if (periodic) {
+    if (dI > 1)
+      dI -= nx;
+    else if (dI < -1)
+      dI += nx;
+  }
+  return (dI + 1) + 3 * (J2 - J1 + 1);
+}
+
+// Interpolation weights of one fine node: up to 2 x 2 coarse parents (index, coordinates,
+// weight).
+struct Parents {
+  int count = 0;
+  int c[4];
+  int I[4], J[4];
+  double w[4];
+};
+
+}  // namespace
+
+struct GridMultigridMaps {
+  const GridMultigrid::Map1d* x;
+  const GridMultigrid::Map1d* y;
+};
+
+void GridMultigrid::buildMap(int fineCount, bool periodic, bool coarsen, Map1d& m) {
+  m.fineCount = fineCount;
+  m.periodic = periodic;
+  m.c0.assign(static_cast<size_t>(fineCount), 0);
+  m.c1.assign(static_cast<size_t>(fineCount), 0);
+  m.w0.assign(static_cast<size_t>(fineCount), 1.0);
+  m.w1.assign(static_cast<size_t>(fineCount), 0.0);
+  if (!coarsen) {
+    m.coarseCount = fineCount;
+    for (int f = 0; f < fineCount; ++f)
+      m.c0[static_cast<size_t>(f)] = m.c1[static_cast<size_t>(f)] = f;
+  } else {
+    // Coarse nodes: the even fine indices, plus the last one of an open direction with an even
+    // count (so both open ends stay nodes of every level).
+    const bool extraLast = !periodic && fineCount % 2 == 0;
+    m.coarseCount = (fineCount + 1) / 2 + (extraLast ? 1 : 0);
+    for (int f = 0; f < fineCount; ++f) {
+      const size_t s = static_cast<size_t>(f);
+      if (f % 2 == 0) {
+        m.c0[s] = m.c1[s] = f / 2;
+      } else if (extraLast && f == fineCount - 1) {
+        m.c0[s] = m.c1[s] = m.coarseCount - 1;
+      } else {
+        m.c0[s] = (f - 1) / 2;
+        m.c1[s] = ((f + 1) % fineCount) / 2;
+        m.w0[s] = m.w1[s] = 0.5;
+      }
+    }
+  }
+  // Transpose into the gather lists of the restriction.
+  std::vector<int> count(static_cast<size_t>(m.coarseCount), 0);
+  for (int t = 0; t < 3; ++t) {
+    m.g[t].assign(static_cast<size_t>(m.coarseCount), 0);
+    m.gw[t].assign(static_cast<size_t>(m.coarseCount), 0.0);
+  }
+  auto add = [&](int c, int f, double w) {
+    const size_t sc = static_cast<size_t>(c);
+    const int t = count[sc]++;
+    m.g[t][sc] = f;
+    m.gw[t][sc] = w;
+  };
+  for (int f = 0; f < fineCount; ++f) {
+    const size_t s = static_cast<size_t>(f);
+    add(m.c0[s], f, m.w0[s]);
+    if (m.w1[s] != 0.0)
+      add(m.c1[s], f, m.w1[s]);
+  }
+  for (int c = 0; c < m.coarseCount; ++c)  // pads point at a valid node
+    for (int t = count[static_cast<size_t>(c)]; t < 3; ++t)
+      m.g[t][static_cast<size_t>(c)] = m.g[0][static_cast<size_t>(c)];
+}
+
+void GridMultigrid::prepare(const FilmSystem& sys) {
+  if (sys.n == shapeN_ && sys.nx == shapeNx_ && sys.periodicX == shapePeriodic_)
+    return;
+  shapeN_ = sys.n;
+  shapeNx_ = sys.nx;
+  shapePeriodic_ = sys.periodicX;
+  built_ = false;
+  levels_.clear();
+  Level fine;
+  fine.nx = sys.nx;
+  fine.ny = sys.ny;
+  fine.n = sys.n;
+  fine.periodic = sys.periodicX;
+  fine.r.assign(static_cast<size_t>(fine.n), 0.0);
+  fineInvDiag_.assign(static_cast<size_t>(fine.n), 0.0);
+  fineMask_.assign(static_cast<size_t>(fine.n), 0.0);
+  oddSeam_ = fine.periodic && fine.nx % 2 == 1;
+  levels_.push_back(std::move(fine));
+  while (levels_.back().n > kMaxCoarsest) {
+    const Level& f = levels_.back();
+    // An open direction coarsens while it has more than 3 nodes, a periodic one while the coarse
+    // circle keeps at least 3 (so that east and west neighbours stay distinct).
+    const bool cx = f.periodic ? f.nx >= 5 : f.nx > 3;
+    const bool cy = f.ny > 3;
+    if (!cx && !cy)
+      break;
+    Level c;
+    buildMap(f.nx, f.periodic, cx, c.mx);
+    buildMap(f.ny, false, cy, c.my);
+    c.nx = c.mx.coarseCount;
+    c.ny = c.my.coarseCount;
+    c.n = c.nx * c.ny;
+    c.periodic = f.periodic;
+    const size_t n = static_cast<size_t>(c.n);
+    c.a.assign(9 * n, 0.0);
+    c.nb.assign(9 * n, 0);
+    for (int J = 0; J < c.ny; ++J)
+      for (int I = 0; I < c.nx; ++I) {
+        const int k = I + c.nx * J;
+        for (int dJ = -1; dJ <= 1; ++dJ)
+          for (int dI = -1; dI <= 1; ++dI) {
+            int I2 = I + dI;
+            const int J2 = J + dJ;
+            if (c.periodic)
+              I2 = (I2 + c.nx) % c.nx;
+            const bool inside = I2 >= 0 && I2 < c.nx && J2 >= 0 && J2 < c.ny;
+            c.nb[9 * static_cast<size_t>(k) + static_cast<size_t>((dI + 1) + 3 * (dJ + 1))] =
+                inside ? I2 + c.nx * J2 : k;
+          }
+      }
+    c.invDiag.assign(n, 0.0);
+    c.active.assign(n, 0);
+    c.activeMask.assign(n, 0.0);
+    c.x.assign(n, 0.0);
+    c.b.assign(n, 0.0);
+    c.r.assign(n, 0.0);
+    levels_.push_back(std::move(c));
+  }
+  const Level& last = levels_.back();
+  dense_.assign(static_cast<size_t>(last.n) * static_cast<size_t>(last.n), 0.0);
+  size_t maxN = 0;
+  for (const Level& L : levels_)
+    maxN = std::max(maxN, static_cast<size_t>(L.n));
+  unmaskedDiag_.assign(maxN, 0.0);
+
+  // Operation counts (multiply-adds and the index work around them, in units of one stencil
+  // coefficient touched): a cycle smooths 2 nu times and forms one residual per level, plus the
+  // transfers; a PCG iteration adds a 5-point product and ~6 vector passes; a rebuild forms 16
+  // products per stencil coefficient of the finer level (2 x 2 parents on either side) plus the
+  // dense factorisation. The factor 1.5 on the rebuild is the measured ratio of cost per
+  // operation (scatter into 9 slots with index arithmetic vs streaming sweeps).
+  double cycle = 0.0, rebuild = 0.0;
+  for (size_t l = 0; l < levels_.size(); ++l) {
+    const double n = levels_[l].n, stencil = l == 0 ? 5.0 : 9.0;
+    if (l + 1 < levels_.size()) {
+      cycle += n * stencil * (2.0 * smoothingSteps + 1.0) + 2.0 * 4.0 * n;
+      rebuild += n * stencil * 16.0;
+    }
+  }
+  const double nc = last.n;
+  cycle += 2.0 * nc * nc / 2.0;
+  rebuild = 1.5 * (rebuild + nc * nc * nc / 6.0);
+  const double iteration = cycle + 5.0 * sys.n + 6.0 * sys.n;
+  rebuildCost_ = rebuild / iteration;
+}
+
+bool GridMultigrid::rebuild(const FilmSystem& sys, const std::uint8_t* eqRow) {
+  built_ = false;
+  if (levels_.size() > 1) {
+    galerkinFromFine(sys, eqRow);
+    finishLevel(levels_[1]);
+    for (size_t l = 1; l + 1 < levels_.size(); ++l) {
+      galerkinFromLevel(static_cast<int>(l));
+      finishLevel(levels_[l + 1]);
+    }
+    if (!factorCoarsest())
+      return false;
+  }
+  built_ = true;
+  return true;
+}
+
+namespace {
+
+inline void parentsOf(const GridMultigridMaps& m, int i, int j, int cnx, Parents& P) {
+  const size_t si = static_cast<size_t>(i), sj = static_cast<size_t>(j);
+  const int Ix[2] = {m.x->c0[si], m.x->c1[si]};
+  const double wx[2] = {m.x->w0[si], m.x->w1[si]};
+  const int Jy[2] = {m.y->c0[sj], m.y->c1[sj]};
+  const double wy[2] = {m.y->w0[sj], m.y->w1[sj]};
+  P.count = 0;
+  for (int b = 0; b < 2; ++b)
+    for (int a = 0; a < 2; ++a) {
+      const double w = wx[a] * wy[b];
+      if (w == 0.0)
+        continue;
+      P.I[P.count] = Ix[a];
+      P.J[P.count] = Jy[b];
+      P.c[P.count] = Ix[a] + cnx * Jy[b];
+      P.w[P.count] = w;
+      ++P.count;
+    }
+}
+
+// row(Pk) += v * Pk' Pm: the Galerkin contribution of one fine stencil coefficient v = A(k, m).
+inline void addProduct(double* A, const Parents& Pk, const Parents& Pm, double v, int cnx,
+                       bool periodic) {
+  for (int p = 0; p < Pk.count; ++p) {
+    const double wa = Pk.w[p] * v;
+    double* row = A + 9 * static_cast<size_t>(Pk.c[p]);
+    for (int r = 0; r < Pm.count; ++r)
+      row[slotOf(Pk.I[p], Pk.J[p], Pm.I[r], Pm.J[r], cnx, periodic)] += wa * Pm.w[r];
+  }
+}
+
+}  // namespace
+
+// A_c = P~' A P~ with the fine operator of FilmSystem on the equation rows.
+void GridMultigrid::galerkinFromFine(const FilmSystem& s, const std::uint8_t* eq) {
+  Level& c = levels_[1];
+  std::fill(c.a.begin(), c.a.end(), 0.0);
+  std::fill(unmaskedDiag_.begin(), unmaskedDiag_.begin() + c.n, 0.0);
+  const GridMultigridMaps maps{&c.mx, &c.my};
+  const int nx = s.nx, ny = s.ny;
+  Parents Pk, Pm;
+  double* A = c.a.data();
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int k = i + nx * j;
+      parentsOf(maps, i, j, c.nx, Pk);
+      const double d = s.diagP[k] > 0.0 ? s.diagP[k] : 0.0;
+      for (int p = 0; p < Pk.count; ++p)
+        unmaskedDiag_[static_cast<size_t>(Pk.c[p])] += Pk.w[p] * Pk.w[p] * d;
+      if (!eq[k])
+        continue;
+      addProduct(A, Pk, Pk, s.diagP[k], c.nx, c.periodic);
+      if (s.nbE[k] != k && eq[s.nbE[k]]) {
+        parentsOf(maps, i + 1 < nx ? i + 1 : 0, j, c.nx, Pm);
+        addProduct(A, Pk, Pm, -s.tE[k], c.nx, c.periodic);
+      }
+      if (s.nbW[k] != k && eq[s.nbW[k]]) {
+        parentsOf(maps, i > 0 ? i - 1 : nx - 1, j, c.nx, Pm);
+        addProduct(A, Pk, Pm, -s.tW[k], c.nx, c.periodic);
+      }
+      if (s.nbN[k] != k && eq[s.nbN[k]]) {
+        parentsOf(maps, i, j + 1, c.nx, Pm);
+        addProduct(A, Pk, Pm, -s.tN[k], c.nx, c.periodic);
+      }
+      if (s.nbS[k] != k && eq[s.nbS[k]]) {
+        parentsOf(maps, i, j - 1, c.nx, Pm);
+        addProduct(A, Pk, Pm, -s.tS[k], c.nx, c.periodic);
+      }
+    }
+}
+
+// A_{l+1} = P~' A_l P~ with the 9-point operator of level l on its active nodes.
+void GridMultigrid::galerkinFromLevel(int l) {
+  const Level& f = levels_[static_cast<size_t>(l)];
+  Level& c = levels_[static_cast<size_t>(l) + 1];
+  std::fill(c.a.begin(), c.a.end(), 0.0);
+  std::fill(unmaskedDiag_.begin(), unmaskedDiag_.begin() + c.n, 0.0);
+  const GridMultigridMaps maps{&c.mx, &c.my};
+  Parents Pk, Pm;
+  double* A = c.a.data();
+  for (int j = 0; j < f.ny; ++j)
+    for (int i = 0; i < f.nx; ++i) {
+      const int k = i + f.nx * j;
+      parentsOf(maps, i, j, c.nx, Pk);
+      const size_t k9 = 9 * static_cast<size_t>(k);
+      const double d = f.a[k9 + 4];
+      for (int p = 0; p < Pk.count; ++p)
+        unmaskedDiag_[static_cast<size_t>(Pk.c[p])] += Pk.w[p] * Pk.w[p] * d;
+      if (!f.active[static_cast<size_t>(k)])
+        continue;
+      for (int q = 0; q < 9; ++q) {
+        const double v = f.a[k9 + static_cast<size_t>(q)];
+        const int m = f.nb[k9 + static_cast<size_t>(q)];
+        if (v == 0.0 || !f.active[static_cast<size_t>(m)])
+          continue;
+        if (q == 4) {
+          addProduct(A, Pk, Pk, v, c.nx, c.periodic);
+        } else {
+          parentsOf(maps, m % f.nx, m / f.nx, c.nx, Pm);
+          addProduct(A, Pk, Pm, v, c.nx, c.periodic);
+        }
+      }
+    }
+}
+
+// Marks the active nodes of a freshly formed level (positive Galerkin diagonal) and gives the
+// others a decoupled row with the unmasked Galerkin diagonal.
+void GridMultigrid::finishLevel(Level& c) {
+  for (int k = 0; k < c.n; ++k) {
+    const size_t k9 = 9 * static_cast<size_t>(k);
+    const double ud = unmaskedDiag_[static_cast<size_t>(k)];
+    const bool active = c.a[k9 + 4] > 1e-12 * ud;
+    c.active[static_cast<size_t>(k)] = active ? 1 : 0;
+    c.activeMask[static_cast<size_t>(k)] = active ? 1.0 : 0.0;
+    if (!active) {
+      for (size_t q = 0; q < 9; ++q)
+        c.a[k9 + q] = 0.0;
+      c.a[k9 + 4] = ud > 0.0 ? ud : 1.0;
+    }
+    c.invDiag[static_cast<size_t>(k)] = 1.0 / c.a[k9 + 4];
+  }
+}
+
+bool GridMultigrid::factorCoarsest() {
+  const Level& L = levels_.back();
+  const int n = L.n;
+  const size_t N = static_cast<size_t>(n);
+  std::fill(dense_.begin(), dense_.end(), 0.0);
+  for (int k = 0; k < n; ++k)
+    for (size_t q = 0; q < 9; ++q) {
+      const double v = L.a[9 * static_cast<size_t>(k) + q];
+      if (v != 0.0)
+        dense_[static_cast<size_t>(L.nb[9 * static_cast<size_t>(k) + q]) * N +
+               static_cast<size_t>(k)] += v;  // column-major (symmetric anyway)
+    }
+  // In-place Cholesky, lower triangle (column j below the diagonal holds L(:, j)).
+  for (size_t j = 0; j < N; ++j) {
+    double d = dense_[j * N + j];
+    for (size_t k = 0; k < j; ++k)
+      d -= dense_[k * N + j] * dense_[k * N + j];
+    if (!(d > 0.0) || !std::isfinite(d))
+      return false;
+    d = std::sqrt(d);
+    dense_[j * N + j] = d;
+    for (size_t i = j + 1; i < N; ++i) {
+      double t = dense_[j * N + i];
+      for (size_t k = 0; k < j; ++k)
+        t -= dense_[k * N + i] * dense_[k * N + j];
+      dense_[j * N + i] = t / d;
+    }
+  }
+  return true;
+}
+
+void GridMultigrid::coarsestSolve(Level& L) {
+  const size_t N = static_cast<size_t>(L.n);
+  double* x = L.x.data();
+  for (size_t i = 0; i < N; ++i) {  // L y = b
+    double t = L.b[i];
+    for (size_t k = 0; k < i; ++k)
+      t -= dense_[k * N + i] * x[k];
+    x[i] = t / dense_[i * N + i];
+  }
+  for (size_t i = N; i-- > 0;) {  // L' x = y
+    double t = x[i];
+    for (size_t k = i + 1; k < N; ++k)
+      t -= dense_[i * N + k] * x[k];
+    x[i] = t / dense_[i * N + i];
+  }
+}
+
+void GridMultigrid::setFineOperator(const FilmSystem& s, const std::uint8_t* eq) {
+  for (int k = 0; k < s.n; ++k) {
+    fineInvDiag_[static_cast<size_t>(k)] = eq[k] ? 1.0 / s.diagP[k] : 0.0;
+    fineMask_[static_cast<size_t>(k)] = eq[k] ? 1.0 : 0.0;
+  }
+}
+
+// Red-black ordering: the updates of one colour are independent of each other on the 5-point
+// stencil (no dependency chain, unlike lexicographic sweeps), except across the seam of a
+// periodic x with an odd count, where the sweep is still a Gauss-Seidel sweep in a fixed order.
+// The masked rows have inverse diagonal 0, so they stay 0 without a branch.
+void GridMultigrid::smoothFineColour(const FilmSystem& s, double* x, const double* b, int colour,
+                                     bool descending) const {
+  const int nx = s.nx, ny = s.ny;
+  const double *tE = s.tE.data(), *tW = s.tW.data(), *tN = s.tN.data(), *tS = s.tS.data(),
+               *inv = fineInvDiag_.data();
+  const int *nE = s.nbE.data(), *nW = s.nbW.data(), *nN = s.nbN.data(), *nS = s.nbS.data();
+  auto update = [&](int k) {
+    x[k] =
+        (b[k] + tE[k] * x[nE[k]] + tW[k] * x[nW[k]] + tN[k] * x[nN[k]] + tS[k] * x[nS[k]]) * inv[k];
+  };
+  if (!descending) {
+    for (int j = 0; j < ny; ++j)
+      for (int i = (j + colour) & 1, k = i + nx * j; i < nx; i += 2, k += 2)
+        update(k);
+  } else {
+    for (int j = ny - 1; j >= 0; --j) {
+      const int i0 = (j + colour) & 1;
+      const int last = i0 + 2 * ((nx - 1 - i0) / 2);
+      for (int i = last, k = i + nx * j; i >= i0; i -= 2, k -= 2)
+        update(k);
+    }
+  }
+}
+
+// Lexicographic Gauss-Seidel on a 9-point level; the west neighbour (just updated) enters last so
+// that the loop-carried dependency is one multiply-add and one multiply long.
+void GridMultigrid::smoothLevel(Level& L, bool forward) const {
+  const int n = L.n;
+  const double* a = L.a.data();
+  const int* nb = L.nb.data();
+  const double* inv = L.invDiag.data();
+  double* x = L.x.data();
+  const double* b = L.b.data();
+  auto update = [&](int k) {
+    const double* ak = a + 9 * static_cast<size_t>(k);
+    const int* nk = nb + 9 * static_cast<size_t>(k);
+    const double t = b[k] - (ak[0] * x[nk[0]] + ak[1] * x[nk[1]] + ak[2] * x[nk[2]] +
+                             ak[6] * x[nk[6]] + ak[7] * x[nk[7]] + ak[8] * x[nk[8]]);
+    x[k] = (t - ak[5] * x[nk[5]] - ak[3] * x[nk[3]]) * inv[k];
+  };
+  if (forward)
+    for (int k = 0; k < n; ++k)
+      update(k);
+  else
+    for (int k = n - 1; k >= 0; --k)
+      update(k);
+}
+
+// Fine level: pre-smoothing red then black (nu times), post-smoothing black then red in exactly
+// the reverse order (the adjoint sweep), so that the cycle is symmetric.
+void GridMultigrid::apply(const FilmSystem& s, const std::uint8_t* eq, const double* rIn,
+                          double* z) {
+  (void)eq;
+  const int n0 = s.n, nx = s.nx, ny = s.ny;
+  const size_t levels = levels_.size();
+  const double* inv = fineInvDiag_.data();
+  // First red half sweep from z = 0: the neighbours are still 0.
+  for (int j = 0; j < ny; ++j) {
+    double* zr = z + nx * j;
+    const double *br = rIn + nx * j, *ir = inv + nx * j;
+    for (int i = 0; i < nx; ++i)
+      zr[i] = ((i + j) & 1) == 0 ? br[i] * ir[i] : 0.0;
+  }
+  smoothFineColour(s, z, rIn, 1, false);
+  for (int it = 1; it < smoothingSteps; ++it) {
+    smoothFineColour(s, z, rIn, 0, false);
+    smoothFineColour(s, z, rIn, 1, false);
+  }
+  if (levels > 1) {
+    // Residual of the fine level on the equation rows. The black half sweep has just zeroed it
+    // on the black nodes (their neighbours are red), unless the periodic seam couples blacks.
+    double* r = levels_[0].r.data();
+    const double* m = fineMask_.data();
+    const double *tE = s.tE.data(), *tW = s.tW.data(), *tN = s.tN.data(), *tS = s.tS.data(),
+                 *dg = s.diagP.data();
+    const int *nE = s.nbE.data(), *nW = s.nbW.data(), *nN = s.nbN.data(), *nS = s.nbS.data();
+    auto res = [&](int k) {
+      r[k] = m[k] * (rIn[k] - dg[k] * z[k] + tE[k] * z[nE[k]] + tW[k] * z[nW[k]] +
+                     tN[k] * z[nN[k]] + tS[k] * z[nS[k]]);
+    };
+    if (oddSeam_) {
+      for (int k = 0; k < n0; ++k)
+        res(k);
+    } else {
+      for (int j = 0; j < ny; ++j)
+        for (int i = j & 1, k = i + nx * j; i < nx; i += 2, k += 2)
+          res(k);
+    }
+    restrictTo(levels_[1], r, nx, ny);
+    for (size_t l = 1; l + 1 < levels; ++l) {
+      Level& L = levels_[l];
+      std::fill(L.x.begin(), L.x.end(), 0.0);
+      for (int it = 0; it < smoothingSteps; ++it)
+        smoothLevel(L, true);
+      residualLevel(L);
+      restrictTo(levels_[l + 1], L.r.data(), L.nx, L.ny);
+    }
+    coarsestSolve(levels_.back());
+    for (size_t l = levels - 1; l-- > 1;) {
+      Level& L = levels_[l];
+      prolongFrom(levels_[l + 1], L.x.data(), L.nx, L.ny, L.activeMask.data());
+      for (int it = 0; it < smoothingSteps; ++it)
+        smoothLevel(L, false);
+    }
+    prolongFrom(levels_[1], z, nx, ny, fineMask_.data());
+  }
+  for (int it = 0; it < smoothingSteps; ++it) {
+    smoothFineColour(s, z, rIn, 1, true);
+    smoothFineColour(s, z, rIn, 0, true);
+  }
+}
+
+void GridMultigrid::residualLevel(Level& L) const {
+  const double* a = L.a.data();
+  const int* nb = L.nb.data();
+  const double* x = L.x.data();
+  const double* m = L.activeMask.data();
+  for (int k = 0; k < L.n; ++k) {
+    const double* ak = a + 9 * static_cast<size_t>(k);
+    const int* nk = nb + 9 * static_cast<size_t>(k);
+    double t = L.b[static_cast<size_t>(k)];
+    for (int q = 0; q < 9; ++q)
+      t -= ak[q] * x[nk[q]];
+    L.r[static_cast<size_t>(k)] = m[k] * t;
+  }
+}
+
+// c.b = P' r (r vanishes on masked fine nodes), as a gather over each coarse node's fine
+// neighbours.
+void GridMultigrid::restrictTo(Level& c, const double* r, int fnx, int fny) const {
+  (void)fny;
+  const Map1d &mx = c.mx, &my = c.my;
+  const int *g0 = mx.g[0].data(), *g1 = mx.g[1].data(), *g2 = mx.g[2].data();
+  const double *w0 = mx.gw[0].data(), *w1 = mx.gw[1].data(), *w2 = mx.gw[2].data();
+  for (int J = 0; J < c.ny; ++J) {
+    double* out = c.b.data() + static_cast<size_t>(c.nx) * J;
+    for (int I = 0; I < c.nx; ++I)
+      out[I] = 0.0;
+    for (int t = 0; t < 3; ++t) {
+      const double wy = my.gw[t][static_cast<size_t>(J)];
+      if (wy == 0.0)
+        continue;
+      const double* row = r + static_cast<size_t>(fnx) * my.g[t][static_cast<size_t>(J)];
+      for (int I = 0; I < c.nx; ++I)
+        out[I] += wy * (w0[I] * row[g0[I]] + w1[I] * row[g1[I]] + w2[I] * row[g2[I]]);
+    }
+  }
+}
+
+// x += mask .* (P c.x).
+void GridMultigrid::prolongFrom(const Level& c, double* x, int fnx, int fny,
+                                const double* mask) const {
+  const double* xc = c.x.data();
+  const int *c0 = c.mx.c0.data(), *c1 = c.mx.c1.data();
+  const double *u0 = c.mx.w0.data(), *u1 = c.mx.w1.data();
+  for (int j = 0; j < fny; ++j) {
+    const size_t sj = static_cast<size_t>(j);
+    const double* row0 = xc + static_cast<size_t>(c.nx) * c.my.c0[sj];
+    const double* row1 = xc + static_cast<size_t>(c.nx) * c.my.c1[sj];
+    const double v0 = c.my.w0[sj], v1 = c.my.w1[sj];
+    double* xr = x + static_cast<size_t>(fnx) * j;
+    const double* mr = mask + static_cast<size_t>(fnx) * j;
+    for (int i = 0; i < fnx; ++i)
+      xr[i] += mr[i] * (v0 * (u0[i] * row0[c0[i]] + u1[i] * row0[c1[i]]) +
+                        v1 * (u0[i] * row1[c0[i]] + u1[i] * row1[c1[i]]));
+  }
+}
+
+}  // namespace pistondyn::lubrication::detail

@@ -105,6 +105,7 @@ class ActiveSetSolver {
   Eigen::VectorXd g_, cs_, sn_, y_;
   Eigen::VectorXd changedRhs_;
   std::vector<std::uint8_t> eqRow_;
+  Eigen::VectorXd eqMask_;                             // 1.0 on equation rows, 0.0 elsewhere
   std::vector<std::uint8_t> colType_, factorColType_;  // 0 identity, 1 pressure, 2 fill
 };
 

@@ -5,36 +5,7 @@
 
 namespace pistondyn::lubrication::detail {
 
-namespace {
-
-// Slot of coarse node (I2, J2) in the 9-point row of (I1, J1); the nodes are at most one
-// coarse spacing apart (wrapping round a periodic x).
-inline int slotOf(int I1, int J1, int I2, int J2, int nx, bool periodic) {
-  int dI = I2 - I1;
-  if (periodic) {
-    if (dI > 1)
-      dI -= nx;
-    else if (dI < -1)
-      dI += nx;
-  }
-  return (dI + 1) + 3 * (J2 - J1 + 1);
-}
-
-// Interpolation weights of one fine node: up to 2 x 2 coarse parents (index, coordinates,
-// weight).
-struct Parents {
-  int count = 0;
-  int c[4];
-  int I[4], J[4];
-  double w[4];
-};
-
-}  // namespace
-
-struct GridMultigridMaps {
-  const GridMultigrid::Map1d* x;
-  const GridMultigrid::Map1d* y;
-};
+namespace {}  // namespace
 
 void GridMultigrid::buildMap(int fineCount, bool periodic, bool coarsen, Map1d& m) {
   m.fineCount = fineCount;
@@ -152,6 +123,18 @@ void GridMultigrid::prepare(const FilmSystem& sys) {
   for (const Level& L : levels_)
     maxN = std::max(maxN, static_cast<size_t>(L.n));
   unmaskedDiag_.assign(maxN, 0.0);
+  levelDiag_.assign(maxN, 0.0);
+  fine9_.assign(9 * static_cast<size_t>(sys.n), 0.0);
+  fineDiag_.assign(static_cast<size_t>(sys.n), 0.0);
+  size_t stage = 0;  // intermediate of the Galerkin product: coarse in x, fine in y
+  for (size_t l = 1; l < levels_.size(); ++l)
+    stage = std::max(stage, static_cast<size_t>(levels_[l].nx) * levels_[l - 1].ny);
+  stage_.assign(9 * stage, 0.0);
+  stageDiag_.assign(stage, 0.0);
+  size_t rows = 0;  // prolongation scratch: coarse rows interpolated to the finer x
+  for (size_t l = 1; l < levels_.size(); ++l)
+    rows = std::max(rows, static_cast<size_t>(levels_[l].ny) * levels_[l - 1].nx);
+  rowScratch_.assign(rows, 0.0);
 
   // Operation counts (multiply-adds and the index work around them, in units of one stencil
   // coefficient touched): a cycle smooths 2 nu times and forms one residual per level, plus the
@@ -169,7 +152,7 @@ void GridMultigrid::prepare(const FilmSystem& sys) {
   }
   const double nc = last.n;
   cycle += 2.0 * nc * nc / 2.0;
-  rebuild = 1.5 * (rebuild + nc * nc * nc / 6.0);
+  rebuild = 2.1 * (rebuild + nc * nc * nc / 6.0);
   const double iteration = cycle + 5.0 * sys.n + 6.0 * sys.n;
   rebuildCost_ = rebuild / iteration;
 }
@@ -177,10 +160,14 @@ void GridMultigrid::prepare(const FilmSystem& sys) {
 bool GridMultigrid::rebuild(const FilmSystem& sys, const std::uint8_t* eqRow) {
   built_ = false;
   if (levels_.size() > 1) {
-    galerkinFromFine(sys, eqRow);
+    fineAsNinePoint(sys);
+    galerkin(0, fine9_.data(), fineDiag_.data(), eqRow);
     finishLevel(levels_[1]);
     for (size_t l = 1; l + 1 < levels_.size(); ++l) {
-      galerkinFromLevel(static_cast<int>(l));
+      const Level& L = levels_[l];
+      for (int k = 0; k < L.n; ++k)
+        levelDiag_[static_cast<size_t>(k)] = L.a[9 * static_cast<size_t>(k) + 4];
+      galerkin(static_cast<int>(l), L.a.data(), levelDiag_.data(), L.active.data());
       finishLevel(levels_[l + 1]);
     }
     if (!factorCoarsest())
@@ -190,111 +177,94 @@ bool GridMultigrid::rebuild(const FilmSystem& sys, const std::uint8_t* eqRow) {
   return true;
 }
 
-namespace {
-
-inline void parentsOf(const GridMultigridMaps& m, int i, int j, int cnx, Parents& P) {
-  const size_t si = static_cast<size_t>(i), sj = static_cast<size_t>(j);
-  const int Ix[2] = {m.x->c0[si], m.x->c1[si]};
-  const double wx[2] = {m.x->w0[si], m.x->w1[si]};
-  const int Jy[2] = {m.y->c0[sj], m.y->c1[sj]};
-  const double wy[2] = {m.y->w0[sj], m.y->w1[sj]};
-  P.count = 0;
-  for (int b = 0; b < 2; ++b)
-    for (int a = 0; a < 2; ++a) {
-      const double w = wx[a] * wy[b];
-      if (w == 0.0)
-        continue;
-      P.I[P.count] = Ix[a];
-      P.J[P.count] = Jy[b];
-      P.c[P.count] = Ix[a] + cnx * Jy[b];
-      P.w[P.count] = w;
-      ++P.count;
-    }
-}
-
-// row(Pk) += v * Pk' Pm: the Galerkin contribution of one fine stencil coefficient v = A(k, m).
-inline void addProduct(double* A, const Parents& Pk, const Parents& Pm, double v, int cnx,
-                       bool periodic) {
-  for (int p = 0; p < Pk.count; ++p) {
-    const double wa = Pk.w[p] * v;
-    double* row = A + 9 * static_cast<size_t>(Pk.c[p]);
-    for (int r = 0; r < Pm.count; ++r)
-      row[slotOf(Pk.I[p], Pk.J[p], Pm.I[r], Pm.J[r], cnx, periodic)] += wa * Pm.w[r];
-  }
-}
-
-}  // namespace
-
-// A_c = P~' A P~ with the fine operator of FilmSystem on the equation rows.
-void GridMultigrid::galerkinFromFine(const FilmSystem& s, const std::uint8_t* eq) {
-  Level& c = levels_[1];
-  std::fill(c.a.begin(), c.a.end(), 0.0);
-  std::fill(unmaskedDiag_.begin(), unmaskedDiag_.begin() + c.n, 0.0);
-  const GridMultigridMaps maps{&c.mx, &c.my};
-  const int nx = s.nx, ny = s.ny;
-  Parents Pk, Pm;
-  double* A = c.a.data();
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const int k = i + nx * j;
-      parentsOf(maps, i, j, c.nx, Pk);
-      const double d = s.diagP[k] > 0.0 ? s.diagP[k] : 0.0;
-      for (int p = 0; p < Pk.count; ++p)
-        unmaskedDiag_[static_cast<size_t>(Pk.c[p])] += Pk.w[p] * Pk.w[p] * d;
-      if (!eq[k])
-        continue;
-      addProduct(A, Pk, Pk, s.diagP[k], c.nx, c.periodic);
-      if (s.nbE[k] != k && eq[s.nbE[k]]) {
-        parentsOf(maps, i + 1 < nx ? i + 1 : 0, j, c.nx, Pm);
-        addProduct(A, Pk, Pm, -s.tE[k], c.nx, c.periodic);
-      }
-      if (s.nbW[k] != k && eq[s.nbW[k]]) {
-        parentsOf(maps, i > 0 ? i - 1 : nx - 1, j, c.nx, Pm);
-        addProduct(A, Pk, Pm, -s.tW[k], c.nx, c.periodic);
-      }
-      if (s.nbN[k] != k && eq[s.nbN[k]]) {
-        parentsOf(maps, i, j + 1, c.nx, Pm);
-        addProduct(A, Pk, Pm, -s.tN[k], c.nx, c.periodic);
-      }
-      if (s.nbS[k] != k && eq[s.nbS[k]]) {
-        parentsOf(maps, i, j - 1, c.nx, Pm);
-        addProduct(A, Pk, Pm, -s.tS[k], c.nx, c.periodic);
-      }
-    }
-}
-
-// A_{l+1} = P~' A_l P~ with the 9-point operator of level l on its active nodes.
-void GridMultigrid::galerkinFromLevel(int l) {
-  const Level& f = levels_[static_cast<size_t>(l)];
-  Level& c = levels_[static_cast<size_t>(l) + 1];
-  std::fill(c.a.begin(), c.a.end(), 0.0);
-  std::fill(unmaskedDiag_.begin(), unmaskedDiag_.begin() + c.n, 0.0);
-  const GridMultigridMaps maps{&c.mx, &c.my};
-  Parents Pk, Pm;
-  double* A = c.a.data();
-  for (int j = 0; j < f.ny; ++j)
-    for (int i = 0; i < f.nx; ++i) {
-      const int k = i + f.nx * j;
-      parentsOf(maps, i, j, c.nx, Pk);
-      const size_t k9 = 9 * static_cast<size_t>(k);
-      const double d = f.a[k9 + 4];
-      for (int p = 0; p < Pk.count; ++p)
-        unmaskedDiag_[static_cast<size_t>(Pk.c[p])] += Pk.w[p] * Pk.w[p] * d;
-      if (!f.active[static_cast<size_t>(k)])
-        continue;
-      for (int q = 0; q < 9; ++q) {
-        const double v = f.a[k9 + static_cast<size_t>(q)];
-        const int m = f.nb[k9 + static_cast<size_t>(q)];
-        if (v == 0.0 || !f.active[static_cast<size_t>(m)])
+// One direction of the Galerkin product: out = P1' in P1 for the 1-D interpolation P1 of map m
+// along x (alongX) or y, with in a 9-point operator on (nxIn x nyIn) (rows and columns of nodes
+// with active[k] == 0 removed, when active is given) and out a 9-point operator on the grid
+// coarsened along that direction. Each output row is gathered from the (at most 3) input rows
+// that interpolate from it, into a local accumulator: no scattered read-modify-writes. The
+// unmasked diagonal ud (sum of w^2 * diagonal, masked nodes included) is carried along.
+void GridMultigrid::galerkinStage(const double* in, const double* udIn, const std::uint8_t* active,
+                                  int nxIn, int nyIn, bool periodic, const Map1d& m, bool alongX,
+                                  double* out, double* udOut) {
+  const int nxOut = alongX ? m.coarseCount : nxIn;
+  const int nyOut = alongX ? nyIn : m.coarseCount;
+  for (int jo = 0; jo < nyOut; ++jo)
+    for (int io = 0; io < nxOut; ++io) {
+      const int C = alongX ? io : jo;  // coarse index along the coarsened direction
+      double acc[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+      double ud = 0.0;
+      for (int t = 0; t < 3; ++t) {
+        const double w = m.gw[t][static_cast<size_t>(C)];
+        if (w == 0.0)
           continue;
-        if (q == 4) {
-          addProduct(A, Pk, Pk, v, c.nx, c.periodic);
-        } else {
-          parentsOf(maps, m % f.nx, m / f.nx, c.nx, Pm);
-          addProduct(A, Pk, Pm, v, c.nx, c.periodic);
+        const int f = m.g[t][static_cast<size_t>(C)];
+        const int i = alongX ? f : io, j = alongX ? jo : f;
+        const int k = i + nxIn * j;
+        const double* ak = in + 9 * static_cast<size_t>(k);
+        ud += w * w * udIn[k];
+        if (active && !active[k])
+          continue;
+        for (int sl = 0; sl < 9; ++sl) {
+          const double v = ak[sl];
+          if (v == 0.0)
+            continue;
+          const int di = sl % 3 - 1, dj = sl / 3 - 1;
+          int i2 = i + di;
+          const int j2 = j + dj;
+          if (periodic)
+            i2 = i2 < 0 ? i2 + nxIn : (i2 >= nxIn ? i2 - nxIn : i2);
+          if (active && !active[i2 + nxIn * j2])
+            continue;
+          const int f2 = alongX ? i2 : j2;
+          const size_t s2 = static_cast<size_t>(f2);
+          for (int r = 0; r < 2; ++r) {
+            const double w2 = r == 0 ? m.w0[s2] : m.w1[s2];
+            if (w2 == 0.0)
+              continue;
+            int d = (r == 0 ? m.c0[s2] : m.c1[s2]) - C;
+            if (alongX && periodic)
+              d = d > 1 ? d - nxOut : (d < -1 ? d + nxOut : d);
+            const int slot = alongX ? (d + 1) + 3 * (dj + 1) : (di + 1) + 3 * (d + 1);
+            acc[slot] += w * v * w2;
+          }
         }
       }
+      double* o = out + 9 * static_cast<size_t>(io + nxOut * jo);
+      for (int sl = 0; sl < 9; ++sl)
+        o[sl] = acc[sl];
+      udOut[io + nxOut * jo] = ud;
     }
+}
+
+// A_{l+1} = P~' A_l P~, one direction after the other (P = Px Py, the mask applied to A_l).
+void GridMultigrid::galerkin(int l, const double* in, const double* udIn,
+                             const std::uint8_t* active) {
+  const Level& f = levels_[static_cast<size_t>(l)];
+  Level& c = levels_[static_cast<size_t>(l) + 1];
+  galerkinStage(in, udIn, active, f.nx, f.ny, f.periodic, c.mx, true, stage_.data(),
+                stageDiag_.data());
+  galerkinStage(stage_.data(), stageDiag_.data(), nullptr, c.nx, f.ny, f.periodic, c.my, false,
+                c.a.data(), unmaskedDiag_.data());
+}
+
+// The fine operator as a 9-point array (the 5-point stencil of FilmSystem), for galerkin().
+void GridMultigrid::fineAsNinePoint(const FilmSystem& s) {
+  double* a = fine9_.data();
+  for (int k = 0; k < s.n; ++k) {
+    double* ak = a + 9 * static_cast<size_t>(k);
+    for (int sl = 0; sl < 9; ++sl)
+      ak[sl] = 0.0;
+    ak[4] = s.diagP[k];
+    if (s.nbW[k] != k)
+      ak[3] = -s.tW[k];
+    if (s.nbE[k] != k)
+      ak[5] = -s.tE[k];
+    if (s.nbS[k] != k)
+      ak[1] = -s.tS[k];
+    if (s.nbN[k] != k)
+      ak[7] = -s.tN[k];
+    fineDiag_[static_cast<size_t>(k)] = s.diagP[k] > 0.0 ? s.diagP[k] : 0.0;
+  }
 }
 
 // Marks the active nodes of a freshly formed level (positive Galerkin diagonal) and gives the
@@ -380,28 +350,61 @@ void GridMultigrid::smoothFineColour(const FilmSystem& s, double* x, const doubl
   const double *tE = s.tE.data(), *tW = s.tW.data(), *tN = s.tN.data(), *tS = s.tS.data(),
                *inv = fineInvDiag_.data();
   const int *nE = s.nbE.data(), *nW = s.nbW.data(), *nN = s.nbN.data(), *nS = s.nbS.data();
-  auto update = [&](int k) {
+  // Any node (edges, wrap-around) through the neighbour lists; interior nodes with fixed offsets.
+  auto general = [&](int k) {
     x[k] =
         (b[k] + tE[k] * x[nE[k]] + tW[k] * x[nW[k]] + tN[k] * x[nN[k]] + tS[k] * x[nS[k]]) * inv[k];
   };
-  if (!descending) {
-    for (int j = 0; j < ny; ++j)
-      for (int i = (j + colour) & 1, k = i + nx * j; i < nx; i += 2, k += 2)
-        update(k);
-  } else {
-    for (int j = ny - 1; j >= 0; --j) {
-      const int i0 = (j + colour) & 1;
-      const int last = i0 + 2 * ((nx - 1 - i0) / 2);
-      for (int i = last, k = i + nx * j; i >= i0; i -= 2, k -= 2)
-        update(k);
+  auto interior = [&](int k) {
+    x[k] = (b[k] + tE[k] * x[k + 1] + tW[k] * x[k - 1] + tN[k] * x[k + nx] + tS[k] * x[k - nx]) *
+           inv[k];
+  };
+  auto row = [&](int j) {
+    const int i0 = (j + colour) & 1;
+    const int last = i0 + 2 * ((nx - 1 - i0) / 2);
+    const int base = nx * j;
+    const bool edgeRow = j == 0 || j == ny - 1;
+    // The first and last node of the row are edge nodes; the others are interior unless the
+    // row itself is an edge row.
+    const int lo = i0 == 0 ? 2 : i0, hi = last == nx - 1 ? last - 2 : last;
+    if (!descending) {
+      if (i0 == 0)
+        general(base);
+      if (edgeRow)
+        for (int i = lo; i <= hi; i += 2)
+          general(base + i);
+      else
+        for (int i = lo; i <= hi; i += 2)
+          interior(base + i);
+      if (last == nx - 1 && last != 0)
+        general(base + last);
+    } else {
+      if (last == nx - 1 && last != 0)
+        general(base + last);
+      if (edgeRow)
+        for (int i = hi; i >= lo; i -= 2)
+          general(base + i);
+      else
+        for (int i = hi; i >= lo; i -= 2)
+          interior(base + i);
+      if (i0 == 0)
+        general(base);
     }
-  }
+  };
+  if (!descending)
+    for (int j = 0; j < ny; ++j)
+      row(j);
+  else
+    for (int j = ny - 1; j >= 0; --j)
+      row(j);
 }
 
-// Lexicographic Gauss-Seidel on a 9-point level; the west neighbour (just updated) enters last so
-// that the loop-carried dependency is one multiply-add and one multiply long.
+// Red-black Gauss-Seidel on a 9-point level (forward: red then black; backward: black then
+// red, each in exactly the reverse order). On 9 points the colours are not decoupled (diagonal
+// neighbours share a colour), but a node then depends on nodes of the previous row only, so the
+// loop carries no dependency chain; it is a plain Gauss-Seidel sweep in a fixed order.
 void GridMultigrid::smoothLevel(Level& L, bool forward) const {
-  const int n = L.n;
+  const int nx = L.nx, ny = L.ny;
   const double* a = L.a.data();
   const int* nb = L.nb.data();
   const double* inv = L.invDiag.data();
@@ -410,32 +413,52 @@ void GridMultigrid::smoothLevel(Level& L, bool forward) const {
   auto update = [&](int k) {
     const double* ak = a + 9 * static_cast<size_t>(k);
     const int* nk = nb + 9 * static_cast<size_t>(k);
-    const double t = b[k] - (ak[0] * x[nk[0]] + ak[1] * x[nk[1]] + ak[2] * x[nk[2]] +
-                             ak[6] * x[nk[6]] + ak[7] * x[nk[7]] + ak[8] * x[nk[8]]);
-    x[k] = (t - ak[5] * x[nk[5]] - ak[3] * x[nk[3]]) * inv[k];
+    const double t =
+        b[k] - (ak[0] * x[nk[0]] + ak[1] * x[nk[1]] + ak[2] * x[nk[2]] + ak[3] * x[nk[3]] +
+                ak[5] * x[nk[5]] + ak[6] * x[nk[6]] + ak[7] * x[nk[7]] + ak[8] * x[nk[8]]);
+    x[k] = t * inv[k];
   };
-  if (forward)
-    for (int k = 0; k < n; ++k)
-      update(k);
-  else
-    for (int k = n - 1; k >= 0; --k)
-      update(k);
+  auto sweep = [&](int colour, bool descending) {
+    if (!descending) {
+      for (int j = 0; j < ny; ++j)
+        for (int i = (j + colour) & 1, k = i + nx * j; i < nx; i += 2, k += 2)
+          update(k);
+    } else {
+      for (int j = ny - 1; j >= 0; --j) {
+        const int i0 = (j + colour) & 1;
+        const int last = i0 + 2 * ((nx - 1 - i0) / 2);
+        for (int i = last, k = i + nx * j; i >= i0; i -= 2, k -= 2)
+          update(k);
+      }
+    }
+  };
+  if (forward) {
+    sweep(0, false);
+    sweep(1, false);
+  } else {
+    sweep(1, true);
+    sweep(0, true);
+  }
 }
 
 // Fine level: pre-smoothing red then black (nu times), post-smoothing black then red in exactly
 // the reverse order (the adjoint sweep), so that the cycle is symmetric.
-void GridMultigrid::apply(const FilmSystem& s, const std::uint8_t* eq, const double* rIn,
-                          double* z) {
-  (void)eq;
+void GridMultigrid::apply(const FilmSystem& s, const double* rIn, double* z) {
   const int n0 = s.n, nx = s.nx, ny = s.ny;
   const size_t levels = levels_.size();
   const double* inv = fineInvDiag_.data();
-  // First red half sweep from z = 0: the neighbours are still 0.
-  for (int j = 0; j < ny; ++j) {
-    double* zr = z + nx * j;
-    const double *br = rIn + nx * j, *ir = inv + nx * j;
-    for (int i = 0; i < nx; ++i)
-      zr[i] = ((i + j) & 1) == 0 ? br[i] * ir[i] : 0.0;
+  // First red half sweep from z = 0: the neighbours are still 0 (unless the periodic seam
+  // couples two red nodes: then the plain sweep, so that the backward sweep stays its adjoint).
+  if (oddSeam_) {
+    std::fill(z, z + n0, 0.0);
+    smoothFineColour(s, z, rIn, 0, false);
+  } else {
+    for (int j = 0; j < ny; ++j) {
+      double* zr = z + nx * j;
+      const double *br = rIn + nx * j, *ir = inv + nx * j;
+      for (int i = 0; i < nx; ++i)
+        zr[i] = ((i + j) & 1) == 0 ? br[i] * ir[i] : 0.0;
+    }
   }
   smoothFineColour(s, z, rIn, 1, false);
   for (int it = 1; it < smoothingSteps; ++it) {
@@ -523,22 +546,32 @@ void GridMultigrid::restrictTo(Level& c, const double* r, int fnx, int fny) cons
   }
 }
 
-// x += mask .* (P c.x).
-void GridMultigrid::prolongFrom(const Level& c, double* x, int fnx, int fny,
-                                const double* mask) const {
+// x += mask .* (P c.x): each coarse row is first interpolated along x (tmp row J), then each
+// fine row blends at most two of those rows.
+void GridMultigrid::prolongFrom(const Level& c, double* x, int fnx, int fny, const double* mask) {
   const double* xc = c.x.data();
   const int *c0 = c.mx.c0.data(), *c1 = c.mx.c1.data();
   const double *u0 = c.mx.w0.data(), *u1 = c.mx.w1.data();
+  double* tmp = rowScratch_.data();
+  for (int J = 0; J < c.ny; ++J) {
+    const double* xr = xc + static_cast<size_t>(c.nx) * J;
+    double* t = tmp + static_cast<size_t>(fnx) * J;
+    for (int i = 0; i < fnx; ++i)
+      t[i] = u0[i] * xr[c0[i]] + u1[i] * xr[c1[i]];
+  }
   for (int j = 0; j < fny; ++j) {
     const size_t sj = static_cast<size_t>(j);
-    const double* row0 = xc + static_cast<size_t>(c.nx) * c.my.c0[sj];
-    const double* row1 = xc + static_cast<size_t>(c.nx) * c.my.c1[sj];
+    const double* t0 = tmp + static_cast<size_t>(fnx) * c.my.c0[sj];
+    const double* t1 = tmp + static_cast<size_t>(fnx) * c.my.c1[sj];
     const double v0 = c.my.w0[sj], v1 = c.my.w1[sj];
     double* xr = x + static_cast<size_t>(fnx) * j;
     const double* mr = mask + static_cast<size_t>(fnx) * j;
-    for (int i = 0; i < fnx; ++i)
-      xr[i] += mr[i] * (v0 * (u0[i] * row0[c0[i]] + u1[i] * row0[c1[i]]) +
-                        v1 * (u0[i] * row1[c0[i]] + u1[i] * row1[c1[i]]));
+    if (v1 == 0.0)
+      for (int i = 0; i < fnx; ++i)
+        xr[i] += mr[i] * (v0 * t0[i]);
+    else
+      for (int i = 0; i < fnx; ++i)
+        xr[i] += mr[i] * (v0 * t0[i] + v1 * t1[i]);
   }
 }
 

@@ -12,18 +12,23 @@
 //    stays periodic and keeps at least 3 nodes), so any nx, ny works;
 //  * bilinear (tensor-product linear) interpolation P; on the finest level the interpolation is
 //    masked, P~ = D_eq P, so a correction never touches a masked node;
-//  * Galerkin coarse operators A_c = P~' A P~ (9-point stencils). Galerkin products cope with the
-//    strongly varying h^3 conductances (about 3e5 across the skirt) and with the masked holes of
-//    the active set; coarse nodes whose whole support is masked get a decoupled row with the
-//    unmasked Galerkin diagonal (so that, used lagged after the mask moved, they act as a
-//    Jacobi step of the right scale);
+//  * Galerkin coarse operators A_c = P~' A P~ (9-point stencils), formed one direction after the
+//    other (P = Px Py). Galerkin products cope with the strongly varying h^3 conductances (about
+//    3e5 across the skirt) and with the masked holes of the active set; coarse nodes whose whole
+//    support is masked get a decoupled row with the unmasked Galerkin diagonal (so that, used
+//    lagged after the mask moved, they act as a Jacobi step of the right scale) and are masked
+//    in the transfers to and from the next level the same way;
 //  * the coarsest level (at most kMaxCoarsest nodes) is solved by a dense Cholesky factor.
-// Smoothing: nu forward lexicographic Gauss-Seidel sweeps before the coarse correction, nu
-// backward sweeps after it. The fine level always uses the current operator and mask (FilmSystem
-// and the row flags given to apply()); the coarse operators are those of the last rebuild(), so
-// they can be reused as the operator drifts. With pre- and post-smoothers adjoint to each other
-// and an exact coarsest solve, one cycle from a zero guess is a symmetric positive definite
-// operator M^-1 for any symmetric positive definite coarse operators (lagged ones included):
+// Smoothing: red-black Gauss-Seidel, nu sweeps red then black before the coarse correction and
+// nu sweeps black then red, in exactly the reverse node order, after it (on the 9-point coarse
+// levels the colours are not decoupled; the sweeps are still Gauss-Seidel sweeps in a fixed
+// order, and the reverse sweep is their adjoint). Red-black ordering has no loop-carried
+// dependency, unlike lexicographic sweeps. The fine level always uses the current operator and
+// mask (FilmSystem and setFineOperator()); the coarse operators are those of the last
+// rebuild(), so they can be reused as the operator drifts. With pre- and post-smoothers
+// adjoint to each other, restriction = transpose of prolongation and an exact coarsest solve,
+// one cycle from a zero guess is a symmetric positive definite operator M^-1 for any
+// symmetric positive definite coarse operators (lagged ones included):
 // M^-1 = S_sym + (I - S'A) P (approximate A_c^-1) P' (I - A S) with the symmetrised smoother
 // S_sym SPD for Gauss-Seidel on an SPD matrix, which is what CG needs.
 //
@@ -39,7 +44,7 @@ namespace pistondyn::lubrication::detail {
 
 class GridMultigrid {
  public:
-  static constexpr int kMaxCoarsest = 100;  // nodes of the coarsest (dense) level, at most
+  static constexpr int kMaxCoarsest = 40;  // nodes of the coarsest (dense) level, at most
 
   // Level shapes and transfer maps for the grid of sys; does nothing when the shape is the same.
   void prepare(const FilmSystem& sys);
@@ -55,7 +60,7 @@ class GridMultigrid {
 
   // z = M^-1 r: one V-cycle from a zero guess with the current fine operator and mask. r must
   // vanish on masked rows; z vanishes there on return. r and z may not alias.
-  void apply(const FilmSystem& sys, const std::uint8_t* eqRow, const double* r, double* z);
+  void apply(const FilmSystem& sys, const double* r, double* z);
 
   bool built() const { return built_; }
   int levelCount() const { return static_cast<int>(levels_.size()); }
@@ -94,13 +99,16 @@ class GridMultigrid {
   };
 
   static void buildMap(int fineCount, bool periodic, bool coarsen, Map1d& m);
-  void galerkinFromFine(const FilmSystem& sys, const std::uint8_t* eqRow);
-  void galerkinFromLevel(int l);
+  static void galerkinStage(const double* in, const double* udIn, const std::uint8_t* active,
+                            int nxIn, int nyIn, bool periodic, const Map1d& m, bool alongX,
+                            double* out, double* udOut);
+  void galerkin(int l, const double* in, const double* udIn, const std::uint8_t* active);
+  void fineAsNinePoint(const FilmSystem& sys);
   void finishLevel(Level& c);
   bool factorCoarsest();
   void residualLevel(Level& L) const;
   void restrictTo(Level& c, const double* r, int fnx, int fny) const;
-  void prolongFrom(const Level& c, double* x, int fnx, int fny, const double* mask) const;
+  void prolongFrom(const Level& c, double* x, int fnx, int fny, const double* mask);
   // One red-black Gauss-Seidel half sweep (colour 0: i + j even) on the fine level.
   void smoothFineColour(const FilmSystem& sys, double* x, const double* b, int colour,
                         bool descending) const;
@@ -112,11 +120,15 @@ class GridMultigrid {
   bool shapePeriodic_ = false;
   bool built_ = false;
   double rebuildCost_ = 5.0;
-  std::vector<double> fineInvDiag_;   // 1 / diagP on equation rows, 0 on masked ones
-  std::vector<double> fineMask_;      // 1 on equation rows, 0 on masked ones
-  bool oddSeam_ = false;              // periodic x with an odd count: red-black colours touch
-  std::vector<double> dense_;         // coarsest Cholesky factor (lower triangle, column-major)
-  std::vector<double> unmaskedDiag_;  // scratch: unmasked Galerkin diagonal of a level
+  std::vector<double> fineInvDiag_;       // 1 / diagP on equation rows, 0 on masked ones
+  std::vector<double> fineMask_;          // 1 on equation rows, 0 on masked ones
+  bool oddSeam_ = false;                  // periodic x with an odd count: red-black colours touch
+  std::vector<double> dense_;             // coarsest Cholesky factor (lower triangle, column-major)
+  std::vector<double> rowScratch_;        // prolongation: coarse rows interpolated along x
+  std::vector<double> unmaskedDiag_;      // scratch: unmasked Galerkin diagonal of a level
+  std::vector<double> levelDiag_;         // scratch: diagonal of the finer level
+  std::vector<double> fine9_, fineDiag_;  // fine operator as 9-point array, its diagonal
+  std::vector<double> stage_, stageDiag_;  // Galerkin product coarsened along x only
 };
 
 }  // namespace pistondyn::lubrication::detail

@@ -182,6 +182,9 @@ void skirtArgs(benchmark::internal::Benchmark* b) {
   for (int scale : {1, 2, 4})
     for (int linsolver : {1, 2})
       b->Args({scale, 0, 1, 0, linsolver});
+  for (int scale : {1, 2})
+    for (int linsolver : {1, 2})
+      b->Args({scale, 0, 2, 0, linsolver});
   // Over-relaxation of the reference solver: the default 1.8 and the best factors found by
   // scanning (BENCHMARKS.md), so that speed-ups are quoted against a well-tuned baseline.
   for (int omega : {170, 184, 190})

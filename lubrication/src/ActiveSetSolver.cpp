@@ -40,6 +40,8 @@ void ActiveSetSolver::prepare(const FilmSystem& sys) {
   sn_.setZero(kGmresRestart);
   y_.setZero(kGmresRestart);
   eqRow_.assign(n, 0);
+  pRow_.assign(n, 0);
+  mgRhs_.setZero(n);
   eqMask_.setZero(n);
   colType_.assign(n, 0);
   factorColType_.assign(n, 0);
@@ -54,14 +56,17 @@ void ActiveSetSolver::fillJacobian(const FilmSystem& s) {
     eqRow_[k] = isEquationRow(s, k) ? 1 : 0;
     eqMask_[k] = eqRow_[k] ? 1.0 : 0.0;
     colType_[k] = !eqRow_[k] ? 0 : (s.status[k] == kFull ? 1 : 2);
+    pRow_[k] = colType_[k] == 1 ? 1 : 0;
   }
   factorExact_ = false;
   jacobianCurrent_ = true;
   valuesCurrent_ = false;
   // The multigrid preconditioner works on the stencil of FilmSystem directly.
+  // The multigrid preconditioner works on the stencil of FilmSystem directly; the unsymmetric
+  // product (mass-conserving model) needs the sparse values.
   if (useMg_)
-    mg_.setFineOperator(s, eqRow_.data());
-  else
+    mg_.setFineOperator(s, pRow_.data());
+  if (!useMg_ || s.jfo)
     fillValues(s);
 }
 
@@ -224,8 +229,41 @@ void ActiveSetSolver::applyPreconditioner(const FilmSystem& s, double* v) {
 }
 
 void ActiveSetSolver::precondition(const FilmSystem& s, const double* r, double* z) {
-  if (useMg_) {
+  if (useMg_ && !s.jfo) {
     mg_.apply(s, r, z);
+    return;
+  }
+  if (useMg_) {
+    // Mass-conserving Jacobian [A B; C D] (rows and columns: pressures of the full nodes, fill
+    // fractions of the cavitated ones). Block lower-triangular preconditioner: z_p = MG(r_p)
+    // for the Poiseuille block A, then z_theta = D^-1 (r_theta - C z_p) by one sweep along the
+    // sliding direction (D, the upwind Couette transport of the fill fraction, is triangular in
+    // that order). The coupling B (fill fraction carried into full nodes, only at reformation
+    // fronts) is left to GMRES.
+    for (int k = 0; k < s.n; ++k)
+      mgRhs_[k] = colType_[k] == 1 ? r[k] : 0.0;
+    mg_.apply(s, mgRhs_.data(), z);
+    for (const int k : s.order) {
+      if (colType_[k] != 2)
+        continue;
+      double t = r[k];
+      const int e = s.nbE[k], w = s.nbW[k], no = s.nbN[k], so = s.nbS[k];
+      if (colType_[e] == 1)
+        t += s.tE[k] * z[e];
+      if (colType_[w] == 1)
+        t += s.tW[k] * z[w];
+      if (colType_[no] == 1)
+        t += s.tN[k] * z[no];
+      if (colType_[so] == 1)
+        t += s.tS[k] * z[so];
+      const int ix = s.inIx[k], iy = s.inIy[k];
+      if (ix != k && colType_[ix] == 2)
+        t += s.inCx[k] * z[ix];
+      if (iy != k && colType_[iy] == 2)
+        t += s.inCy[k] * z[iy];
+      const double a = s.aOut[k] + s.squeeze[k] + s.capacity[k];
+      z[k] = a > 0.0 ? t / a : 0.0;
+    }
     return;
   }
   std::copy(r, r + s.n, z);
@@ -233,7 +271,7 @@ void ActiveSetSolver::precondition(const FilmSystem& s, const double* r, double*
 }
 
 bool ActiveSetSolver::rebuildMultigrid(const FilmSystem& s) {
-  mgBuilt_ = mg_.rebuild(s, eqRow_.data());
+  mgBuilt_ = mg_.rebuild(s, pRow_.data());
   ++multigridBuilds_;
   // Cost bookkeeping as for a factorisation, except that no direct solve follows.
   costSinceFactor_ = mg_.rebuildCostInIterations();
@@ -249,7 +287,10 @@ bool ActiveSetSolver::linearSolveMultigrid(const FilmSystem& s, double* b, doubl
                                            double looseTarget) {
   Eigen::Map<Eigen::VectorXd> bv(b, s.n);
   if (factorExact_) {  // a fallback factorisation of this very Jacobian exists
-    chol_.solve(b, b, 1);
+    if (!s.jfo)
+      chol_.solve(b, b, 1);
+    else
+      klu_.solve(b, 1);
     return true;
   }
   bool fresh = false;
@@ -260,7 +301,15 @@ bool ActiveSetSolver::linearSolveMultigrid(const FilmSystem& s, double* b, doubl
   rhs_ = bv;
   for (int attempt = 0; attempt < 2 && mgBuilt_; ++attempt) {
     const int before = krylovIterations_;
-    if (pcg(s, b, target, looseTarget, kMaxKrylovIterations)) {
+    bool ok;
+    if (s.jfo) {
+      // As on the factorised path: solve to the loose target, the active-set loop decides.
+      ok = gmres(s, b, looseTarget, kMaxKrylovIterations);
+      stoppedLoose_ = ok && looseTarget > target;
+    } else {
+      ok = pcg(s, b, target, looseTarget, kMaxKrylovIterations);
+    }
+    if (ok) {
       const int k = krylovIterations_ - before;
       if (k > 0) {
         costSinceFactor_ += k;
@@ -278,16 +327,30 @@ bool ActiveSetSolver::linearSolveMultigrid(const FilmSystem& s, double* b, doubl
   }
   if (!valuesCurrent_)
     fillValues(s);
-  if (!cholAnalysed_) {
-    chol_.analyze(pat_);
-    cholAnalysed_ = true;
+  bool ok;
+  if (!s.jfo) {
+    if (!cholAnalysed_) {
+      chol_.analyze(pat_);
+      cholAnalysed_ = true;
+    }
+    ok = chol_.factorize(pat_);
+    cholFactored_ = ok;
+  } else {
+    if (!kluAnalysed_) {
+      klu_.analyze(pat_);
+      kluAnalysed_ = true;
+    }
+    ok = klu_.factorize(pat_, true);
+    kluFactored_ = ok;
   }
-  const bool ok = chol_.factorize(pat_);
-  cholFactored_ = ok;
   ++factorisations_;
   factorExact_ = ok;
-  if (ok)
-    chol_.solve(b, b, 1);
+  if (ok) {
+    if (!s.jfo)
+      chol_.solve(b, b, 1);
+    else
+      klu_.solve(b, 1);
+  }
   return ok;
 }
 
@@ -375,8 +438,7 @@ bool ActiveSetSolver::gmres(const FilmSystem& s, double* b, double target, int m
     g_[0] = beta;
     int j = 0;
     while (j < m) {
-      z_ = V_.col(j);
-      applyPreconditioner(s, z_.data());
+      precondition(s, V_.col(j).data(), z_.data());
       multiply(s, z_.data(), q_.data());
       for (int i = 0; i <= j; ++i) {  // modified Gram-Schmidt
         H_(i, j) = q_.dot(V_.col(i));
@@ -409,8 +471,8 @@ bool ActiveSetSolver::gmres(const FilmSystem& s, double* b, double target, int m
         t -= H_(i, l) * y_[l];
       y_[i] = t / H_(i, i);
     }
-    z_.noalias() = V_.leftCols(j) * y_.head(j);
-    applyPreconditioner(s, z_.data());
+    q_.noalias() = V_.leftCols(j) * y_.head(j);
+    precondition(s, q_.data(), z_.data());
     x_ += z_;
     multiply(s, x_.data(), q_.data());
     r_ = bv - q_;
@@ -484,14 +546,13 @@ bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target,
 
 IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& opt) {
   prepare(s);
-  const bool mg =
-      !s.jfo && (opt.linearSolver == FastLinearSolver::Multigrid ||
-                 (opt.linearSolver == FastLinearSolver::Automatic && s.n >= kMultigridMinNodes));
+  const bool mg = opt.linearSolver == FastLinearSolver::Multigrid ||
+                  (opt.linearSolver == FastLinearSolver::Automatic && s.n >= kMultigridMinNodes);
   if (mg != useMg_) {
     // The lagged preconditioner of the other path is stale: start afresh.
     useMg_ = mg;
     mgBuilt_ = false;
-    cholFactored_ = false;
+    cholFactored_ = kluFactored_ = false;
     refactorNext_ = false;
   }
   jacobianCurrent_ = false;

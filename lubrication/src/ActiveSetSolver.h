@@ -22,6 +22,17 @@
 // preconditioner's quality decays steadily.
 // Consecutive calls of an engine simulation differ little, so most calls cost a handful of
 // back-substitutions instead of a factorisation.
+//
+// Multigrid (FastLinearSolver::Multigrid, or Automatic on grids of kMultigridMinNodes nodes and
+// more): one V-cycle of GridMultigrid on the Poiseuille block of the full nodes replaces the
+// factorisation. Symmetric case: it is the PCG preconditioner. Mass-conserving case: GMRES with
+// the block lower-triangular preconditioner [MG 0; C D] (D, the upwind fill-fraction transport
+// of the cavitated nodes, inverted by one sweep along the sliding direction). The finest level
+// always uses the current Jacobian and active set; the Galerkin coarse levels are lagged and
+// refreshed by the same cost balance (their build cost in Krylov iterations from operation
+// counts; the first solve after a rebuild is iterative too). Should the Krylov solve fail even
+// with a fresh hierarchy, the current Jacobian is factorised (CHOLMOD / KLU) and solved
+// directly.
 
 #include <Eigen/Core>
 
@@ -105,7 +116,9 @@ class ActiveSetSolver {
   Eigen::VectorXd g_, cs_, sn_, y_;
   Eigen::VectorXd changedRhs_;
   std::vector<std::uint8_t> eqRow_;
-  Eigen::VectorXd eqMask_;                             // 1.0 on equation rows, 0.0 elsewhere
+  Eigen::VectorXd eqMask_;          // 1.0 on equation rows, 0.0 elsewhere
+  std::vector<std::uint8_t> pRow_;  // pressure unknowns (full nodes): the multigrid's rows
+  Eigen::VectorXd mgRhs_;           // mass-conserving model: pressure block of a right-hand side
   std::vector<std::uint8_t> colType_, factorColType_;  // 0 identity, 1 pressure, 2 fill
 };
 

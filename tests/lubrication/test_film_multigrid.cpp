@@ -1,7 +1,8 @@
 // The multigrid-preconditioned fast solver (FastLinearSolver::Multigrid): the same answers as the
-// reference Gauss-Seidel and the sparse-direct path, a symmetric positive definite
-// preconditioner (what CG relies on), iteration counts that do not grow with the grid, and
-// independent solver objects on several threads.
+// reference Gauss-Seidel and the sparse-direct path (Reynolds, full Sommerfeld and
+// mass-conserving models), a symmetric positive definite preconditioner (what CG relies on),
+// iteration counts that do not grow with the grid, and independent solver objects on several
+// threads.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -27,6 +28,7 @@ FilmSolverOptions multigridOptions(double tolerance) {
 // pressure on these grids). The multigrid path must do the work itself: no factorisation (its
 // fallback) and no Gauss-Seidel fallback.
 void compareWithMultigrid(const FilmGrid& g, const FilmProblem& pr, const std::string& name) {
+  // The reference at 1e-11 as in test_film_solver_agreement.cpp.
   FilmSolver reference(test::tightOptions(FilmSolverType::ReferenceGaussSeidel, 1e-11));
   FilmSolverOptions directOptions = test::tightOptions(FilmSolverType::FastActiveSet, 1e-11);
   directOptions.linearSolver = FastLinearSolver::SparseDirect;
@@ -50,6 +52,19 @@ void compareWithMultigrid(const FilmGrid& g, const FilmProblem& pr, const std::s
   EXPECT_LT(vsReference, 1e-6) << name;
   EXPECT_LT(vsDirect, 1e-6) << name;
   EXPECT_EQ(a.cavitatedNodes, c.cavitatedNodes) << name;
+  if (pr.cavitation == CavitationModel::MassConserving) {
+    const double fill = (a.fillFraction() - c.fillFraction()).abs().maxCoeff();
+    test::reportFigure("multigrid." + name + ".fillVsReference", fill);
+    EXPECT_LT(fill, 1e-6) << name;
+    // Oil balance of the multigrid answer (the diagnostics are checked against an independent
+    // balance in test_film_mass_conserving.cpp): 1e-8 of the inflow, the acceptance.
+    const double defect = (c.boundaryInflow_m3ps - c.boundaryOutflow_m3ps - c.storageRate_m3ps) /
+                          c.boundaryInflow_m3ps;
+    test::reportFigure("multigrid." + name + ".balanceDefect", defect);
+    EXPECT_LT(std::abs(defect), 1e-8) << name;
+    EXPECT_GE(c.fillFraction().minCoeff(), 0.0) << name;
+    EXPECT_LE(c.fillFraction().maxCoeff(), 1.0) << name;
+  }
 }
 
 // Infinitely wide slider: a periodic strip 3 nodes wide (x is never coarsened, y is).
@@ -118,6 +133,38 @@ TEST(FilmMultigrid, AgreesOnRoughSkirtPatchWithDerivatives) {
     EXPECT_LT(diff, 1e-6);
     EXPECT_NEAR(c.dLoad_dVelocity[m], b.dLoad_dVelocity[m], 1e-6 * std::abs(b.dLoad_dVelocity[m]));
   }
+}
+
+// Mass-conserving model (GMRES with the block-triangular multigrid preconditioner): the steady
+// grooved journal with rupture and reformation of test_film_solver_agreement.cpp (x open from
+// groove to groove), and a transient rough skirt patch with a partly filled history.
+TEST(FilmMultigrid, AgreesOnMassConservingModel) {
+  const test::JournalBearing jb;
+  const double L = 2.0 * jb.radius_m;
+  const int nx = 73;
+  Eigen::VectorXd x(nx);
+  for (int i = 0; i < nx; ++i)
+    x[i] = 2.0 * test::kPi * jb.radius_m * i / (nx - 1);
+  const FilmGrid g = FilmGrid::fromCoordinates(x, FilmGrid::clusteredCoordinates(25, 0.0, L, 0.0));
+  FilmProblem pr = jb.problem(g, CavitationModel::MassConserving);
+  for (int j = 0; j < g.ny(); ++j)
+    for (int i = 0; i < nx; ++i)
+      pr.gap_m[g.nodeIndex(i, j)] =
+          jb.clearance_m * (1.0 + jb.eccentricity * std::cos(x[i] / jb.radius_m - 0.5 * test::kPi));
+  pr.boundary.xMin.pressure_Pa = pr.boundary.xMax.pressure_Pa = 1e5;
+  compareWithMultigrid(g, pr, "groovedJournal.jfo");
+
+  const test::SkirtPatch sp;
+  const test::GaussianRoughFactors rough(0.8e-6);
+  const FilmGrid gs = sp.grid(64, 48);
+  FilmProblem ps = sp.problem(gs, CavitationModel::MassConserving);
+  ps.flowFactors = &rough;
+  ps.timeStep_s = 1e-4;
+  ps.previousFillFraction.setOnes(gs.nodeCount());
+  for (int j = 0; j < gs.ny() / 2; ++j)
+    for (int i = 0; i < gs.nx(); ++i)
+      ps.previousFillFraction[gs.nodeIndex(i, j)] = 0.5;
+  compareWithMultigrid(gs, ps, "skirt64x48.jfo");
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -118,18 +118,24 @@ struct FilmProblem {
   double referencePressure_Pa = 0.0;  // subtracted from p in load and moments, [Pa]
 };
 
-// Linear solver inside the fast solver for the symmetric systems of the Reynolds and
-// full-Sommerfeld models (the mass-conserving model always uses KLU + GMRES). Both are
-// preconditioners of the same PCG iteration, run to the same tolerance; they differ in cost.
+// Preconditioner of the fast solver's Krylov iterations. Both run to the same tolerance; they
+// differ in cost only.
 enum class FastLinearSolver {
   // Multigrid from kMultigridMinNodes grid nodes up, SparseDirect below (BENCHMARKS.md: the
-  // lagged factor is the cheaper one on small grids, multigrid grows linearly with the grid).
+  // lagged factorisation is the cheaper one on small grids, multigrid grows linearly with the
+  // grid).
   Automatic,
-  SparseDirect,  // lagged CHOLMOD LDL' factorisation (AMD ordering), drift-rescaled
-  Multigrid,     // geometric multigrid V-cycle with Galerkin coarse levels on the grid
+  // Lagged sparse factorisation: CHOLMOD LDL' (AMD ordering, drift-rescaled) for PCG on the
+  // symmetric Reynolds / full-Sommerfeld systems, KLU for GMRES on the mass-conserving ones.
+  SparseDirect,
+  // Geometric multigrid V-cycle on the grid (Galerkin coarse levels, red-black Gauss-Seidel,
+  // cavitated nodes masked): the PCG preconditioner of the symmetric systems; for the
+  // mass-conserving ones the pressure block of a block-triangular GMRES preconditioner whose
+  // fill-fraction block is one upwind sweep.
+  Multigrid,
 };
 // Grid size from which FastLinearSolver::Automatic picks multigrid: on the skirt benchmark the two
-// cost the same at 48 x 36 nodes (1728); the factorisation wins below, multigrid above.
+// cost about the same at 48 x 36 nodes (1728); the factorisation wins below, multigrid above.
 constexpr int kMultigridMinNodes = 2000;
 
 // Warm start that the caller keeps between steps (e.g. in the Simbody State cache). Small,
@@ -150,8 +156,7 @@ struct FilmSolverOptions {
   double overRelaxation = 1.8;
   double fillRelaxation = 1.0;      // relaxation of the fill-fraction update (JFO GS), (0, 1]
   int maxActiveSetIterations = 40;  // active-set (Newton) steps of the fast solver, default 40
-  // Linear solver of the fast solver for the Reynolds / full-Sommerfeld systems, default
-  // Automatic (see FastLinearSolver).
+  // Preconditioner of the fast solver's linear solves, default Automatic (see FastLinearSolver).
   FastLinearSolver linearSolver = FastLinearSolver::Automatic;
   // When the active-set iteration does not settle within maxActiveSetIterations, continue from
   // its iterate with the reference Gauss-Seidel (reported in FilmResult::usedFallback).

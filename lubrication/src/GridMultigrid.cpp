@@ -5,8 +5,6 @@
 
 namespace pistondyn::lubrication::detail {
 
-namespace {}  // namespace
-
 void GridMultigrid::buildMap(int fineCount, bool periodic, bool coarsen, Map1d& m) {
   m.fineCount = fineCount;
   m.periodic = periodic;
@@ -136,12 +134,13 @@ void GridMultigrid::prepare(const FilmSystem& sys) {
     rows = std::max(rows, static_cast<size_t>(levels_[l].ny) * levels_[l - 1].nx);
   rowScratch_.assign(rows, 0.0);
 
-  // Operation counts (multiply-adds and the index work around them, in units of one stencil
-  // coefficient touched): a cycle smooths 2 nu times and forms one residual per level, plus the
-  // transfers; a PCG iteration adds a 5-point product and ~6 vector passes; a rebuild forms 16
-  // products per stencil coefficient of the finer level (2 x 2 parents on either side) plus the
-  // dense factorisation. The factor 1.5 on the rebuild is the measured ratio of cost per
-  // operation (scatter into 9 slots with index arithmetic vs streaming sweeps).
+  // Cost of a rebuild in PCG iterations, from operation counts (stencil coefficients touched): a
+  // cycle smooths 2 nu times and forms one residual per level, plus the transfers; a PCG
+  // iteration adds a 5-point product and ~6 vector passes; a rebuild forms ~16 products per
+  // stencil coefficient of the finer level (two 1-D stages, up to 2 x 2 parents) plus the dense
+  // factorisation. The factor 2.1 is the measured cost per operation of the rebuild relative to
+  // the streaming sweeps (index arithmetic and branches): with it the estimate matches the
+  // measured ratio (rebuild ~7 cycles at 64 x 48 and 128 x 96, BENCHMARKS.md).
   double cycle = 0.0, rebuild = 0.0;
   for (size_t l = 0; l < levels_.size(); ++l) {
     const double n = levels_[l].n, stencil = l == 0 ? 5.0 : 9.0;

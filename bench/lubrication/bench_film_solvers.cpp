@@ -2,7 +2,9 @@
 // stroke, average Reynolds with rough flow factors, each step warm-started from the last.
 // Time per solve of the reference Gauss-Seidel and of the fast active-set solver at the same
 // residual tolerance (FilmSolverOptions::tolerance), Reynolds cavitation and mass-conserving
-// (JFO) cavitation, at 64 x 48 nodes and at 4x the node count (128 x 96).
+// (JFO) cavitation, at 64 x 48 nodes and at 4x the node count (128 x 96); the fast solver with
+// each of its preconditioners (sparse direct, multigrid) and, for Reynolds, also at 16x the node
+// count (256 x 192) to show the trend.
 //
 // Scenario (numbers of the thesis' engine and parameter study, thesis-summary.txt): bore
 // 65.1 mm, stroke 47.7 mm, rod 80 mm (assumed), 2000 rpm, radial clearance 53 um; thrust-side
@@ -10,10 +12,9 @@
 // its widest point at 55 % of the length, ovality 60 um sin^2; prescribed secondary motion
 // (lateral displacement and tilt) that drives the skirt from the anti-thrust side onto the
 // thrust side after firing TDC; oil 8 mPa s; Patir & Cheng flow factors, composite roughness
-// 0.8 um. The 100 steps cover
-// 360 .. 409.5 deg crank angle in 0.5 deg steps (41.7 us): the force element of a Simbody run
-// calls the film thousands of times per cycle. Before timing, the step preceding the window is
-// solved (untimed) so that the first timed step is warm like every other.
+// 0.8 um. The 100 steps cover 360 .. 409.5 deg crank angle in 0.5 deg steps (41.7 us): the force
+// element of a Simbody run calls the film thousands of times per cycle. Before timing, the step
+// preceding the window is solved (untimed) so that the first timed step is warm like every other.
 //
 // Swap in another flow-factor model by changing `makeFlowFactors()`; nothing else depends on it.
 #include <benchmark/benchmark.h>

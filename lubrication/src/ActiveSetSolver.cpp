@@ -61,7 +61,6 @@ void ActiveSetSolver::fillJacobian(const FilmSystem& s) {
   factorExact_ = false;
   jacobianCurrent_ = true;
   valuesCurrent_ = false;
-  // The multigrid preconditioner works on the stencil of FilmSystem directly.
   // The multigrid preconditioner works on the stencil of FilmSystem directly; the unsymmetric
   // product (mass-conserving model) needs the sparse values.
   if (useMg_)
@@ -279,10 +278,10 @@ bool ActiveSetSolver::rebuildMultigrid(const FilmSystem& s) {
   return mgBuilt_;
 }
 
-// Multigrid-preconditioned CG. The hierarchy's coarse levels are lagged like the factorisation
-// of the sparse-direct path (refreshed by the same cost balance); its finest level always uses
-// the current matrix. Should PCG fail even with a fresh hierarchy, the current Jacobian is
-// factorised (CHOLMOD) and solved directly.
+// Multigrid-preconditioned CG (GMRES for the mass-conserving model). The hierarchy's coarse
+// levels are lagged like the factorisation of the sparse-direct path (refreshed by the same cost
+// balance); its finest level always uses the current matrix. Should the Krylov solve fail even
+// with a fresh hierarchy, the current Jacobian is factorised (CHOLMOD / KLU) and solved directly.
 bool ActiveSetSolver::linearSolveMultigrid(const FilmSystem& s, double* b, double target,
                                            double looseTarget) {
   Eigen::Map<Eigen::VectorXd> bv(b, s.n);

@@ -25,6 +25,7 @@ void ActiveSetSolver::prepare(const FilmSystem& sys) {
   pat_.build(sys);
   mg_.prepare(sys);
   mgBuilt_ = false;
+  mgGaveUp_ = false;
   shapeN_ = sys.n;
   shapeNx_ = sys.nx;
   shapePeriodic_ = sys.periodicX;
@@ -324,6 +325,9 @@ bool ActiveSetSolver::linearSolveMultigrid(const FilmSystem& s, double* b, doubl
       break;
     fresh = rebuildMultigrid(s);
   }
+  // Multigrid does not suit this operator (e.g. opposite anisotropies in one grid): Automatic
+  // uses the factorisation from the next call on, for this grid shape.
+  mgGaveUp_ = true;
   if (!valuesCurrent_)
     fillValues(s);
   bool ok;
@@ -545,8 +549,9 @@ bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target,
 
 IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& opt) {
   prepare(s);
-  const bool mg = opt.linearSolver == FastLinearSolver::Multigrid ||
-                  (opt.linearSolver == FastLinearSolver::Automatic && s.n >= kMultigridMinNodes);
+  const bool mg =
+      opt.linearSolver == FastLinearSolver::Multigrid ||
+      (opt.linearSolver == FastLinearSolver::Automatic && s.n >= kMultigridMinNodes && !mgGaveUp_);
   if (mg != useMg_) {
     // The lagged preconditioner of the other path is stale: start afresh.
     useMg_ = mg;

@@ -32,7 +32,7 @@
 // refreshed by the same cost balance (their build cost in Krylov iterations from operation
 // counts; the first solve after a rebuild is iterative too). Should the Krylov solve fail even
 // with a fresh hierarchy, the current Jacobian is factorised (CHOLMOD / KLU) and solved
-// directly.
+// directly; Automatic then keeps to the factorisation for this grid shape.
 
 #include <Eigen/Core>
 
@@ -88,6 +88,7 @@ class ActiveSetSolver {
   GridMultigrid mg_;
   bool useMg_ = false;
   bool mgBuilt_ = false;
+  bool mgGaveUp_ = false;       // multigrid failed once at this grid shape: Automatic factorises
   bool valuesCurrent_ = false;  // pat_.values hold the current Jacobian (multigrid mode)
   int multigridBuilds_ = 0;
   CholmodLdl chol_;

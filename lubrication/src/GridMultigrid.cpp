@@ -57,9 +57,66 @@ void GridMultigrid::buildMap(int fineCount, bool periodic, bool coarsen, Map1d& 
       m.g[t][static_cast<size_t>(c)] = m.g[0][static_cast<size_t>(c)];
 }
 
+// Mean east-west over mean north-south transmissibility of the fine operator: > 1 where the
+// nodes are coupled more strongly along x (cells long in y, or a larger pressure flow factor
+// along x), < 1 the other way round.
+double GridMultigrid::couplingRatio(const FilmSystem& s) {
+  double sx = 0.0, sy = 0.0;
+  int nxCount = 0, nyCount = 0;
+  for (int k = 0; k < s.n; ++k) {
+    if (s.nbE[k] != k) {
+      sx += s.tE[k];
+      ++nxCount;
+    }
+    if (s.nbN[k] != k) {
+      sy += s.tN[k];
+      ++nyCount;
+    }
+  }
+  if (!(sx > 0.0 && sy > 0.0) || nxCount == 0 || nyCount == 0)
+    return 1.0;
+  return (sx / nxCount) / (sy / nyCount);
+}
+
+// Directions each level coarsens (bit 0: x, bit 1: y; 0 ends the list). Full coarsening while
+// the couplings are comparable; where one direction is coupled more than kSemiCoarsening times
+// more strongly, only that one is coarsened (point smoothing leaves the error smooth along the
+// strong direction only). A Galerkin coarsening by two along x halves the x couplings and doubles
+// the y couplings (ratio / 4), along y the other way round.
+void GridMultigrid::coarseningPattern(const FilmSystem& sys, Pattern& pattern) {
+  pattern.fill(0);
+  double ratio = couplingRatio(sys);
+  int nx = sys.nx, ny = sys.ny;
+  const bool periodic = sys.periodicX;
+  for (size_t l = 0; l + 1 < pattern.size() && nx * ny > kMaxCoarsest; ++l) {
+    // An open direction coarsens while it has more than 3 nodes, a periodic one while the coarse
+    // circle keeps at least 3 (so that east and west neighbours stay distinct).
+    bool cx = periodic ? nx >= 5 : nx > 3;
+    bool cy = ny > 3;
+    if (cx && cy) {
+      if (ratio > kSemiCoarsening)
+        cy = false;
+      else if (ratio < 1.0 / kSemiCoarsening)
+        cx = false;
+    }
+    if (!cx && !cy)
+      break;
+    pattern[l] = static_cast<std::uint8_t>((cx ? 1 : 0) | (cy ? 2 : 0));
+    if (cx) {
+      nx = (nx + 1) / 2 + (!periodic && nx % 2 == 0 ? 1 : 0);
+      ratio *= 0.25;
+    }
+    if (cy) {
+      ny = (ny + 1) / 2 + (ny % 2 == 0 ? 1 : 0);
+      ratio *= 4.0;
+    }
+  }
+}
+
 void GridMultigrid::prepare(const FilmSystem& sys) {
   if (sys.n == shapeN_ && sys.nx == shapeNx_ && sys.periodicX == shapePeriodic_)
     return;
+  coarseningPattern(sys, pattern_);
   shapeN_ = sys.n;
   shapeNx_ = sys.nx;
   shapePeriodic_ = sys.periodicX;
@@ -75,14 +132,9 @@ void GridMultigrid::prepare(const FilmSystem& sys) {
   fineMask_.assign(static_cast<size_t>(fine.n), 0.0);
   oddSeam_ = fine.periodic && fine.nx % 2 == 1;
   levels_.push_back(std::move(fine));
-  while (levels_.back().n > kMaxCoarsest) {
+  for (size_t l = 0; l < pattern_.size() && pattern_[l] != 0; ++l) {
     const Level& f = levels_.back();
-    // An open direction coarsens while it has more than 3 nodes, a periodic one while the coarse
-    // circle keeps at least 3 (so that east and west neighbours stay distinct).
-    const bool cx = f.periodic ? f.nx >= 5 : f.nx > 3;
-    const bool cy = f.ny > 3;
-    if (!cx && !cy)
-      break;
+    const bool cx = (pattern_[l] & 1) != 0, cy = (pattern_[l] & 2) != 0;
     Level c;
     buildMap(f.nx, f.periodic, cx, c.mx);
     buildMap(f.ny, false, cy, c.my);
@@ -296,13 +348,20 @@ bool GridMultigrid::factorCoarsest() {
         dense_[static_cast<size_t>(L.nb[9 * static_cast<size_t>(k) + q]) * N +
                static_cast<size_t>(k)] += v;  // column-major (symmetric anyway)
     }
-  // In-place Cholesky, lower triangle (column j below the diagonal holds L(:, j)).
+  // In-place Cholesky, lower triangle (column j below the diagonal holds L(:, j)). The masked
+  // Galerkin product can be singular (two coarse nodes whose supports meet the unmasked nodes in
+  // one shared fine node have proportional columns): a pivot that vanishes against its diagonal
+  // is replaced by the diagonal, i.e. L L' = A + E with E diagonal and >= 0, which keeps the
+  // coarsest solve, and so the cycle, symmetric positive definite.
   for (size_t j = 0; j < N; ++j) {
-    double d = dense_[j * N + j];
+    const double ajj = dense_[j * N + j];
+    double d = ajj;
     for (size_t k = 0; k < j; ++k)
       d -= dense_[k * N + j] * dense_[k * N + j];
-    if (!(d > 0.0) || !std::isfinite(d))
+    if (!std::isfinite(d) || !(ajj > 0.0))
       return false;
+    if (!(d > 1e-10 * ajj))
+      d = ajj;
     d = std::sqrt(d);
     dense_[j * N + j] = d;
     for (size_t i = j + 1; i < N; ++i) {

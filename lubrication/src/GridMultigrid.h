@@ -9,7 +9,10 @@
 // levels:
 //  * coarsening by two in each grid direction that is long enough (coarse nodes = the even fine
 //    indices, plus the last node of an open direction with an even count; a periodic direction
-//    stays periodic and keeps at least 3 nodes), so any nx, ny works;
+//    stays periodic and keeps at least 3 nodes), so any nx, ny works; where the nodes are
+//    coupled much more strongly along one direction (long thin cells), only that direction is
+//    coarsened until the couplings are comparable (semi-coarsening: point smoothing leaves the
+//    error smooth along the strong direction only);
 //  * bilinear (tensor-product linear) interpolation P; on the finest level the interpolation is
 //    masked, P~ = D_eq P, so a correction never touches a masked node;
 //  * Galerkin coarse operators A_c = P~' A P~ (9-point stencils), formed one direction after the
@@ -35,6 +38,7 @@
 // Storage is allocated when the grid's shape changes only; rebuild() and apply() allocate
 // nothing. No global state.
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -45,8 +49,13 @@ namespace pistondyn::lubrication::detail {
 class GridMultigrid {
  public:
   static constexpr int kMaxCoarsest = 40;  // nodes of the coarsest (dense) level, at most
+  // Coupling anisotropy beyond which only the strongly coupled direction is coarsened.
+  static constexpr double kSemiCoarsening = 2.0;
 
   // Level shapes and transfer maps for the grid of sys; does nothing when the shape is the same.
+  // The coarsening directions follow the coupling anisotropy of sys's operator at the first call
+  // for a shape (grid spacing and flow-factor anisotropy), and are kept while the shape is (so
+  // that later calls allocate nothing).
   void prepare(const FilmSystem& sys);
 
   // Galerkin coarse operators and coarsest factor from the current fine operator, with the
@@ -98,6 +107,9 @@ class GridMultigrid {
     std::vector<double> x, b, r;       // iterate, right-hand side, residual
   };
 
+  using Pattern = std::array<std::uint8_t, 64>;
+  static double couplingRatio(const FilmSystem& sys);
+  static void coarseningPattern(const FilmSystem& sys, Pattern& pattern);
   static void buildMap(int fineCount, bool periodic, bool coarsen, Map1d& m);
   static void galerkinStage(const double* in, const double* udIn, const std::uint8_t* active,
                             int nxIn, int nyIn, bool periodic, const Map1d& m, bool alongX,
@@ -119,6 +131,7 @@ class GridMultigrid {
   int shapeN_ = -1, shapeNx_ = -1;
   bool shapePeriodic_ = false;
   bool built_ = false;
+  Pattern pattern_{};
   double rebuildCost_ = 5.0;
   std::vector<double> fineInvDiag_;       // 1 / diagP on equation rows, 0 on masked ones
   std::vector<double> fineMask_;          // 1 on equation rows, 0 on masked ones

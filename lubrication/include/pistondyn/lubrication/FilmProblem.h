@@ -123,7 +123,8 @@ struct FilmProblem {
 enum class FastLinearSolver {
   // Multigrid from kMultigridMinNodes grid nodes up, SparseDirect below (BENCHMARKS.md: the
   // lagged factorisation is the cheaper one on small grids, multigrid grows linearly with the
-  // grid).
+  // grid). Should a multigrid solve ever fail (it then factorises that matrix), the solver object
+  // keeps to SparseDirect for the grid shape.
   Automatic,
   // Lagged sparse factorisation: CHOLMOD LDL' (AMD ordering, drift-rescaled) for PCG on the
   // symmetric Reynolds / full-Sommerfeld systems, KLU for GMRES on the mass-conserving ones.

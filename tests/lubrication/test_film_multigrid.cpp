@@ -277,8 +277,9 @@ TEST(FilmMultigrid, PreconditionerIsSymmetricPositiveDefinite) {
     detail::GridMultigrid mg;
     mg.prepare(s);
     ASSERT_GE(mg.levelCount(), 3) << names[c];
-    if (c == 2)  // strongly coupled along x: the first coarsening halves x only (64 -> 33)
+    if (c == 2) {  // strongly coupled along x: the first coarsening halves x only (64 -> 33)
       EXPECT_EQ(mg.levelNodes(1), 33 * 40);
+    }
     // Fresh hierarchy, 30 % of the nodes masked at random (scattered holes make the masked
     // Galerkin products rank deficient).
     const std::vector<std::uint8_t> eq = randomMask(s, 0.3, 7);

@@ -2,20 +2,21 @@
 // stroke, average Reynolds with rough flow factors, each step warm-started from the last.
 // Time per solve of the reference Gauss-Seidel and of the fast active-set solver at the same
 // residual tolerance (FilmSolverOptions::tolerance), Reynolds cavitation and mass-conserving
-// (JFO) cavitation, at 64 x 48 nodes and at 4x the node count (128 x 96).
+// (JFO) cavitation, at 64 x 48 nodes and at 4x the node count (128 x 96); the fast solver with
+// each of its preconditioners (sparse direct, multigrid) and, for Reynolds, also at 16x the node
+// count (256 x 192) to show the trend.
 //
 // Scenario (numbers of the thesis' engine and parameter study, thesis-summary.txt): bore
 // 65.1 mm, stroke 47.7 mm, rod 80 mm (assumed), 2000 rpm, radial clearance 53 um; thrust-side
 // skirt arc +-40 deg, skirt length 25 mm, barrel profile 20 um (top) / 35 um (bottom) around
 // its widest point at 55 % of the length, ovality 60 um sin^2; prescribed secondary motion
 // (lateral displacement and tilt) that drives the skirt from the anti-thrust side onto the
-// thrust side after firing TDC; oil 8 mPa s; composite roughness 0.8 um. The 100 steps cover
-// 360 .. 409.5 deg crank angle in 0.5 deg steps (41.7 us): the force element of a Simbody run
-// calls the film thousands of times per cycle. Before timing, the step preceding the window is
-// solved (untimed) so that the first timed step is warm like every other.
+// thrust side after firing TDC; oil 8 mPa s; Patir & Cheng flow factors, composite roughness
+// 0.8 um. The 100 steps cover 360 .. 409.5 deg crank angle in 0.5 deg steps (41.7 us): the force
+// element of a Simbody run calls the film thousands of times per cycle. Before timing, the step
+// preceding the window is solved (untimed) so that the first timed step is warm like every other.
 //
-// Swap in another flow-factor model (e.g. the project's Patir & Cheng set) by changing
-// `makeFlowFactors()`; nothing else depends on it.
+// Swap in another flow-factor model by changing `makeFlowFactors()`; nothing else depends on it.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include "pistondyn/lubrication/FilmSolver.h"
+#include "pistondyn/lubrication/PatirChengFlowFactors.h"
 
 namespace {
 
@@ -30,30 +32,17 @@ using namespace pistondyn::lubrication;
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Simple rough-surface flow factors for the benchmark (Patir & Cheng 1978 isotropic fits,
-// exact Gaussian expected gap); the real model arrives with lubrication/FlowFactors*.
-class BenchRoughFactors final : public FlowFactorModel {
- public:
-  explicit BenchRoughFactors(double sigma_m) : sigma_(sigma_m) {}
-  NodeFlowFactors calcFactors(double h) const override {
-    NodeFlowFactors f;
-    const double H = h / sigma_;
-    f.phiPressureSliding = f.phiPressureCross = 1.0 - 0.90 * std::exp(-0.56 * H);
-    const double z = H / std::sqrt(2.0);
-    f.expectedGap_m = 0.5 * h * (1.0 + std::erf(z)) +
-                      (H < 40.0 ? sigma_ / std::sqrt(2.0 * kPi) * std::exp(-0.5 * H * H) : 0.0);
-    f.dExpectedGap_dh = 0.5 * (1.0 + std::erf(z));
-    f.phiFp = 1.0 - 1.40 * std::exp(-0.66 * H);
-    return f;
-  }
-  double compositeSigma_m() const override { return sigma_; }
-
- private:
-  double sigma_;
-};
-
+// The product's own Patir & Cheng model (PatirChengFlowFactors.h): surface 1 = the liner
+// (moving at U relative to the skirt), Rq1 = 0.5 um; surface 2 = the skirt carrying the grid,
+// Rq2 = 0.62 um; composite sigma = sqrt(0.5^2 + 0.62^2) = 0.80 um; isotropic roughness
+// (gamma = 1), Gaussian expected gap. Unlike the simple isotropic fits used before (BENCHMARKS.md),
+// it carries the shear-flow term (Vr1 - Vr2 != 0) and the full shear-stress factors.
 std::unique_ptr<FlowFactorModel> makeFlowFactors() {
-  return std::make_unique<BenchRoughFactors>(0.8e-6);
+  PatirChengParameters p;
+  p.rq1_m = 0.5e-6;
+  p.rq2_m = 0.62e-6;
+  p.peklenik1 = p.peklenik2 = 1.0;
+  return std::make_unique<PatirChengFlowFactors>(p);
 }
 
 struct Step {
@@ -119,11 +108,17 @@ struct Scenario {
 
 const Scenario& scenario(int scale) {
   static const Scenario s1(1), s2(2);
-  return scale == 1 ? s1 : s2;
+  if (scale == 1)
+    return s1;
+  if (scale == 2)
+    return s2;
+  static const Scenario s4(4);  // built only when a 256 x 192 row runs
+  return s4;
 }
 
-// args: scale (1: 64 x 48, 2: 128 x 96), solver (0 fast, 1 reference), model (1 Reynolds,
-// 2 JFO), over-relaxation x 100 of the reference solver (0: the default).
+// args: scale (1: 64 x 48, 2: 128 x 96, 4: 256 x 192), solver (0 fast, 1 reference), model
+// (1 Reynolds, 2 JFO), over-relaxation x 100 of the reference solver (0: the default), linear
+// solver of the fast solver (0 Automatic, 1 SparseDirect, 2 Multigrid).
 void BM_SkirtStroke(benchmark::State& state) {
   const Scenario& sc = scenario(static_cast<int>(state.range(0)));
   FilmSolverOptions opt;
@@ -131,9 +126,13 @@ void BM_SkirtStroke(benchmark::State& state) {
       state.range(1) == 0 ? FilmSolverType::FastActiveSet : FilmSolverType::ReferenceGaussSeidel;
   if (state.range(3) > 0)
     opt.overRelaxation = state.range(3) / 100.0;
+  opt.linearSolver = state.range(4) == 1   ? FastLinearSolver::SparseDirect
+                     : state.range(4) == 2 ? FastLinearSolver::Multigrid
+                                           : FastLinearSolver::Automatic;
   const CavitationModel model =
       state.range(2) == 1 ? CavitationModel::Reynolds : CavitationModel::MassConserving;
-  double sweeps = 0, factorisations = 0, krylov = 0, activeSet = 0, notConverged = 0, cavitated = 0;
+  double sweeps = 0, factorisations = 0, mgBuilds = 0, krylov = 0, activeSet = 0, notConverged = 0,
+         cavitated = 0;
   double solves = 0;
   for (auto _ : state) {
     state.PauseTiming();
@@ -152,6 +151,7 @@ void BM_SkirtStroke(benchmark::State& state) {
       warm = r.state;
       sweeps += opt.solver == FilmSolverType::ReferenceGaussSeidel ? r.iterations : 0;
       factorisations += r.factorisations;
+      mgBuilds += r.multigridBuilds;
       krylov += r.krylovIterations;
       activeSet += r.activeSetIterations;
       notConverged += r.converged ? 0 : 1;
@@ -166,25 +166,34 @@ void BM_SkirtStroke(benchmark::State& state) {
   state.counters["sweeps"] = sweeps / solves;
   state.counters["activeSetIt"] = activeSet / solves;
   state.counters["factorisations"] = factorisations / solves;
+  state.counters["mgBuilds"] = mgBuilds / solves;
   state.counters["krylovIt"] = krylov / solves;
   state.counters["cavitatedFrac"] = cavitated / solves / sc.grid.nodeCount();
   state.counters["notConverged"] = notConverged;
 }
 
 void skirtArgs(benchmark::internal::Benchmark* b) {
-  b->ArgNames({"scale", "reference", "model", "omega"});
+  b->ArgNames({"scale", "reference", "model", "omega", "linsolver"});
   for (int model : {1, 2})
     for (int scale : {1, 2})
       for (int reference : {0, 1})
-        b->Args({scale, reference, model, 0});
+        b->Args({scale, reference, model, 0, 0});
+  // Both linear solvers of the fast Reynolds path, whatever Automatic picks, and 256 x 192 to
+  // show the trend.
+  for (int scale : {1, 2, 4})
+    for (int linsolver : {1, 2})
+      b->Args({scale, 0, 1, 0, linsolver});
+  for (int scale : {1, 2})
+    for (int linsolver : {1, 2})
+      b->Args({scale, 0, 2, 0, linsolver});
   // Over-relaxation of the reference solver: the default 1.8 and the best factors found by
   // scanning (BENCHMARKS.md), so that speed-ups are quoted against a well-tuned baseline.
   for (int omega : {170, 184, 190})
-    b->Args({1, 1, 1, omega});
-  b->Args({1, 1, 2, 184});
+    b->Args({1, 1, 1, omega, 0});
+  b->Args({1, 1, 2, 184, 0});
   for (int omega : {192, 194})
     for (int model : {1, 2})
-      b->Args({2, 1, model, omega});
+      b->Args({2, 1, model, omega, 0});
   b->Unit(benchmark::kMillisecond);
   b->UseRealTime();
 }

@@ -23,6 +23,9 @@ void ActiveSetSolver::prepare(const FilmSystem& sys) {
   if (sys.n == shapeN_ && sys.nx == shapeNx_ && sys.periodicX == shapePeriodic_)
     return;
   pat_.build(sys);
+  mg_.prepare(sys);
+  mgBuilt_ = false;
+  mgGaveUp_ = false;
   shapeN_ = sys.n;
   shapeNx_ = sys.nx;
   shapePeriodic_ = sys.periodicX;
@@ -38,6 +41,9 @@ void ActiveSetSolver::prepare(const FilmSystem& sys) {
   sn_.setZero(kGmresRestart);
   y_.setZero(kGmresRestart);
   eqRow_.assign(n, 0);
+  pRow_.assign(n, 0);
+  mgRhs_.setZero(n);
+  eqMask_.setZero(n);
   colType_.assign(n, 0);
   factorColType_.assign(n, 0);
   changedRhs_.setZero(n);
@@ -47,6 +53,24 @@ void ActiveSetSolver::prepare(const FilmSystem& sys) {
 }
 
 void ActiveSetSolver::fillJacobian(const FilmSystem& s) {
+  for (int k = 0; k < s.n; ++k) {
+    eqRow_[k] = isEquationRow(s, k) ? 1 : 0;
+    eqMask_[k] = eqRow_[k] ? 1.0 : 0.0;
+    colType_[k] = !eqRow_[k] ? 0 : (s.status[k] == kFull ? 1 : 2);
+    pRow_[k] = colType_[k] == 1 ? 1 : 0;
+  }
+  factorExact_ = false;
+  jacobianCurrent_ = true;
+  valuesCurrent_ = false;
+  // The multigrid preconditioner works on the stencil of FilmSystem directly; the unsymmetric
+  // product (mass-conserving model) needs the sparse values.
+  if (useMg_)
+    mg_.setFineOperator(s, pRow_.data());
+  if (!useMg_ || s.jfo)
+    fillValues(s);
+}
+
+void ActiveSetSolver::fillValues(const FilmSystem& s) {
   std::fill(pat_.values.begin(), pat_.values.end(), 0.0);
   // Identity rows get the node's own Poiseuille diagonal (the film's conductance varies by
   // orders of magnitude): pivot-ratio checks stay meaningful and, should the node become an
@@ -54,8 +78,6 @@ void ActiveSetSolver::fillJacobian(const FilmSystem& s) {
   double scale = 0.0;
   int count = 0;
   for (int k = 0; k < s.n; ++k) {
-    eqRow_[k] = isEquationRow(s, k) ? 1 : 0;
-    colType_[k] = !eqRow_[k] ? 0 : (s.status[k] == kFull ? 1 : 2);
     if (s.status[k] != kFixed) {
       scale += s.diagP[k];
       ++count;
@@ -100,8 +122,7 @@ void ActiveSetSolver::fillJacobian(const FilmSystem& s) {
         v[pat_.posS[k]] -= s.inCy[so];
     }
   }
-  factorExact_ = false;
-  jacobianCurrent_ = true;
+  valuesCurrent_ = true;
   updatePreconditionerScaling();
 }
 
@@ -147,11 +168,25 @@ bool ActiveSetSolver::factorCurrent(const FilmSystem& s) {
 
 void ActiveSetSolver::multiply(const FilmSystem& s, const double* x, double* y) const {
   if (!s.jfo) {
-    // Symmetric case: the Poiseuille stencil on the equation rows (x vanishes elsewhere).
-    for (int k = 0; k < s.n; ++k)
-      y[k] = eqRow_[k] ? s.diagP[k] * x[k] - (s.tE[k] * x[s.nbE[k]] + s.tW[k] * x[s.nbW[k]] +
-                                              s.tN[k] * x[s.nbN[k]] + s.tS[k] * x[s.nbS[k]])
-                       : 0.0;
+    // Symmetric case: the Poiseuille stencil on the equation rows (x vanishes elsewhere), the
+    // rows masked by a multiplication (no branch); interior nodes with fixed neighbour offsets.
+    const int nx = s.nx, ny = s.ny;
+    const double *tE = s.tE.data(), *tW = s.tW.data(), *tN = s.tN.data(), *tS = s.tS.data(),
+                 *dg = s.diagP.data(), *m = eqMask_.data();
+    const int *nE = s.nbE.data(), *nW = s.nbW.data(), *nN = s.nbN.data(), *nS = s.nbS.data();
+    for (int j = 0; j < ny; ++j) {
+      const int base = nx * j;
+      const bool edgeRow = j == 0 || j == ny - 1;
+      for (int i = 0; i < nx; ++i) {
+        const int k = base + i;
+        if (edgeRow || i == 0 || i == nx - 1)
+          y[k] = m[k] * (dg[k] * x[k] - (tE[k] * x[nE[k]] + tW[k] * x[nW[k]] + tN[k] * x[nN[k]] +
+                                         tS[k] * x[nS[k]]));
+        else
+          y[k] = m[k] * (dg[k] * x[k] - (tE[k] * x[k + 1] + tW[k] * x[k - 1] + tN[k] * x[k + nx] +
+                                         tS[k] * x[k - nx]));
+      }
+    }
     return;
   }
   std::fill(y, y + pat_.n, 0.0);
@@ -193,6 +228,135 @@ void ActiveSetSolver::applyPreconditioner(const FilmSystem& s, double* v) {
   }
 }
 
+void ActiveSetSolver::precondition(const FilmSystem& s, const double* r, double* z) {
+  if (useMg_ && !s.jfo) {
+    mg_.apply(s, r, z);
+    return;
+  }
+  if (useMg_) {
+    // Mass-conserving Jacobian [A B; C D] (rows and columns: pressures of the full nodes, fill
+    // fractions of the cavitated ones). Block lower-triangular preconditioner: z_p = MG(r_p)
+    // for the Poiseuille block A, then z_theta = D^-1 (r_theta - C z_p) by one sweep along the
+    // sliding direction (D, the upwind Couette transport of the fill fraction, is triangular in
+    // that order). The coupling B (fill fraction carried into full nodes, only at reformation
+    // fronts) is left to GMRES.
+    for (int k = 0; k < s.n; ++k)
+      mgRhs_[k] = colType_[k] == 1 ? r[k] : 0.0;
+    mg_.apply(s, mgRhs_.data(), z);
+    for (const int k : s.order) {
+      if (colType_[k] != 2)
+        continue;
+      double t = r[k];
+      const int e = s.nbE[k], w = s.nbW[k], no = s.nbN[k], so = s.nbS[k];
+      if (colType_[e] == 1)
+        t += s.tE[k] * z[e];
+      if (colType_[w] == 1)
+        t += s.tW[k] * z[w];
+      if (colType_[no] == 1)
+        t += s.tN[k] * z[no];
+      if (colType_[so] == 1)
+        t += s.tS[k] * z[so];
+      const int ix = s.inIx[k], iy = s.inIy[k];
+      if (ix != k && colType_[ix] == 2)
+        t += s.inCx[k] * z[ix];
+      if (iy != k && colType_[iy] == 2)
+        t += s.inCy[k] * z[iy];
+      const double a = s.aOut[k] + s.squeeze[k] + s.capacity[k];
+      z[k] = a > 0.0 ? t / a : 0.0;
+    }
+    return;
+  }
+  std::copy(r, r + s.n, z);
+  applyPreconditioner(s, z);
+}
+
+bool ActiveSetSolver::rebuildMultigrid(const FilmSystem& s) {
+  mgBuilt_ = mg_.rebuild(s, pRow_.data());
+  ++multigridBuilds_;
+  // Cost bookkeeping as for a factorisation, except that no direct solve follows.
+  costSinceFactor_ = mg_.rebuildCostInIterations();
+  solvesSinceFactor_ = 0;
+  return mgBuilt_;
+}
+
+// Multigrid-preconditioned CG (GMRES for the mass-conserving model). The hierarchy's coarse
+// levels are lagged like the factorisation of the sparse-direct path (refreshed by the same cost
+// balance); its finest level always uses the current matrix. Should the Krylov solve fail even
+// with a fresh hierarchy, the current Jacobian is factorised (CHOLMOD / KLU) and solved directly.
+bool ActiveSetSolver::linearSolveMultigrid(const FilmSystem& s, double* b, double target,
+                                           double looseTarget) {
+  Eigen::Map<Eigen::VectorXd> bv(b, s.n);
+  if (factorExact_) {  // a fallback factorisation of this very Jacobian exists
+    if (!s.jfo)
+      chol_.solve(b, b, 1);
+    else
+      klu_.solve(b, 1);
+    return true;
+  }
+  bool fresh = false;
+  if (!mgBuilt_ || refactorNext_) {
+    refactorNext_ = false;
+    fresh = rebuildMultigrid(s);
+  }
+  rhs_ = bv;
+  for (int attempt = 0; attempt < 2 && mgBuilt_; ++attempt) {
+    const int before = krylovIterations_;
+    bool ok;
+    if (s.jfo) {
+      // As on the factorised path: solve to the loose target, the active-set loop decides.
+      ok = gmres(s, b, looseTarget, kMaxKrylovIterations);
+      stoppedLoose_ = ok && looseTarget > target;
+    } else {
+      ok = pcg(s, b, target, looseTarget, kMaxKrylovIterations);
+    }
+    if (ok) {
+      const int k = krylovIterations_ - before;
+      if (k > 0) {
+        costSinceFactor_ += k;
+        ++solvesSinceFactor_;
+        if (solvesSinceFactor_ > 1 && k > costSinceFactor_ / solvesSinceFactor_)
+          refactorNext_ = true;
+      }
+      return true;
+    }
+    bv = rhs_;
+    stoppedLoose_ = false;
+    if (fresh)
+      break;
+    fresh = rebuildMultigrid(s);
+  }
+  // Multigrid does not suit this operator (e.g. opposite anisotropies in one grid): Automatic
+  // uses the factorisation from the next call on, for this grid shape.
+  mgGaveUp_ = true;
+  if (!valuesCurrent_)
+    fillValues(s);
+  bool ok;
+  if (!s.jfo) {
+    if (!cholAnalysed_) {
+      chol_.analyze(pat_);
+      cholAnalysed_ = true;
+    }
+    ok = chol_.factorize(pat_);
+    cholFactored_ = ok;
+  } else {
+    if (!kluAnalysed_) {
+      klu_.analyze(pat_);
+      kluAnalysed_ = true;
+    }
+    ok = klu_.factorize(pat_, true);
+    kluFactored_ = ok;
+  }
+  ++factorisations_;
+  factorExact_ = ok;
+  if (ok) {
+    if (!s.jfo)
+      chol_.solve(b, b, 1);
+    else
+      klu_.solve(b, 1);
+  }
+  return ok;
+}
+
 bool ActiveSetSolver::wouldChangeSet(const FilmSystem& s, const Eigen::VectorXd& dz,
                                      double accuracy) const {
   if (s.model == CavitationModel::None)
@@ -225,8 +389,7 @@ bool ActiveSetSolver::pcg(const FilmSystem& s, double* b, double target, double 
   // While the active set may still move, stop at the loose target if the step would change it;
   // otherwise carry on in the same Krylov space to the tight target.
   bool checkLoose = looseTarget > target;
-  z_ = r_;
-  applyPreconditioner(s, z_.data());
+  precondition(s, r_.data(), z_.data());
   p_ = z_;
   double rz = r_.dot(z_);
   for (int it = 1; it <= maxIt; ++it) {
@@ -251,8 +414,7 @@ bool ActiveSetSolver::pcg(const FilmSystem& s, double* b, double target, double 
         return true;
       }
     }
-    z_ = r_;
-    applyPreconditioner(s, z_.data());
+    precondition(s, r_.data(), z_.data());
     const double rzNew = r_.dot(z_);
     const double beta = rzNew / rz;
     rz = rzNew;
@@ -279,8 +441,7 @@ bool ActiveSetSolver::gmres(const FilmSystem& s, double* b, double target, int m
     g_[0] = beta;
     int j = 0;
     while (j < m) {
-      z_ = V_.col(j);
-      applyPreconditioner(s, z_.data());
+      precondition(s, V_.col(j).data(), z_.data());
       multiply(s, z_.data(), q_.data());
       for (int i = 0; i <= j; ++i) {  // modified Gram-Schmidt
         H_(i, j) = q_.dot(V_.col(i));
@@ -313,8 +474,8 @@ bool ActiveSetSolver::gmres(const FilmSystem& s, double* b, double target, int m
         t -= H_(i, l) * y_[l];
       y_[i] = t / H_(i, i);
     }
-    z_.noalias() = V_.leftCols(j) * y_.head(j);
-    applyPreconditioner(s, z_.data());
+    q_.noalias() = V_.leftCols(j) * y_.head(j);
+    precondition(s, q_.data(), z_.data());
     x_ += z_;
     multiply(s, x_.data(), q_.data());
     r_ = bv - q_;
@@ -336,6 +497,8 @@ bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target,
     bv.setZero();
     return true;
   }
+  if (useMg_)
+    return linearSolveMultigrid(s, b, target, looseTarget);
   const bool haveFactor = s.jfo ? kluFactored_ : cholFactored_;
   if (!haveFactor || refactorNext_) {
     refactorNext_ = false;
@@ -386,6 +549,16 @@ bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target,
 
 IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& opt) {
   prepare(s);
+  const bool mg =
+      opt.linearSolver == FastLinearSolver::Multigrid ||
+      (opt.linearSolver == FastLinearSolver::Automatic && s.n >= kMultigridMinNodes && !mgGaveUp_);
+  if (mg != useMg_) {
+    // The lagged preconditioner of the other path is stale: start afresh.
+    useMg_ = mg;
+    mgBuilt_ = false;
+    cholFactored_ = kluFactored_ = false;
+    refactorNext_ = false;
+  }
   jacobianCurrent_ = false;
   IterationReport rep;
   double* p = s.p.data();

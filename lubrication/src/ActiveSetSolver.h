@@ -22,9 +22,21 @@
 // preconditioner's quality decays steadily.
 // Consecutive calls of an engine simulation differ little, so most calls cost a handful of
 // back-substitutions instead of a factorisation.
+//
+// Multigrid (FastLinearSolver::Multigrid, or Automatic on grids of kMultigridMinNodes nodes and
+// more): one V-cycle of GridMultigrid on the Poiseuille block of the full nodes replaces the
+// factorisation. Symmetric case: it is the PCG preconditioner. Mass-conserving case: GMRES with
+// the block lower-triangular preconditioner [MG 0; C D] (D, the upwind fill-fraction transport
+// of the cavitated nodes, inverted by one sweep along the sliding direction). The finest level
+// always uses the current Jacobian and active set; the Galerkin coarse levels are lagged and
+// refreshed by the same cost balance (their build cost in Krylov iterations from operation
+// counts; the first solve after a rebuild is iterative too). Should the Krylov solve fail even
+// with a fresh hierarchy, the current Jacobian is factorised (CHOLMOD / KLU) and solved
+// directly; Automatic then keeps to the factorisation for this grid shape.
 
 #include <Eigen/Core>
 
+#include "GridMultigrid.h"
 #include "ReferenceSolver.h"
 #include "SparseFactor.h"
 
@@ -47,9 +59,19 @@ class ActiveSetSolver {
 
   int factorisations() const { return factorisations_; }
   int krylovIterations() const { return krylovIterations_; }
+  int multigridBuilds() const { return multigridBuilds_; }
+  // True when the symmetric systems of the last solve() used the multigrid preconditioner.
+  bool usesMultigrid() const { return useMg_; }
+  // The multigrid preconditioner (tests inspect it).
+  GridMultigrid& multigrid() { return mg_; }
 
  private:
-  void fillJacobian(const FilmSystem& sys);
+  void fillJacobian(const FilmSystem& sys);  // row flags, and values unless multigrid is used
+  void fillValues(const FilmSystem& sys);    // sparse Jacobian values (factorisations)
+  bool linearSolveMultigrid(const FilmSystem& sys, double* rhs, double absTarget,
+                            double looseTarget);
+  bool rebuildMultigrid(const FilmSystem& sys);
+  void precondition(const FilmSystem& sys, const double* r, double* z);  // z = M^-1 r
   void updatePreconditionerScaling();
   bool factorCurrent(const FilmSystem& sys);
   // rhs -> solution in place, residual max norm <= absTarget (equation rows). False on failure.
@@ -63,6 +85,12 @@ class ActiveSetSolver {
   bool gmres(const FilmSystem& sys, double* b, double absTarget, int maxIt);
 
   StencilPattern pat_;
+  GridMultigrid mg_;
+  bool useMg_ = false;
+  bool mgBuilt_ = false;
+  bool mgGaveUp_ = false;       // multigrid failed once at this grid shape: Automatic factorises
+  bool valuesCurrent_ = false;  // pat_.values hold the current Jacobian (multigrid mode)
+  int multigridBuilds_ = 0;
   CholmodLdl chol_;
   KluLu klu_;
   int shapeN_ = -1, shapeNx_ = -1;
@@ -89,6 +117,9 @@ class ActiveSetSolver {
   Eigen::VectorXd g_, cs_, sn_, y_;
   Eigen::VectorXd changedRhs_;
   std::vector<std::uint8_t> eqRow_;
+  Eigen::VectorXd eqMask_;          // 1.0 on equation rows, 0.0 elsewhere
+  std::vector<std::uint8_t> pRow_;  // pressure unknowns (full nodes): the multigrid's rows
+  Eigen::VectorXd mgRhs_;           // mass-conserving model: pressure block of a right-hand side
   std::vector<std::uint8_t> colType_, factorColType_;  // 0 identity, 1 pressure, 2 fill
 };
 

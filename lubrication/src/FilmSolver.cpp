@@ -226,6 +226,7 @@ void FilmSolver::Impl::solve(const FilmGrid& grid, const FilmProblem& pr, const 
   detail::IterationReport rep;
   const int factorisations0 = fast.factorisations();
   const int krylov0 = fast.krylovIterations();
+  const int mgBuilds0 = fast.multigridBuilds();
   res.usedFallback = false;
   res.activeSetIterations = 0;
   if (options.solver == FilmSolverType::ReferenceGaussSeidel) {
@@ -270,6 +271,7 @@ void FilmSolver::Impl::solve(const FilmGrid& grid, const FilmProblem& pr, const 
   }
   res.factorisations = fast.factorisations() - factorisations0;
   res.krylovIterations = fast.krylovIterations() - krylov0;
+  res.multigridBuilds = fast.multigridBuilds() - mgBuilds0;
   detail::postprocess(grid, pr, sys, m > 0 ? &derivRhs : nullptr, res);
 }
 

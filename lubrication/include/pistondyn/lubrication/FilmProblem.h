@@ -118,6 +118,27 @@ struct FilmProblem {
   double referencePressure_Pa = 0.0;  // subtracted from p in load and moments, [Pa]
 };
 
+// Preconditioner of the fast solver's Krylov iterations. Both run to the same tolerance; they
+// differ in cost only.
+enum class FastLinearSolver {
+  // Multigrid from kMultigridMinNodes grid nodes up, SparseDirect below (BENCHMARKS.md: the
+  // lagged factorisation is the cheaper one on small grids, multigrid grows linearly with the
+  // grid). Should a multigrid solve ever fail (it then factorises that matrix), the solver object
+  // keeps to SparseDirect for the grid shape.
+  Automatic,
+  // Lagged sparse factorisation: CHOLMOD LDL' (AMD ordering, drift-rescaled) for PCG on the
+  // symmetric Reynolds / full-Sommerfeld systems, KLU for GMRES on the mass-conserving ones.
+  SparseDirect,
+  // Geometric multigrid V-cycle on the grid (Galerkin coarse levels, red-black Gauss-Seidel,
+  // cavitated nodes masked): the PCG preconditioner of the symmetric systems; for the
+  // mass-conserving ones the pressure block of a block-triangular GMRES preconditioner whose
+  // fill-fraction block is one upwind sweep.
+  Multigrid,
+};
+// Grid size from which FastLinearSolver::Automatic picks multigrid: on the skirt benchmark the two
+// cost about the same at 48 x 36 nodes (1728); the factorisation wins below, multigrid above.
+constexpr int kMultigridMinNodes = 2000;
+
 // Warm start that the caller keeps between steps (e.g. in the Simbody State cache). Small,
 // copyable. Empty arrays (the default) mean "no warm start".
 struct FilmState {
@@ -136,6 +157,8 @@ struct FilmSolverOptions {
   double overRelaxation = 1.8;
   double fillRelaxation = 1.0;      // relaxation of the fill-fraction update (JFO GS), (0, 1]
   int maxActiveSetIterations = 40;  // active-set (Newton) steps of the fast solver, default 40
+  // Preconditioner of the fast solver's linear solves, default Automatic (see FastLinearSolver).
+  FastLinearSolver linearSolver = FastLinearSolver::Automatic;
   // When the active-set iteration does not settle within maxActiveSetIterations, continue from
   // its iterate with the reference Gauss-Seidel (reported in FilmResult::usedFallback).
   bool fallbackToReference = true;
@@ -204,6 +227,7 @@ struct FilmResult {
   int activeSetIterations = 0;
   int factorisations = 0;    // numeric sparse factorisations done in this call (fast solver)
   int krylovIterations = 0;  // preconditioned Krylov iterations done in this call (fast solver)
+  int multigridBuilds = 0;   // multigrid hierarchies (Galerkin levels) built in this call
   double residual = 0.0;
   bool converged = false;
   bool usedFallback = false;

@@ -10,27 +10,35 @@
 //    fill fraction while cavitated. Sweeps follow the sliding direction.
 //  * FastActiveSet - a primal-dual active-set (semismooth Newton) iteration on the
 //    complementarity problem; for a fixed split into full and cavitated nodes the balance is
-//    linear and one Newton step solves it. The linear systems are solved with sparse
-//    factorisations kept between calls and used as preconditioners while the matrix drifts:
-//    CHOLMOD (simplicial LDL') + PCG for the symmetric Reynolds / full-Sommerfeld matrix, KLU +
-//    GMRES for the unsymmetric mass-conserving one. The lagged factor is rescaled by the drift
-//    of the diagonal (the h^3 conductances) and refreshed when a Krylov solve costs more than the
-//    running average since the last factorisation; while the active set still moves, solves
-//    are inexact. Warm-started in an engine simulation a call typically costs 1-3 active-set
-//    steps, 6-13 Krylov iterations and a factorisation every 7-10 calls (BENCHMARKS.md).
+//    linear and one Newton step solves it. The linear systems are solved by Krylov iterations
+//    with preconditioners kept between calls while the matrix drifts:
+//     - symmetric Reynolds / full-Sommerfeld matrix: PCG, preconditioned (FilmSolverOptions::
+//       linearSolver, FilmProblem.h) either by a geometric multigrid V-cycle on the grid
+//       (Galerkin coarse levels, red-black Gauss-Seidel, cavitated and prescribed nodes masked;
+//       cost linear in the node count, iteration counts independent of it) or by a lagged
+//       CHOLMOD factorisation (simplicial LDL', rescaled by the drift of the diagonal);
+//     - unsymmetric mass-conserving matrix: GMRES, preconditioned either by the same multigrid
+//       on the pressure block followed by one upwind sweep for the fill fractions
+//       (block-triangular) or by a lagged KLU factorisation.
+//    The default picks multigrid from kMultigridMinNodes nodes up, where it is the faster one.
+//    The lagged part (multigrid coarse levels, factorisation) is refreshed when a Krylov solve
+//    costs more than the running average since the last refresh; while the active set still
+//    moves, solves are inexact. Warm-started in an engine simulation a call typically costs 1-3
+//    active-set steps and 6-13 Krylov iterations (BENCHMARKS.md).
 //    If the iteration does not settle, the reference solver finishes from its iterate
 //    (FilmSolverOptions::fallbackToReference, reported in FilmResult::usedFallback).
 //  Both enforce p >= p_cav, 0 <= theta <= 1 and p (1 - theta) = 0 exactly; they differ only in
 //  how the balance residual is driven below the tolerance.
 //
 // The object keeps its workspace between calls: at a fixed grid size a call allocates nothing
-// (checked with a malloc counter, BENCHMARKS.md) and the symbolic analyses are reused while the
-// grid's shape is unchanged. It holds no global state and uses no SuiteSparse component with
-// global state (orderings by AMD, not METIS); use one solver object per thread (a
-// FlowFactorModel may be shared: it is immutable). Results are deterministic for a given
-// sequence of calls. Not copyable (it owns SuiteSparse handles), movable. The squeeze
-// derivatives of FilmProblem::squeezeBasis cost one extra linear solve per basis column with
-// the final active set (reference solver: with the fast solver's machinery).
+// (checked with a malloc counter, tests/lubrication/test_film_allocation.cpp) and the symbolic
+// analyses and multigrid levels are reused while the grid's shape is unchanged. It holds no
+// global state and uses no SuiteSparse component with global state (orderings by AMD, not
+// METIS); use one solver object per thread (a FlowFactorModel may be shared: it is
+// immutable). Results are deterministic for a given sequence of calls. Not copyable (it owns
+// SuiteSparse handles), movable. The squeeze derivatives of FilmProblem::squeezeBasis cost one
+// extra linear solve per basis column with the final active set (reference solver: with the fast
+// solver's machinery).
 //
 // Errors: bad input throws std::invalid_argument naming the argument (gap not positive/finite,
 // grid < 3x3, viscosity not positive, array sizes inconsistent with the grid, ...). A solve

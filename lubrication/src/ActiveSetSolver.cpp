@@ -138,7 +138,7 @@ void ActiveSetSolver::updatePreconditionerScaling() {
   }
 }
 
-bool ActiveSetSolver::factorCurrent(const FilmSystem& s) {
+bool ActiveSetSolver::factorValues(const FilmSystem& s, bool freshPivots) {
   bool ok;
   if (!s.jfo) {
     if (!cholAnalysed_) {
@@ -152,11 +152,17 @@ bool ActiveSetSolver::factorCurrent(const FilmSystem& s) {
       klu_.analyze(pat_);
       kluAnalysed_ = true;
     }
-    ok = klu_.factorize(pat_, !kluFactored_);
+    ok = klu_.factorize(pat_, freshPivots);
     kluFactored_ = ok;
   }
   ++factorisations_;
   factorExact_ = ok;
+  return ok;
+}
+
+bool ActiveSetSolver::factorCurrent(const FilmSystem& s) {
+  // KLU keeps its pivot order while it has a valid factorisation (a refactor is cheaper).
+  const bool ok = factorValues(s, !kluFactored_);
   factorColType_ = colType_;
   for (int k = 0; k < pat_.n; ++k)
     factorDiag_[k] = pat_.values[pat_.posSelf[k]];
@@ -330,24 +336,8 @@ bool ActiveSetSolver::linearSolveMultigrid(const FilmSystem& s, double* b, doubl
   mgGaveUp_ = true;
   if (!valuesCurrent_)
     fillValues(s);
-  bool ok;
-  if (!s.jfo) {
-    if (!cholAnalysed_) {
-      chol_.analyze(pat_);
-      cholAnalysed_ = true;
-    }
-    ok = chol_.factorize(pat_);
-    cholFactored_ = ok;
-  } else {
-    if (!kluAnalysed_) {
-      klu_.analyze(pat_);
-      kluAnalysed_ = true;
-    }
-    ok = klu_.factorize(pat_, true);
-    kluFactored_ = ok;
-  }
-  ++factorisations_;
-  factorExact_ = ok;
+  // Fresh pivots: the Krylov failure says this operator differs from any earlier one.
+  const bool ok = factorValues(s, true);
   if (ok) {
     if (!s.jfo)
       chol_.solve(b, b, 1);

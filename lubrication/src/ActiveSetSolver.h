@@ -73,6 +73,9 @@ class ActiveSetSolver {
   bool rebuildMultigrid(const FilmSystem& sys);
   void precondition(const FilmSystem& sys, const double* r, double* z);  // z = M^-1 r
   void updatePreconditionerScaling();
+  // Analyse (once per shape) and factorise the current sparse values; KLU refreshes its pivot
+  // order when freshPivots. Updates the factorisation counters and factorExact_.
+  bool factorValues(const FilmSystem& sys, bool freshPivots);
   bool factorCurrent(const FilmSystem& sys);
   // rhs -> solution in place, residual max norm <= absTarget (equation rows). False on failure.
   // With looseTarget > absTarget the solve may stop at looseTarget (stoppedLoose_) when the step

@@ -1,44 +1,10 @@
 // CONVENTIONS.md: a solver that runs every force evaluation allocates nothing after the first
-// call at a given grid size. Reference: this executable interposes glibc's malloc, calloc and
-// realloc (Eigen allocates with malloc, operator new ends there too) and counts the calls made
-// while a flag is set, as tests/mapping/test_mapping_allocation.cpp does.
+// call at a given grid size. Reference: the allocation counter of tests/support, which
+// interposes glibc's malloc, calloc and realloc.
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstddef>
-
+#include "AllocationCounter.h"
 #include "test_film_support.h"
-
-namespace {
-std::atomic<bool> counting{false};
-std::atomic<long> allocations{0};
-}  // namespace
-
-extern "C" {
-void* __libc_malloc(std::size_t);
-void* __libc_calloc(std::size_t, std::size_t);
-void* __libc_realloc(void*, std::size_t);
-void __libc_free(void*);
-
-void* malloc(std::size_t size) {
-  if (counting.load())
-    ++allocations;
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t count, std::size_t size) {
-  if (counting.load())
-    ++allocations;
-  return __libc_calloc(count, size);
-}
-void* realloc(void* p, std::size_t size) {
-  if (counting.load())
-    ++allocations;
-  return __libc_realloc(p, size);
-}
-void free(void* p) {
-  __libc_free(p);
-}
-}
 
 namespace pistondyn::lubrication {
 namespace {
@@ -61,14 +27,11 @@ long allocationsOfWarmCalls(FilmSolverOptions options, CavitationModel model) {
   long count = 0;
   for (int call = 0; call < 12; ++call) {
     pr.gapRate_mps = rate0 * (1.0 + 0.2 * std::sin(0.7 * call));  // in place: same size
-    if (call >= 2) {  // the first calls size the workspaces
-      allocations = 0;
-      counting = true;
-    }
-    solver.solve(g, pr, call > 0 ? &r.state : nullptr, r);
-    counting = false;
-    if (call >= 2)
-      count += allocations.load();
+    const auto solve = [&] { solver.solve(g, pr, call > 0 ? &r.state : nullptr, r); };
+    if (call >= 2)  // the first calls size the workspaces
+      count += pistondyn::test::allocationsDuring(solve);
+    else
+      solve();
     EXPECT_TRUE(r.converged) << call;
   }
   return count;
@@ -80,11 +43,7 @@ TEST(FilmAllocation, CounterSeesTheFirstCall) {  // the interposition works
   const FilmProblem pr = sp.problem(g, CavitationModel::Reynolds);
   FilmSolver solver;
   FilmResult r;
-  allocations = 0;
-  counting = true;
-  solver.solve(g, pr, nullptr, r);
-  counting = false;
-  EXPECT_GT(allocations.load(), 0);
+  EXPECT_GT(pistondyn::test::allocationsDuring([&] { solver.solve(g, pr, nullptr, r); }), 0);
 }
 
 TEST(FilmAllocation, WarmCallsAllocateNothing) {

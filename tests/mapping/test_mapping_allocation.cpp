@@ -1,60 +1,19 @@
 // CONVENTIONS.md: code that runs every force evaluation allocates nothing after the first
-// call at a given size. Reference: this executable interposes glibc's malloc, calloc and
-// realloc (Eigen allocates with malloc, operator new ends there too) and counts the calls
-// made while a flag is set.
+// call at a given size. Reference: the allocation counter of tests/support, which interposes
+// glibc's malloc, calloc and realloc.
 
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstddef>
 #include <vector>
 
+#include "AllocationCounter.h"
 #include "pistondyn/mapping/ForceMap.h"
 #include "pistondyn/mapping/HermiteSurface.h"
-
-namespace {
-std::atomic<bool> counting{false};
-std::atomic<long> allocations{0};
-}  // namespace
-
-extern "C" {
-void* __libc_malloc(std::size_t);
-void* __libc_calloc(std::size_t, std::size_t);
-void* __libc_realloc(void*, std::size_t);
-void __libc_free(void*);
-
-void* malloc(std::size_t size) {
-  if (counting.load())
-    ++allocations;
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t count, std::size_t size) {
-  if (counting.load())
-    ++allocations;
-  return __libc_calloc(count, size);
-}
-void* realloc(void* p, std::size_t size) {
-  if (counting.load())
-    ++allocations;
-  return __libc_realloc(p, size);
-}
-void free(void* p) {
-  __libc_free(p);
-}
-}
 
 namespace pm = pistondyn::mapping;
 
 namespace {
-// Allocations made by f().
-template <class F>
-long allocationsDuring(F&& f) {
-  allocations = 0;
-  counting = true;
-  f();
-  counting = false;
-  return allocations.load();
-}
+using pistondyn::test::allocationsDuring;
 
 const double kR = 0.0325;
 pm::CylinderGrid contactGrid() {

@@ -35,33 +35,34 @@ Eigen::VectorXd hatIntegrals(const Eigen::VectorXd& x, bool closed, double perio
 
 }  // namespace
 
-CylinderGrid CylinderGrid::sector(double radius_m, const Eigen::VectorXd& phi_rad,
-                                  const Eigen::VectorXd& y_m) {
-  const char* fn = "CylinderGrid::sector";
+namespace {
+// The checks both factories share: radius, increasing nodes (at least minPhiNodes around and
+// two along), angles in range and a span short of a full turn (whyNotFullTurn says what to do).
+void checkNodes(const char* fn, double radius_m, const Eigen::VectorXd& phi_rad,
+                const Eigen::VectorXd& y_m, int minPhiNodes, const char* whyNotFullTurn) {
   checkRadius(fn, radius_m);
-  detail::requireIncreasingNodes(fn, "phi_rad", phi_rad, 2);
+  detail::requireIncreasingNodes(fn, "phi_rad", phi_rad, minPhiNodes);
   detail::requireIncreasingNodes(fn, "y_m", y_m, 2);
   detail::requireAngle(fn, "phi_rad[0]", phi_rad[0]);
   detail::requireAngle(fn, "phi_rad[last]", phi_rad[phi_rad.size() - 1]);
   const double span = phi_rad[phi_rad.size() - 1] - phi_rad[0];
   if (!(span < kTwoPi))
-    detail::fail(fn, "phi_rad spans " + detail::str(span) +
-                         " rad, a sector must span less than 2*pi (use CylinderGrid::fullCircle)");
+    detail::fail(fn, "phi_rad spans " + detail::str(span) + " rad" + whyNotFullTurn);
+}
+}  // namespace
+
+CylinderGrid CylinderGrid::sector(double radius_m, const Eigen::VectorXd& phi_rad,
+                                  const Eigen::VectorXd& y_m) {
+  checkNodes("CylinderGrid::sector", radius_m, phi_rad, y_m, 2,
+             ", a sector must span less than 2*pi (use CylinderGrid::fullCircle)");
   return CylinderGrid(radius_m, phi_rad, y_m, false);
 }
 
 CylinderGrid CylinderGrid::fullCircle(double radius_m, const Eigen::VectorXd& phi_rad,
                                       const Eigen::VectorXd& y_m) {
   const char* fn = "CylinderGrid::fullCircle";
-  checkRadius(fn, radius_m);
-  detail::requireIncreasingNodes(fn, "phi_rad", phi_rad, 3);
-  detail::requireIncreasingNodes(fn, "y_m", y_m, 2);
-  detail::requireAngle(fn, "phi_rad[0]", phi_rad[0]);
-  detail::requireAngle(fn, "phi_rad[last]", phi_rad[phi_rad.size() - 1]);
-  const double span = phi_rad[phi_rad.size() - 1] - phi_rad[0];
-  if (!(span < kTwoPi))
-    detail::fail(fn, "phi_rad spans " + detail::str(span) +
-                         " rad; the closing node phi_rad[0] + 2*pi must not be repeated");
+  checkNodes(fn, radius_m, phi_rad, y_m, 3,
+             "; the closing node phi_rad[0] + 2*pi must not be repeated");
   detail::requireReasonableClosingCell(fn, "phi_rad", phi_rad, kTwoPi);
   return CylinderGrid(radius_m, phi_rad, y_m, true);
 }

@@ -53,6 +53,18 @@ double pistonPosition_m(int k) {
   return 0.045 + 0.0435 * std::cos(2.0 * 3.14159265358979 * (k % 360) / 360.0);
 }
 
+// The contact grid over the liner: the map, its per-step workspace and a pressure and shear
+// field on the contact grid (built once, outside the timed loops).
+struct ContactOnLiner {
+  pm::CylinderGrid contact = contactGrid(), liner = linerGrid();
+  pm::TensorForceMap map{contact, liner, 0.0};
+  pm::TensorForceMap::Workspace ws;
+  Eigen::VectorXd p = contactPressure(contact);
+  Eigen::VectorXd tau = 0.01 * p;
+  Eigen::VectorXd zero = Eigen::VectorXd::Zero(p.size());  // no temporary per call
+  Eigen::VectorXd linerField() const { return Eigen::VectorXd::Zero(liner.nodeCount()); }
+};
+
 // Contact pressure -> structural nodal forces, prebuilt sparse map (per call).
 void BM_ForceMap_ContactToStructural_Apply(benchmark::State& state) {
   const auto contact = contactGrid(), structural = structuralGrid();
@@ -79,15 +91,12 @@ BENCHMARK(BM_ForceMap_ContactToStructural_Build);
 // Contact pressure -> liner nodal forces at a moving piston position: per step the axial
 // factor is rebuilt for the new offset and the map applied (what the plugin does).
 void BM_TensorForceMap_ContactToLiner_StepAndApply(benchmark::State& state) {
-  const auto contact = contactGrid(), liner = linerGrid();
-  const pm::TensorForceMap map(contact, liner, 0.0);
-  pm::TensorForceMap::Workspace ws;
-  const Eigen::VectorXd p = contactPressure(contact);
-  Eigen::VectorXd f(liner.nodeCount());
+  ContactOnLiner c;
+  Eigen::VectorXd f = c.linerField();
   int k = 0;
   for (auto _ : state) {
-    map.setAxialOffset(pistonPosition_m(k++), ws);
-    benchmark::DoNotOptimize(map.apply(ws, p, f));
+    c.map.setAxialOffset(pistonPosition_m(k++), c.ws);
+    benchmark::DoNotOptimize(c.map.apply(c.ws, c.p, f));
     benchmark::DoNotOptimize(f.data());
   }
 }
@@ -95,26 +104,21 @@ BENCHMARK(BM_TensorForceMap_ContactToLiner_StepAndApply);
 
 // The same per step, split: the axial update alone and the application alone.
 void BM_TensorForceMap_ContactToLiner_AxialUpdateOnly(benchmark::State& state) {
-  const auto contact = contactGrid(), liner = linerGrid();
-  const pm::TensorForceMap map(contact, liner, 0.0);
-  pm::TensorForceMap::Workspace ws;
+  ContactOnLiner c;
   int k = 0;
   for (auto _ : state) {
-    map.setAxialOffset(pistonPosition_m(k++), ws);
-    benchmark::DoNotOptimize(ws.axial.value.data());
+    c.map.setAxialOffset(pistonPosition_m(k++), c.ws);
+    benchmark::DoNotOptimize(c.ws.axial.value.data());
   }
 }
 BENCHMARK(BM_TensorForceMap_ContactToLiner_AxialUpdateOnly);
 
 void BM_TensorForceMap_ContactToLiner_ApplyOnly(benchmark::State& state) {
-  const auto contact = contactGrid(), liner = linerGrid();
-  const pm::TensorForceMap map(contact, liner, 0.0);
-  pm::TensorForceMap::Workspace ws;
-  map.setAxialOffset(0.05, ws);
-  const Eigen::VectorXd p = contactPressure(contact);
-  Eigen::VectorXd f(liner.nodeCount());
+  ContactOnLiner c;
+  c.map.setAxialOffset(0.05, c.ws);
+  Eigen::VectorXd f = c.linerField();
   for (auto _ : state) {
-    benchmark::DoNotOptimize(map.apply(ws, p, f));
+    benchmark::DoNotOptimize(c.map.apply(c.ws, c.p, f));
     benchmark::DoNotOptimize(f.data());
   }
 }
@@ -122,17 +126,12 @@ BENCHMARK(BM_TensorForceMap_ContactToLiner_ApplyOnly);
 
 // 3-D traction (normal, circumferential, axial) onto the liner per step.
 void BM_TensorForceMap_ContactToLiner_Traction3DStep(benchmark::State& state) {
-  const auto contact = contactGrid(), liner = linerGrid();
-  const pm::TensorForceMap map(contact, liner, 0.0);
-  pm::TensorForceMap::Workspace ws;
-  const Eigen::VectorXd p = contactPressure(contact);
-  const Eigen::VectorXd tau = 0.01 * p;
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(p.size());  // no temporary per call
-  Eigen::VectorXd fx(liner.nodeCount()), fy(liner.nodeCount()), fz(liner.nodeCount());
+  ContactOnLiner c;
+  Eigen::VectorXd fx = c.linerField(), fy = fx, fz = fx;
   int k = 0;
   for (auto _ : state) {
-    map.setAxialOffset(pistonPosition_m(k++), ws);
-    benchmark::DoNotOptimize(map.applyTraction(ws, p, zero, tau, fx, fy, fz));
+    c.map.setAxialOffset(pistonPosition_m(k++), c.ws);
+    benchmark::DoNotOptimize(c.map.applyTraction(c.ws, c.p, c.zero, c.tau, fx, fy, fz));
     benchmark::DoNotOptimize(fx.data());
   }
 }
@@ -142,39 +141,31 @@ BENCHMARK(BM_TensorForceMap_ContactToLiner_Traction3DStep);
 // previous step wrote, move, add the new loads into the rows the contact grid overlaps.
 // Cost scales with the contact grid, not with the 14400-node liner.
 void BM_TensorForceMap_ContactToLiner_StepAndAccumulate(benchmark::State& state) {
-  const auto contact = contactGrid(), liner = linerGrid();
-  const pm::TensorForceMap map(contact, liner, 0.0);
-  pm::TensorForceMap::Workspace ws;
-  const Eigen::VectorXd p = contactPressure(contact);
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(liner.nodeCount());
-  const int nPhi = liner.nPhi();
+  ContactOnLiner c;
+  Eigen::VectorXd f = c.linerField();
+  const int nPhi = c.liner.nPhi();
   int k = 0;
   for (auto _ : state) {
-    f.segment(nPhi * ws.rows.first, nPhi * ws.rows.count).setZero();
-    map.setAxialOffset(pistonPosition_m(k++), ws);
-    benchmark::DoNotOptimize(map.accumulate(ws, p, f));
+    f.segment(nPhi * c.ws.rows.first, nPhi * c.ws.rows.count).setZero();
+    c.map.setAxialOffset(pistonPosition_m(k++), c.ws);
+    benchmark::DoNotOptimize(c.map.accumulate(c.ws, c.p, f));
     benchmark::DoNotOptimize(f.data());
   }
 }
 BENCHMARK(BM_TensorForceMap_ContactToLiner_StepAndAccumulate);
 
 void BM_TensorForceMap_ContactToLiner_Traction3DStepWindowed(benchmark::State& state) {
-  const auto contact = contactGrid(), liner = linerGrid();
-  const pm::TensorForceMap map(contact, liner, 0.0);
-  pm::TensorForceMap::Workspace ws;
-  const Eigen::VectorXd p = contactPressure(contact);
-  const Eigen::VectorXd tau = 0.01 * p;
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(p.size());  // no temporary per call
-  Eigen::VectorXd fx = Eigen::VectorXd::Zero(liner.nodeCount()), fy = fx, fz = fx;
-  const int nPhi = liner.nPhi();
+  ContactOnLiner c;
+  Eigen::VectorXd fx = c.linerField(), fy = fx, fz = fx;
+  const int nPhi = c.liner.nPhi();
   int k = 0;
   for (auto _ : state) {
-    const Eigen::Index first = nPhi * ws.rows.first, count = nPhi * ws.rows.count;
+    const Eigen::Index first = nPhi * c.ws.rows.first, count = nPhi * c.ws.rows.count;
     fx.segment(first, count).setZero();
     fy.segment(first, count).setZero();
     fz.segment(first, count).setZero();
-    map.setAxialOffset(pistonPosition_m(k++), ws);
-    benchmark::DoNotOptimize(map.accumulateTraction(ws, p, zero, tau, fx, fy, fz));
+    c.map.setAxialOffset(pistonPosition_m(k++), c.ws);
+    benchmark::DoNotOptimize(c.map.accumulateTraction(c.ws, c.p, c.zero, c.tau, fx, fy, fz));
     benchmark::DoNotOptimize(fx.data());
   }
 }

@@ -187,16 +187,8 @@ TEST(FilmMassConserving, StoredOilChangeEqualsAccumulatedNetInflow) {
 TEST(FilmMassConserving, FullFilmReproducesReynoldsCondition) {
   const test::InclinedSlider s;
   const FilmGrid g = FilmGrid::uniform(25, 0.008, 61, s.length_m);
-  FilmProblem pr;
-  pr.gap_m.resize(g.nodeCount());
-  pr.gapRate_mps.resize(g.nodeCount());
-  for (int j = 0; j < g.ny(); ++j)
-    for (int i = 0; i < g.nx(); ++i) {
-      pr.gap_m[g.nodeIndex(i, j)] = s.gapAt(g.y_m()[j]);
-      pr.gapRate_mps[g.nodeIndex(i, j)] = -1e-4;  // approaching: pressure only rises
-    }
-  pr.slidingVelocity_mps = {0.0, s.speed_mps};
-  pr.viscosity_Pas = s.viscosity_Pas;
+  FilmProblem pr = s.problem(g);
+  pr.gapRate_mps.setConstant(g.nodeCount(), -1e-4);  // approaching: pressure only rises
   FilmSolver solver(test::tightOptions(FilmSolverType::FastActiveSet, 1e-12));
   pr.cavitation = CavitationModel::Reynolds;
   const FilmResult rey = solver.solve(g, pr);

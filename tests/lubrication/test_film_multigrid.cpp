@@ -79,13 +79,7 @@ TEST(FilmMultigrid, AgreesOnFinitePad) {
   const test::InclinedSlider s;
   for (auto [nx, ny] : {std::pair{31, 41}, std::pair{40, 26}}) {
     const FilmGrid g = FilmGrid::uniform(nx, 0.008, ny, s.length_m);
-    FilmProblem pr;
-    pr.gap_m.resize(g.nodeCount());
-    for (int j = 0; j < g.ny(); ++j)
-      for (int i = 0; i < g.nx(); ++i)
-        pr.gap_m[g.nodeIndex(i, j)] = s.gapAt(g.y_m()[j]);
-    pr.slidingVelocity_mps = {0.0, s.speed_mps};
-    pr.viscosity_Pas = s.viscosity_Pas;
+    FilmProblem pr = s.problem(g);
     const std::string size = std::to_string(nx) + "x" + std::to_string(ny);
     pr.cavitation = CavitationModel::None;
     compareWithMultigrid(g, pr, "pad" + size + ".none");
@@ -162,30 +156,15 @@ TEST(FilmMultigrid, AgreesOnRoughSkirtPatchWithDerivatives) {
 // groove to groove), and a transient rough skirt patch with a partly filled history.
 TEST(FilmMultigrid, AgreesOnMassConservingModel) {
   const test::JournalBearing jb;
-  const double L = 2.0 * jb.radius_m;
-  const int nx = 73;
-  Eigen::VectorXd x(nx);
-  for (int i = 0; i < nx; ++i)
-    x[i] = 2.0 * test::kPi * jb.radius_m * i / (nx - 1);
-  const FilmGrid g = FilmGrid::fromCoordinates(x, FilmGrid::clusteredCoordinates(25, 0.0, L, 0.0));
-  FilmProblem pr = jb.problem(g, CavitationModel::MassConserving);
-  for (int j = 0; j < g.ny(); ++j)
-    for (int i = 0; i < nx; ++i)
-      pr.gap_m[g.nodeIndex(i, j)] =
-          jb.clearance_m * (1.0 + jb.eccentricity * std::cos(x[i] / jb.radius_m - 0.5 * test::kPi));
-  pr.boundary.xMin.pressure_Pa = pr.boundary.xMax.pressure_Pa = 1e5;
+  const FilmGrid g = jb.groovedGrid(73, 25);
+  const FilmProblem pr = jb.groovedProblem(g);
   compareWithMultigrid(g, pr, "groovedJournal.jfo");
 
   const test::SkirtPatch sp;
   const test::GaussianRoughFactors rough(0.8e-6);
   const FilmGrid gs = sp.grid(64, 48);
-  FilmProblem ps = sp.problem(gs, CavitationModel::MassConserving);
+  FilmProblem ps = sp.partlyFilledProblem(gs);
   ps.flowFactors = &rough;
-  ps.timeStep_s = 1e-4;
-  ps.previousFillFraction.setOnes(gs.nodeCount());
-  for (int j = 0; j < gs.ny() / 2; ++j)
-    for (int i = 0; i < gs.nx(); ++i)
-      ps.previousFillFraction[gs.nodeIndex(i, j)] = 0.5;
   compareWithMultigrid(gs, ps, "skirt64x48.jfo");
 }
 
@@ -375,13 +354,7 @@ TEST(FilmMultigrid, FallsBackToFactorisationWhenKrylovFails) {
     x[i] = i < 32 ? i * dy / 300 : 31 * dy / 300 + (i - 31) * 40 * dy;
   const FilmGrid g =
       FilmGrid::fromCoordinates(x, FilmGrid::clusteredCoordinates(40, 0.0, s.length_m, 0.0));
-  FilmProblem pr;
-  pr.gap_m.resize(g.nodeCount());
-  for (int j = 0; j < g.ny(); ++j)
-    for (int i = 0; i < g.nx(); ++i)
-      pr.gap_m[g.nodeIndex(i, j)] = s.gapAt(g.y_m()[j]);
-  pr.slidingVelocity_mps = {0.0, s.speed_mps};
-  pr.viscosity_Pas = s.viscosity_Pas;
+  FilmProblem pr = s.problem(g);
   pr.cavitation = CavitationModel::Reynolds;
   FilmSolverOptions directOptions = test::tightOptions(FilmSolverType::FastActiveSet, 1e-10);
   directOptions.linearSolver = FastLinearSolver::SparseDirect;

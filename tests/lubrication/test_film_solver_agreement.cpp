@@ -43,13 +43,7 @@ Agreement compareSolvers(const FilmGrid& g, const FilmProblem& pr, const std::st
 TEST(FilmSolverAgreement, FinitePadWithoutCavitation) {
   const test::InclinedSlider s;
   const FilmGrid g = FilmGrid::uniform(31, 0.008, 41, s.length_m);
-  FilmProblem pr;
-  pr.gap_m.resize(g.nodeCount());
-  for (int j = 0; j < g.ny(); ++j)
-    for (int i = 0; i < g.nx(); ++i)
-      pr.gap_m[g.nodeIndex(i, j)] = s.gapAt(g.y_m()[j]);
-  pr.slidingVelocity_mps = {0.0, s.speed_mps};
-  pr.viscosity_Pas = s.viscosity_Pas;
+  FilmProblem pr = s.problem(g);
   pr.cavitation = CavitationModel::None;
   compareSolvers(g, pr, "pad.none");
   pr.cavitation = CavitationModel::Reynolds;
@@ -87,31 +81,15 @@ TEST(FilmSolverAgreement, RoughSkirtPatchWithSqueezeAndCavitation) {
 // transient skirt patch carrying a partly filled previous state.
 TEST(FilmSolverAgreement, MassConservingModel) {
   const test::JournalBearing jb;
-  const double L = 2.0 * jb.radius_m;
-  const int nx = 73;
-  Eigen::VectorXd x(nx);
-  for (int i = 0; i < nx; ++i)
-    x[i] = 2.0 * test::kPi * jb.radius_m * i / (nx - 1);
-  const FilmGrid g = FilmGrid::fromCoordinates(x, FilmGrid::clusteredCoordinates(25, 0.0, L, 0.0));
-  FilmProblem pr = jb.problem(g, CavitationModel::MassConserving);
-  for (int j = 0; j < g.ny(); ++j)  // groove at -90 deg from the maximum gap
-    for (int i = 0; i < nx; ++i)
-      pr.gap_m[g.nodeIndex(i, j)] =
-          jb.clearance_m * (1.0 + jb.eccentricity * std::cos(x[i] / jb.radius_m - 0.5 * test::kPi));
-  pr.boundary.xMin.pressure_Pa = pr.boundary.xMax.pressure_Pa = 1e5;
+  const FilmGrid g = jb.groovedGrid(73, 25);
+  const FilmProblem pr = jb.groovedProblem(g);
   compareSolvers(g, pr, "groovedJournal.jfo");
 
   const test::SkirtPatch sp;
   const test::GaussianRoughFactors rough(0.8e-6);
   const FilmGrid gs = sp.grid(40, 30);
-  FilmProblem ps = sp.problem(gs, CavitationModel::MassConserving);
+  FilmProblem ps = sp.partlyFilledProblem(gs);
   ps.flowFactors = &rough;
-  ps.timeStep_s = 1e-4;
-  ps.previousFillFraction.setOnes(gs.nodeCount());
-  // Partly filled history in the diverging lower half (oil enters at the top, U_y < 0).
-  for (int j = 0; j < gs.ny() / 2; ++j)
-    for (int i = 0; i < gs.nx(); ++i)
-      ps.previousFillFraction[gs.nodeIndex(i, j)] = 0.5;
   compareSolvers(gs, ps, "skirt.jfo");
 }
 

@@ -56,7 +56,8 @@ struct InclinedSlider {
            (4.0 * std::log1p(K) - 6.0 * K / (2.0 + K));
   }
 
-  // Periodic strip of 3 nodes across (the solution does not vary across: exactly 1-D).
+  // Periodic strip of 3 nodes across (the solution does not vary across: exactly 1-D). The
+  // problem below fits any grid whose y spans the pad (finite pads too), without cavitation.
   FilmGrid grid(int ny) const { return FilmGrid::uniform(3, width_m, ny, length_m, true); }
   FilmGrid grid(const Eigen::VectorXd& y) const {
     return FilmGrid::fromCoordinates(Eigen::Vector3d(0.0, width_m / 3, 2 * width_m / 3), y, true,
@@ -122,6 +123,25 @@ struct JournalBearing {
     pr.slidingVelocity_mps = {speed_mps, 0.0};
     pr.viscosity_Pas = viscosity_Pas;
     pr.cavitation = model;
+    return pr;
+  }
+  // Fed by an axial groove: x runs once around from groove to groove (open edges at the supply
+  // pressure of 1e5 Pa), the minimum gap 90 deg after the groove; axial length 2R on a grid
+  // clustered towards both ends. Steady mass-conserving model, with rupture and reformation.
+  FilmGrid groovedGrid(int nx, int ny) const {
+    Eigen::VectorXd x(nx);
+    for (int i = 0; i < nx; ++i)
+      x[i] = 2.0 * kPi * radius_m * i / (nx - 1);
+    return FilmGrid::fromCoordinates(x,
+                                     FilmGrid::clusteredCoordinates(ny, 0.0, 2.0 * radius_m, 0.0));
+  }
+  FilmProblem groovedProblem(const FilmGrid& g) const {
+    FilmProblem pr = problem(g, CavitationModel::MassConserving);
+    for (int j = 0; j < g.ny(); ++j)
+      for (int i = 0; i < g.nx(); ++i)
+        pr.gap_m[g.nodeIndex(i, j)] =
+            clearance_m * (1.0 + eccentricity * std::cos(g.x_m()[i] / radius_m - 0.5 * kPi));
+    pr.boundary.xMin.pressure_Pa = pr.boundary.xMax.pressure_Pa = 1e5;
     return pr;
   }
   // Load components (along the line of centres towards the maximum gap, and perpendicular),
@@ -219,6 +239,17 @@ struct SkirtPatch {
     pr.slidingVelocity_mps = {0.0, speed_mps};
     pr.viscosity_Pas = viscosity_Pas;
     pr.cavitation = model;
+    return pr;
+  }
+  // One transient step of the mass-conserving model (dt = 0.1 ms) after a partly filled
+  // history: fill 0.5 in the diverging lower half (oil enters at the top, U_y < 0), 1 above.
+  FilmProblem partlyFilledProblem(const FilmGrid& g) const {
+    FilmProblem pr = problem(g, CavitationModel::MassConserving);
+    pr.timeStep_s = 1e-4;
+    pr.previousFillFraction.setOnes(g.nodeCount());
+    for (int j = 0; j < g.ny() / 2; ++j)
+      for (int i = 0; i < g.nx(); ++i)
+        pr.previousFillFraction[g.nodeIndex(i, j)] = 0.5;
     return pr;
   }
 };

@@ -25,7 +25,9 @@ using namespace pistondyn::lubrication;
 constexpr double kL = 5e-3, kU = 10.0, kEta = 0.01;
 constexpr double kHin = 3.0e-6, kHout = 0.8e-6;  // h/sigma from 6 down to 1.6 (sigma 0.5 um)
 
-double gapAt(double y) { return kHin + (kHout - kHin) * y / kL; }
+double gapAt(double y) {
+  return kHin + (kHout - kHin) * y / kL;
+}
 
 // Load per unit width from the 1-D ODE.
 double referenceLoadPerWidth(const FlowFactorModel& model) {
@@ -46,7 +48,8 @@ double referenceLoadPerWidth(const FlowFactorModel& model) {
   auto integrate = [&](auto&& f, double a, double b) {
     double sum = 0.0;
     const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
-    for (int k = 0; k < 4; ++k) sum += wg[k] * half * (f(mid - half * xg[k]) + f(mid + half * xg[k]));
+    for (int k = 0; k < 4; ++k)
+      sum += wg[k] * half * (f(mid - half * xg[k]) + f(mid + half * xg[k]));
     return sum;
   };
   double intCK = 0.0, intInvK = 0.0;
@@ -75,7 +78,8 @@ double solverLoadPerWidth(const FlowFactorModel& model, int ny) {
   FilmProblem problem;
   problem.gap_m.resize(nx * ny);
   for (int j = 0; j < ny; ++j) {
-    for (int i = 0; i < nx; ++i) problem.gap_m[i + nx * j] = gapAt(kL * j / (ny - 1));
+    for (int i = 0; i < nx; ++i)
+      problem.gap_m[i + nx * j] = gapAt(kL * j / (ny - 1));
   }
   problem.slidingVelocity_mps = Eigen::Vector2d(0.0, kU);
   problem.viscosity_Pas = kEta;
@@ -100,9 +104,10 @@ TEST(FilmWithPatirCheng, InclinedSliderMatchesOneDimensionalQuadrature) {
     const double ref = referenceLoadPerWidth(model);
     const double coarse = solverLoadPerWidth(model, 201), fine = solverLoadPerWidth(model, 401);
     const double order = std::log2(std::abs(coarse - ref) / std::abs(fine - ref));
-    std::printf("  Rq1 %.1f um, Rq2 %.1f um: reference %.6f N/m, solver %.6f (ny 201), %.6f "
-                "(ny 401), rel. error %.2e, order %.2f\n",
-                rq1 * 1e6, rq2 * 1e6, ref, coarse, fine, (fine - ref) / ref, order);
+    std::printf(
+        "  Rq1 %.1f um, Rq2 %.1f um: reference %.6f N/m, solver %.6f (ny 201), %.6f "
+        "(ny 401), rel. error %.2e, order %.2f\n",
+        rq1 * 1e6, rq2 * 1e6, ref, coarse, fine, (fine - ref) / ref, order);
     EXPECT_NEAR(fine, ref, 2e-4 * ref);  // second-order FV error at 401 nodes (order checked)
     EXPECT_NEAR(order, 2.0, 0.2);
   }

@@ -7,7 +7,6 @@
 
 #include <cmath>
 #include <random>
-#include <thread>
 #include <vector>
 
 #include "FilmSystem.h"     // internal (lubrication/src): the discrete balance
@@ -313,32 +312,9 @@ TEST(FilmMultigrid, IterationCountsDoNotGrowWithTheGrid) {
 
 // Independent multigrid solver objects on several threads give exactly the serial answers.
 TEST(FilmMultigrid, IndependentSolversOnThreads) {
-  const test::SkirtPatch sp;
-  const test::GaussianRoughFactors rough(0.8e-6);
-  const FilmGrid g = sp.grid(64, 48);
-  FilmProblem pr = sp.problem(g, CavitationModel::Reynolds);
-  pr.flowFactors = &rough;
-  auto sequence = [&] {
-    FilmSolverOptions o;
-    o.linearSolver = FastLinearSolver::Multigrid;
-    FilmSolver solver(o);
-    FilmResult r;
-    for (int rep = 0; rep < 5; ++rep) {
-      FilmProblem step = pr;
-      step.gapRate_mps *= 1.0 + 0.1 * rep;
-      solver.solve(g, step, rep ? &r.state : nullptr, r);
-    }
-    return r.load_N;
-  };
-  const double serial = sequence();
-  std::vector<double> loads(4, 0.0);
-  std::vector<std::thread> threads;
-  for (int t = 0; t < 4; ++t)
-    threads.emplace_back([&, t] { loads[static_cast<size_t>(t)] = sequence(); });
-  for (std::thread& th : threads)
-    th.join();
-  for (double l : loads)
-    EXPECT_EQ(l, serial);
+  FilmSolverOptions o;
+  o.linearSolver = FastLinearSolver::Multigrid;
+  test::expectSameLoadsOnThreads(o, 64, 48);
 }
 
 // Opposite anisotropies in one grid (cells 300 times longer along y than along x in the left

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <thread>
 
 #include "test_film_support.h"
 
@@ -133,30 +132,7 @@ TEST(FilmResults, SolverObjectFollowsGridAndModelChanges) {
 // Independent solver objects on several threads give exactly the answers of the same call
 // sequence run serially (no shared mutable state; the solver is deterministic).
 TEST(FilmResults, IndependentSolversOnThreads) {
-  const test::SkirtPatch sp;
-  const test::GaussianRoughFactors rough(0.8e-6);  // shared, immutable
-  const FilmGrid g = sp.grid(30, 24);
-  FilmProblem pr = sp.problem(g, CavitationModel::Reynolds);
-  pr.flowFactors = &rough;
-  auto sequence = [&] {
-    FilmSolver solver;
-    FilmResult r;
-    for (int rep = 0; rep < 5; ++rep) {
-      FilmProblem step = pr;
-      step.gapRate_mps *= 1.0 + 0.1 * rep;
-      solver.solve(g, step, rep ? &r.state : nullptr, r);
-    }
-    return r.load_N;
-  };
-  const double serial = sequence();
-  std::vector<double> loads(4, 0.0);
-  std::vector<std::thread> threads;
-  for (int t = 0; t < 4; ++t)
-    threads.emplace_back([&, t] { loads[t] = sequence(); });
-  for (std::thread& th : threads)
-    th.join();
-  for (double l : loads)
-    EXPECT_EQ(l, serial);
+  test::expectSameLoadsOnThreads(FilmSolverOptions{}, 30, 24);
 }
 
 // Reynolds-model partial flooding: dry nodes ahead of the meniscus carry no oil (fill 0), hence

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -259,6 +260,36 @@ struct SkirtPatch {
 inline void reportFigure(const std::string& name, double value) {
   ::testing::Test::RecordProperty(name, std::to_string(value));
   std::printf("[ figure   ] %s = %.6g\n", name.c_str(), value);
+}
+
+// Independent solver objects on several threads give exactly the answers of the same call
+// sequence run serially (no shared mutable state; the solver is deterministic): five warm
+// calls on the rough skirt patch (nx x ny) with a growing squeeze rate, with `options`.
+inline void expectSameLoadsOnThreads(const FilmSolverOptions& options, int nx, int ny) {
+  const SkirtPatch sp;
+  const GaussianRoughFactors rough(0.8e-6);  // shared, immutable
+  const FilmGrid g = sp.grid(nx, ny);
+  FilmProblem pr = sp.problem(g, CavitationModel::Reynolds);
+  pr.flowFactors = &rough;
+  auto sequence = [&] {
+    FilmSolver solver(options);
+    FilmResult r;
+    for (int rep = 0; rep < 5; ++rep) {
+      FilmProblem step = pr;
+      step.gapRate_mps *= 1.0 + 0.1 * rep;
+      solver.solve(g, step, rep ? &r.state : nullptr, r);
+    }
+    return r.load_N;
+  };
+  const double serial = sequence();
+  std::vector<double> loads(4, 0.0);
+  std::vector<std::thread> threads;
+  for (std::size_t t = 0; t < loads.size(); ++t)
+    threads.emplace_back([&, t] { loads[t] = sequence(); });
+  for (std::thread& th : threads)
+    th.join();
+  for (double l : loads)
+    EXPECT_EQ(l, serial);
 }
 
 // Options for a tightly converged solve.

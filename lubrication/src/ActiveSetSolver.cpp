@@ -591,6 +591,7 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
       for (int k = 0; k < s.n; ++k)
         cavResidual_[k] = s.status[k] == kCav ? s.residualAt(k) : 0.0;
     if (!linearSolve(s, step.data(), innerTarget, loose)) {
+      projectOntoConstraints(s);
       rep.residual = s.relativeResidual();
       return rep;
     }
@@ -635,12 +636,7 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
       continue;
     }
     setStable = true;
-    for (int k = 0; k < s.n; ++k) {
-      if (s.status[k] == kFull && s.model != CavitationModel::None)
-        p[k] = std::max(p[k], s.pCav);
-      if (s.status[k] == kCav && s.jfo)
-        th[k] = std::clamp(th[k], 0.0, 1.0);
-    }
+    projectOntoConstraints(s);
     rep.residual = s.relativeResidual();
     if (rep.residual <= tol) {
       rep.converged = true;
@@ -648,8 +644,28 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
     }
     // Same sets but not yet accurate (inexact inner solve, round-off): another Newton step.
   }
+  // Out of iterations right after a set change: the nodes that kept their set may still violate
+  // the bounds by up to the (loose) step accuracy (theta > 1, p < p_cav). The caller gets this
+  // iterate, and so does the Gauss-Seidel fallback, whose Elrod-Adams sweep never resets the
+  // fill fraction of a full node (theta >= 1) and would carry a theta > 1 into its result.
+  projectOntoConstraints(s);
   rep.residual = s.relativeResidual();
   return rep;
+}
+
+void ActiveSetSolver::projectOntoConstraints(FilmSystem& s) const {
+  for (int k = 0; k < s.n; ++k) {
+    if (s.status[k] == kFull) {
+      if (s.jfo)
+        s.theta[k] = 1.0;
+      if (s.model != CavitationModel::None)
+        s.p[k] = std::max(s.p[k], s.pCav);
+    } else if (s.status[k] == kCav) {
+      s.p[k] = s.pCav;
+      if (s.jfo)
+        s.theta[k] = std::clamp(s.theta[k], 0.0, 1.0);
+    }
+  }
 }
 
 void ActiveSetSolver::solveWithCurrentSet(FilmSystem& s, Eigen::MatrixXd& rhs, double relTol) {

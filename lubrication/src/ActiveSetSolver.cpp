@@ -16,6 +16,14 @@ constexpr int kGmresRestart = 30;
 constexpr int kMaxKrylovIterations = 40;  // beyond this: factorise the current Jacobian
 constexpr double kInnerSafety = 0.5;      // inner target = kInnerSafety * tolerance
 constexpr double kLooseFraction = 3e-2;   // inexact solves while the active set moves
+// Mass-conserving model: from this active-set step on, a step that cavitates nodes does not also
+// return cavitated nodes to full film (deferred to a step that cavitates none). The plain
+// primal-dual rule flips both at once and can cycle on the unsymmetric JFO system: on a starved
+// film (supply ~ 0) full nodes feed theta > 1 into the cavitated nodes downstream while losing
+// pressure themselves, and the sets repeat with period 4 forever. Deferring makes the cavitated
+// set grow monotonically between reformations, which breaks such cycles. The first steps keep
+// the plain rule, so solves that settle within them (warm-started calls take 1-3) are unchanged.
+constexpr int kDeferReformationAfter = 6;
 
 }  // namespace
 
@@ -609,16 +617,23 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
     // accuracy of an inexact solve, do not flip a node; they are projected away below.
     const double pEps = 1e-12 * pScale;
     const double rEps = std::max(0.5 * tol * s.residualScale, target);
+    auto ruptures = [&](int k) {
+      const double pTol = std::max(pEps, target > innerTarget ? target / s.diagP[k] : 0.0);
+      return s.model != CavitationModel::None && p[k] < s.pCav - pTol;
+    };
+    bool deferReformation = false;
+    if (s.jfo && it > kDeferReformationAfter)
+      for (int k = 0; k < s.n && !deferReformation; ++k)
+        deferReformation = s.status[k] == kFull && ruptures(k);
     bool changed = false;
     for (int k = 0; k < s.n; ++k) {
       if (s.status[k] == kFull) {
-        const double pTol = std::max(pEps, target > innerTarget ? target / s.diagP[k] : 0.0);
-        if (s.model != CavitationModel::None && p[k] < s.pCav - pTol) {
+        if (ruptures(k)) {
           s.status[k] = kCav;
           p[k] = s.pCav;
           changed = true;
         }
-      } else if (s.status[k] == kCav) {
+      } else if (s.status[k] == kCav && !deferReformation) {
         const double a = s.aOut[k] + s.squeeze[k] + s.capacity[k];
         const double thTol = std::max(1e-10, target > innerTarget && a > 0.0 ? target / a : 0.0);
         const bool toFull =

@@ -218,5 +218,35 @@ TEST(FilmHardInputs, StoppedFastSolveKeepsTheConstraints) {
         }
 }
 
+// Defect found: with no oil on the liner ahead of the skirt (supply film 0 or 1 nm) the
+// mass-conserving active-set iteration cycled through four active sets forever and always fell
+// back to Gauss-Seidel (converged = false without the fallback). Closed form: no oil enters, so
+// in steady state every interior node is cavitated with theta = 0 (theta a_k = upstream inflow
+// = 0 from the dry edge), the pressure is p_cav everywhere and the load vanishes.
+TEST(FilmHardInputs, FullyStarvedMassConservingFilmConvergesWithoutFallback) {
+  const FilmGrid g = FilmGrid::uniform(24, 0.02, 30, 0.025);
+  for (double supply : {0.0, 1e-9})
+    for (double rate : {0.0, -1e-3})
+      for (auto ls : {FastLinearSolver::SparseDirect, FastLinearSolver::Multigrid}) {
+        FilmProblem pr = skirtPatch(g, 5e-6, 10.0, 0.01, CavitationModel::MassConserving, rate);
+        pr.boundary.yMin.supplyFilm_m = supply;
+        FilmSolverOptions o = test::tightOptions(FilmSolverType::FastActiveSet, 1e-10);
+        o.fallbackToReference = false;
+        o.linearSolver = ls;
+        const FilmResult r = FilmSolver(o).solve(g, pr);
+        SCOPED_TRACE("supply " + std::to_string(supply) + " rate " + std::to_string(rate));
+        expectContract(r, pr, o, "starved");
+        ASSERT_TRUE(r.converged);
+        EXPECT_EQ(r.cavitatedNodes, (g.nx() - 2) * (g.ny() - 2));
+        EXPECT_EQ(r.pressure_Pa().abs().maxCoeff(), 0.0);
+        // The oil layer theta h carried downstream is about 2 * supply (FilmEdge): bound it by
+        // twice that.
+        for (int j = 1; j + 1 < g.ny(); ++j)
+          for (int i = 1; i + 1 < g.nx(); ++i)
+            EXPECT_LE(r.fillFraction()[g.nodeIndex(i, j)] * pr.gap_m[g.nodeIndex(i, j)],
+                      4.0 * supply + 1e-18);
+      }
+}
+
 }  // namespace
 }  // namespace pistondyn::lubrication

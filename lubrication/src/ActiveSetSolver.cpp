@@ -16,6 +16,14 @@ constexpr int kGmresRestart = 30;
 constexpr int kMaxKrylovIterations = 40;  // beyond this: factorise the current Jacobian
 constexpr double kInnerSafety = 0.5;      // inner target = kInnerSafety * tolerance
 constexpr double kLooseFraction = 3e-2;   // inexact solves while the active set moves
+// Mass-conserving model: from this active-set step on, a step that cavitates nodes does not also
+// return cavitated nodes to full film (deferred to a step that cavitates none). The plain
+// primal-dual rule flips both at once and can cycle on the unsymmetric JFO system: on a starved
+// film (supply ~ 0) full nodes feed theta > 1 into the cavitated nodes downstream while losing
+// pressure themselves, and the sets repeat with period 4 forever. Deferring makes the cavitated
+// set grow monotonically between reformations, which breaks such cycles. The first steps keep
+// the plain rule, so solves that settle within them (warm-started calls take 1-3) are unchanged.
+constexpr int kDeferReformationAfter = 6;
 
 }  // namespace
 
@@ -581,6 +589,7 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
       for (int k = 0; k < s.n; ++k)
         cavResidual_[k] = s.status[k] == kCav ? s.residualAt(k) : 0.0;
     if (!linearSolve(s, step.data(), innerTarget, loose)) {
+      projectOntoConstraints(s);
       rep.residual = s.relativeResidual();
       return rep;
     }
@@ -598,16 +607,23 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
     // accuracy of an inexact solve, do not flip a node; they are projected away below.
     const double pEps = 1e-12 * pScale;
     const double rEps = std::max(0.5 * tol * s.residualScale, target);
+    auto ruptures = [&](int k) {
+      const double pTol = std::max(pEps, target > innerTarget ? target / s.diagP[k] : 0.0);
+      return s.model != CavitationModel::None && p[k] < s.pCav - pTol;
+    };
+    bool deferReformation = false;
+    if (s.jfo && it > kDeferReformationAfter)
+      for (int k = 0; k < s.n && !deferReformation; ++k)
+        deferReformation = s.status[k] == kFull && ruptures(k);
     bool changed = false;
     for (int k = 0; k < s.n; ++k) {
       if (s.status[k] == kFull) {
-        const double pTol = std::max(pEps, target > innerTarget ? target / s.diagP[k] : 0.0);
-        if (s.model != CavitationModel::None && p[k] < s.pCav - pTol) {
+        if (ruptures(k)) {
           s.status[k] = kCav;
           p[k] = s.pCav;
           changed = true;
         }
-      } else if (s.status[k] == kCav) {
+      } else if (s.status[k] == kCav && !deferReformation) {
         const double a = s.aOut[k] + s.squeeze[k] + s.capacity[k];
         const double thTol = std::max(1e-10, target > innerTarget && a > 0.0 ? target / a : 0.0);
         const bool toFull =
@@ -625,12 +641,7 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
       continue;
     }
     setStable = true;
-    for (int k = 0; k < s.n; ++k) {
-      if (s.status[k] == kFull && s.model != CavitationModel::None)
-        p[k] = std::max(p[k], s.pCav);
-      if (s.status[k] == kCav && s.jfo)
-        th[k] = std::clamp(th[k], 0.0, 1.0);
-    }
+    projectOntoConstraints(s);
     rep.residual = s.relativeResidual();
     if (rep.residual <= tol) {
       rep.converged = true;
@@ -638,8 +649,28 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
     }
     // Same sets but not yet accurate (inexact inner solve, round-off): another Newton step.
   }
+  // Out of iterations right after a set change: the nodes that kept their set may still violate
+  // the bounds by up to the (loose) step accuracy (theta > 1, p < p_cav). The caller gets this
+  // iterate, and so does the Gauss-Seidel fallback, whose Elrod-Adams sweep never resets the
+  // fill fraction of a full node (theta >= 1) and would carry a theta > 1 into its result.
+  projectOntoConstraints(s);
   rep.residual = s.relativeResidual();
   return rep;
+}
+
+void ActiveSetSolver::projectOntoConstraints(FilmSystem& s) const {
+  for (int k = 0; k < s.n; ++k) {
+    if (s.status[k] == kFull) {
+      if (s.jfo)
+        s.theta[k] = 1.0;
+      if (s.model != CavitationModel::None)
+        s.p[k] = std::max(s.p[k], s.pCav);
+    } else if (s.status[k] == kCav) {
+      s.p[k] = s.pCav;
+      if (s.jfo)
+        s.theta[k] = std::clamp(s.theta[k], 0.0, 1.0);
+    }
+  }
 }
 
 void ActiveSetSolver::solveWithCurrentSet(FilmSystem& s, Eigen::MatrixXd& rhs, double relTol) {

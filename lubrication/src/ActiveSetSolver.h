@@ -81,6 +81,9 @@ class ActiveSetSolver {
   // With looseTarget > absTarget the solve may stop at looseTarget (stoppedLoose_) when the step
   // would change the active set (PCG), or always does (GMRES).
   bool linearSolve(const FilmSystem& sys, double* rhs, double absTarget, double looseTarget);
+  // Puts the iterate on the constraints of its sets: p >= p_cav and (JFO) theta = 1 on full
+  // nodes, p = p_cav and 0 <= theta <= 1 on cavitated ones.
+  void projectOntoConstraints(FilmSystem& s) const;
   bool wouldChangeSet(const FilmSystem& sys, const Eigen::VectorXd& dz, double accuracy) const;
   void applyPreconditioner(const FilmSystem& sys, double* v);  // v <- M^-1 v, zero off-set
   void multiply(const FilmSystem& sys, const double* x, double* y) const;  // y = J x

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "ActiveSetSolver.h"
 #include "FilmPostprocess.h"
@@ -94,6 +95,23 @@ void validate(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm
   checkEdge(pr.boundary.yMax, "yMax", grid.nx());
   checkEdge(pr.boundary.xMin, "xMin", grid.ny());
   checkEdge(pr.boundary.xMax, "xMax", grid.ny());
+  if (pr.cavitation == CavitationModel::MassConserving) {
+    // Oil at an open edge below p_cav would have to be cavitated and full at once: where a
+    // cavitated zone reaches such an edge no mass-conserving solution exists, and the solvers
+    // would only report non-convergence after their whole iteration budget.
+    const bool xOpen = !grid.isPeriodicX();
+    const std::pair<const FilmEdge*, const char*> edges[] = {{&pr.boundary.yMin, "yMin"},
+                                                             {&pr.boundary.yMax, "yMax"},
+                                                             {&pr.boundary.xMin, "xMin"},
+                                                             {&pr.boundary.xMax, "xMax"}};
+    for (int e = 0; e < (xOpen ? 4 : 2); ++e)
+      if (edges[e].first->pressure_Pa < pr.cavitationPressure_Pa)
+        fail(std::string("problem.boundary.") + edges[e].second +
+             ".pressure_Pa = " + num(edges[e].first->pressure_Pa) +
+             " Pa is below problem.cavitationPressure_Pa = " + num(pr.cavitationPressure_Pa) +
+             " Pa; the mass-conserving model needs open edges at or above the cavitation "
+             "pressure (use the same gauge or absolute datum for both)");
+  }
   if (std::isnan(pr.timeStep_s) || !(pr.timeStep_s > 0.0))
     fail("problem.timeStep_s = " + num(pr.timeStep_s) + " s must be > 0 (+inf: steady)");
   checkSize(pr.previousFillFraction.size(), n, "problem.previousFillFraction", true);

@@ -43,6 +43,25 @@ TEST(FilmBadInput, NonPositiveOrNaNGap) {
   }
 }
 
+// Mass-conserving model with an open edge below p_cav (gauge edges against an absolute p_cav):
+// rejected up front instead of running the solvers' whole budget into non-convergence. The
+// Reynolds model is well posed there (the edge is simply a fixed pressure) and is accepted.
+TEST(FilmBadInput, MassConservingEdgeBelowCavitationPressure) {
+  BadInputCase s;
+  s.problem.cavitation = CavitationModel::MassConserving;
+  s.problem.cavitationPressure_Pa = 1e5;
+  s.problem.boundary.yMin.pressure_Pa = s.problem.boundary.yMax.pressure_Pa = 1e5;
+  s.problem.boundary.xMin.pressure_Pa = s.problem.boundary.xMax.pressure_Pa = 1e5;
+  s.problem.boundary.xMax.pressure_Pa = 0.0;
+  expectInvalid([&] { s.solve(); },
+                {"problem.boundary.xMax.pressure_Pa", "cavitationPressure_Pa", "below"});
+  s.problem.boundary.xMax.pressure_Pa = 1e5;
+  EXPECT_NO_THROW(s.solve());
+  s.problem.cavitation = CavitationModel::Reynolds;
+  s.problem.boundary.yMin.pressure_Pa = 0.0;
+  EXPECT_NO_THROW(s.solve());
+}
+
 TEST(FilmBadInput, GridSmallerThanThreeByThree) {
   expectInvalid([] { FilmGrid::uniform(2, 0.01, 5, 0.01); }, {"nx = 2", ">= 3"});
   expectInvalid([] { FilmGrid::uniform(5, 0.01, 2, 0.01); }, {"ny = 2", ">= 3"});

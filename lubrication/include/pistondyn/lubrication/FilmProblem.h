@@ -55,7 +55,9 @@ enum class FilmSolverType {
 
 // One open edge of the film region. Ignored for x edges of an x-periodic grid.
 struct FilmEdge {
-  double pressure_Pa = 0.0;  // pressure on the edge, [Pa], default 0 (gauge ambient)
+  // Pressure on the edge, [Pa], default 0 (gauge ambient). MassConserving: must be >=
+  // cavitationPressure_Pa (rejected otherwise: no mass-conserving solution would exist).
+  double pressure_Pa = 0.0;
   // Oil layer available on surface 1 ahead of this edge, [m], default +inf (fully flooded).
   // Only used where surface 1 slides into the region through this edge (U . inward normal > 0).
   // The layer moves with surface 1, so the supply is U_n * supplyFilm_m per unit edge length; a

@@ -228,10 +228,7 @@ void ActiveSetSolver::applyPreconditioner(const FilmSystem& s, double* v) {
       v[k] *= precondScale_[k];
     }
   }
-  if (!s.jfo)
-    chol_.solve(v, v, 1);
-  else
-    klu_.solve(v, 1);
+  solveWithFactor(s, v, 1);
   for (int k = 0; k < s.n; ++k) {
     if (!eqRow_[k])
       v[k] = 0.0;
@@ -301,10 +298,7 @@ bool ActiveSetSolver::linearSolveMultigrid(const FilmSystem& s, double* b, doubl
                                            double looseTarget) {
   Eigen::Map<Eigen::VectorXd> bv(b, s.n);
   if (factorExact_) {  // a fallback factorisation of this very Jacobian exists
-    if (!s.jfo)
-      chol_.solve(b, b, 1);
-    else
-      klu_.solve(b, 1);
+    solveWithFactor(s, b, 1);
     return true;
   }
   bool fresh = false;
@@ -314,25 +308,8 @@ bool ActiveSetSolver::linearSolveMultigrid(const FilmSystem& s, double* b, doubl
   }
   rhs_ = bv;
   for (int attempt = 0; attempt < 2 && mgBuilt_; ++attempt) {
-    const int before = krylovIterations_;
-    bool ok;
-    if (s.jfo) {
-      // As on the factorised path: solve to the loose target, the active-set loop decides.
-      ok = gmres(s, b, looseTarget, kMaxKrylovIterations);
-      stoppedLoose_ = ok && looseTarget > target;
-    } else {
-      ok = pcg(s, b, target, looseTarget, kMaxKrylovIterations);
-    }
-    if (ok) {
-      const int k = krylovIterations_ - before;
-      if (k > 0) {
-        costSinceFactor_ += k;
-        ++solvesSinceFactor_;
-        if (solvesSinceFactor_ > 1 && k > costSinceFactor_ / solvesSinceFactor_)
-          refactorNext_ = true;
-      }
+    if (krylovSolve(s, b, target, looseTarget))
       return true;
-    }
     bv = rhs_;
     stoppedLoose_ = false;
     if (fresh)
@@ -346,13 +323,43 @@ bool ActiveSetSolver::linearSolveMultigrid(const FilmSystem& s, double* b, doubl
     fillValues(s);
   // Fresh pivots: the Krylov failure says this operator differs from any earlier one.
   const bool ok = factorValues(s, true);
-  if (ok) {
-    if (!s.jfo)
-      chol_.solve(b, b, 1);
-    else
-      klu_.solve(b, 1);
-  }
+  if (ok)
+    solveWithFactor(s, b, 1);
   return ok;
+}
+
+void ActiveSetSolver::solveWithFactor(const FilmSystem& s, double* b, int columns) {
+  if (!s.jfo)
+    chol_.solve(b, b, columns);
+  else
+    klu_.solve(b, columns);
+}
+
+bool ActiveSetSolver::krylovSolve(const FilmSystem& s, double* b, double target,
+                                  double looseTarget) {
+  const int before = krylovIterations_;
+  bool ok;
+  if (s.jfo) {
+    // GMRES forms its iterate only at the end of a cycle: solve to the loose target and let the
+    // active-set loop decide (a second, tight solve follows when the set did not move).
+    ok = gmres(s, b, looseTarget, kMaxKrylovIterations);
+    stoppedLoose_ = ok && looseTarget > target;
+  } else {
+    ok = pcg(s, b, target, looseTarget, kMaxKrylovIterations);
+  }
+  if (!ok)
+    return false;
+  // Refresh the preconditioner when this solve cost more than the average per solve since it
+  // was built (after a factorisation the count starts at 1 for its own direct solve; after a
+  // multigrid build at 0, so the first solve is never judged against itself).
+  const int k = krylovIterations_ - before;
+  if (k > 0) {
+    costSinceFactor_ += k;
+    ++solvesSinceFactor_;
+    if (solvesSinceFactor_ > 1 && k > costSinceFactor_ / solvesSinceFactor_)
+      refactorNext_ = true;
+  }
+  return true;
 }
 
 bool ActiveSetSolver::wouldChangeSet(const FilmSystem& s, const Eigen::VectorXd& dz,
@@ -504,44 +511,19 @@ bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target,
       return false;
   }
   if (factorExact_) {
-    if (!s.jfo)
-      chol_.solve(b, b, 1);
-    else
-      klu_.solve(b, 1);
+    solveWithFactor(s, b, 1);
     return true;
   }
   rhs_ = Eigen::Map<Eigen::VectorXd>(b, s.n);  // keep the right-hand side for a fallback
-  const int before = krylovIterations_;
-  bool ok;
-  if (s.jfo) {
-    // GMRES forms its iterate only at the end of a cycle: solve to the loose target and let the
-    // active-set loop decide (a second, tight solve follows when the set did not move).
-    ok = gmres(s, b, looseTarget, kMaxKrylovIterations);
-    stoppedLoose_ = looseTarget > target;
-  } else {
-    ok = pcg(s, b, target, looseTarget, kMaxKrylovIterations);
-  }
-  if (ok) {
-    // Refresh when this solve cost more than the average per solve since the factorisation.
-    const int k = krylovIterations_ - before;
-    if (k > 0) {
-      costSinceFactor_ += k;
-      ++solvesSinceFactor_;
-      if (k > costSinceFactor_ / solvesSinceFactor_)
-        refactorNext_ = true;
-    }
+  if (krylovSolve(s, b, target, looseTarget))
     return true;
-  }
   // The lagged factorisation is too far from the current Jacobian: factorise it.
   refactorNext_ = false;
   stoppedLoose_ = false;
   if (!factorCurrent(s))
     return false;
   Eigen::Map<Eigen::VectorXd>(b, s.n) = rhs_;
-  if (!s.jfo)
-    chol_.solve(b, b, 1);
-  else
-    klu_.solve(b, 1);
+  solveWithFactor(s, b, 1);
   return true;
 }
 
@@ -681,10 +663,7 @@ void ActiveSetSolver::solveWithCurrentSet(FilmSystem& s, Eigen::MatrixXd& rhs, d
     if (!eqRow_[k])
       rhs.row(k).setZero();
   if (factorExact_) {
-    if (!s.jfo)
-      chol_.solve(rhs.data(), rhs.data(), static_cast<int>(rhs.cols()));
-    else
-      klu_.solve(rhs.data(), static_cast<int>(rhs.cols()));
+    solveWithFactor(s, rhs.data(), static_cast<int>(rhs.cols()));
     return;
   }
   for (Eigen::Index c = 0; c < rhs.cols(); ++c) {

@@ -84,6 +84,11 @@ class ActiveSetSolver {
   // Puts the iterate on the constraints of its sets: p >= p_cav and (JFO) theta = 1 on full
   // nodes, p = p_cav and 0 <= theta <= 1 on cavitated ones.
   void projectOntoConstraints(FilmSystem& s) const;
+  // Direct solve with the current factorisation (CHOLMOD, or KLU for JFO), in place.
+  void solveWithFactor(const FilmSystem& sys, double* rhs, int columns);
+  // One Krylov solve with the current preconditioner; books its cost for the refresh rule.
+  // False when it did not reach its target within kMaxKrylovIterations.
+  bool krylovSolve(const FilmSystem& sys, double* rhs, double absTarget, double looseTarget);
   bool wouldChangeSet(const FilmSystem& sys, const Eigen::VectorXd& dz, double accuracy) const;
   void applyPreconditioner(const FilmSystem& sys, double* v);  // v <- M^-1 v, zero off-set
   void multiply(const FilmSystem& sys, const double* x, double* y) const;  // y = J x

@@ -6,7 +6,6 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <utility>
 
 #include "ActiveSetSolver.h"
 #include "FilmPostprocess.h"
@@ -44,10 +43,16 @@ void checkFinite(const Eigen::ArrayXd& a, const char* name, const char* unit) {
            " must be finite");
 }
 
-void checkEdge(const FilmEdge& e, const char* name, Eigen::Index along) {
+// minPressure_Pa: the lowest admissible edge pressure (-inf where any finite one will do).
+void checkEdge(const FilmEdge& e, const char* name, Eigen::Index along, double minPressure_Pa) {
   if (!std::isfinite(e.pressure_Pa))
     fail(std::string("problem.boundary.") + name + ".pressure_Pa = " + num(e.pressure_Pa) +
          " Pa must be finite");
+  if (e.pressure_Pa < minPressure_Pa)
+    fail(std::string("problem.boundary.") + name + ".pressure_Pa = " + num(e.pressure_Pa) +
+         " Pa is below problem.cavitationPressure_Pa = " + num(minPressure_Pa) +
+         " Pa; the mass-conserving model needs open edges at or above the cavitation "
+         "pressure (use the same gauge or absolute datum for both)");
   if (std::isnan(e.supplyFilm_m) || e.supplyFilm_m < 0.0)
     fail(std::string("problem.boundary.") + name + ".supplyFilm_m = " + num(e.supplyFilm_m) +
          " m must be >= 0 (or +inf for a flooded edge)");
@@ -91,27 +96,18 @@ void validate(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm
   }
   if (!std::isfinite(pr.cavitationPressure_Pa))
     fail("problem.cavitationPressure_Pa must be finite");
-  checkEdge(pr.boundary.yMin, "yMin", grid.nx());
-  checkEdge(pr.boundary.yMax, "yMax", grid.nx());
-  checkEdge(pr.boundary.xMin, "xMin", grid.ny());
-  checkEdge(pr.boundary.xMax, "xMax", grid.ny());
-  if (pr.cavitation == CavitationModel::MassConserving) {
-    // Oil at an open edge below p_cav would have to be cavitated and full at once: where a
-    // cavitated zone reaches such an edge no mass-conserving solution exists, and the solvers
-    // would only report non-convergence after their whole iteration budget.
-    const bool xOpen = !grid.isPeriodicX();
-    const std::pair<const FilmEdge*, const char*> edges[] = {{&pr.boundary.yMin, "yMin"},
-                                                             {&pr.boundary.yMax, "yMax"},
-                                                             {&pr.boundary.xMin, "xMin"},
-                                                             {&pr.boundary.xMax, "xMax"}};
-    for (int e = 0; e < (xOpen ? 4 : 2); ++e)
-      if (edges[e].first->pressure_Pa < pr.cavitationPressure_Pa)
-        fail(std::string("problem.boundary.") + edges[e].second +
-             ".pressure_Pa = " + num(edges[e].first->pressure_Pa) +
-             " Pa is below problem.cavitationPressure_Pa = " + num(pr.cavitationPressure_Pa) +
-             " Pa; the mass-conserving model needs open edges at or above the cavitation "
-             "pressure (use the same gauge or absolute datum for both)");
-  }
+  // Mass-conserving model: oil at an open edge below p_cav would have to be cavitated and full
+  // at once; where a cavitated zone reaches such an edge no mass-conserving solution exists, and
+  // the solvers would only report non-convergence after their whole iteration budget. The x
+  // edges of an x-periodic grid are not used.
+  constexpr double kAny = -std::numeric_limits<double>::infinity();
+  const double minEdge =
+      pr.cavitation == CavitationModel::MassConserving ? pr.cavitationPressure_Pa : kAny;
+  const double minEdgeX = grid.isPeriodicX() ? kAny : minEdge;
+  checkEdge(pr.boundary.yMin, "yMin", grid.nx(), minEdge);
+  checkEdge(pr.boundary.yMax, "yMax", grid.nx(), minEdge);
+  checkEdge(pr.boundary.xMin, "xMin", grid.ny(), minEdgeX);
+  checkEdge(pr.boundary.xMax, "xMax", grid.ny(), minEdgeX);
   if (std::isnan(pr.timeStep_s) || !(pr.timeStep_s > 0.0))
     fail("problem.timeStep_s = " + num(pr.timeStep_s) + " s must be > 0 (+inf: steady)");
   checkSize(pr.previousFillFraction.size(), n, "problem.previousFillFraction", true);

@@ -138,6 +138,7 @@ TEST(FilmMassConserving, OilBalanceClosesSteadyAndTransient) {
     test::reportFigure("jfo.transientBalanceDefect." + tag, bt.defect());
     EXPECT_GT(std::abs(bt.storage), 1e-3 * bt.in);  // the storage term really matters here
     EXPECT_LT(std::abs(bt.defect()), 1e-8);
+    EXPECT_NEAR(rt.storageRate_m3ps, bt.storage, 1e-12 * bt.in);  // the diagnostics again
     expectFillFractionInUnitInterval(rt);
   }
 }

@@ -57,8 +57,7 @@ void compareWithMultigrid(const FilmGrid& g, const FilmProblem& pr, const std::s
     EXPECT_LT(fill, 1e-6) << name;
     // Oil balance of the multigrid answer (the diagnostics are checked against an independent
     // balance in test_film_mass_conserving.cpp): 1e-8 of the inflow, the acceptance.
-    const double defect = (c.boundaryInflow_m3ps - c.boundaryOutflow_m3ps - c.storageRate_m3ps) /
-                          c.boundaryInflow_m3ps;
+    const double defect = test::oilBalanceDefect_m3ps(c) / c.boundaryInflow_m3ps;
     test::reportFigure("multigrid." + name + ".balanceDefect", defect);
     EXPECT_LT(std::abs(defect), 1e-8) << name;
     EXPECT_GE(c.fillFraction().minCoeff(), 0.0) << name;

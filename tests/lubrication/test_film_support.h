@@ -292,6 +292,13 @@ inline void expectSameLoadsOnThreads(const FilmSolverOptions& options, int nx, i
     EXPECT_EQ(l, serial);
 }
 
+// Oil balance of the unknown nodes from a result's flux diagnostics, [m^3/s]: inflow - outflow -
+// storage rate, which the mass-conserving model drives to zero. The diagnostics themselves are
+// checked against a balance recomputed from p and theta in test_film_mass_conserving.cpp.
+inline double oilBalanceDefect_m3ps(const FilmResult& r) {
+  return r.boundaryInflow_m3ps - r.boundaryOutflow_m3ps - r.storageRate_m3ps;
+}
+
 // Options for a tightly converged solve.
 inline FilmSolverOptions tightOptions(FilmSolverType type, double tolerance) {
   FilmSolverOptions o;

@@ -59,9 +59,10 @@ CrankTrain::CrankTrain(SimTK::SimbodyMatterSubsystem& matter, SimTK::GeneralForc
     : engine_((validate(engine), engine)), kinematics_(engine.geometry), matter_(matter) {
   const CrankTrainGeometry& g = engine_.geometry;
   const double r = g.crankRadius_m, L = g.conrodLength_m;
-  crankFrameRotation_rad_ = kinematics_.crankRotationAtTdc_rad();
-  const Rotation crankFrame(crankFrameRotation_rad_, SimTK::ZAxis);
-  const Rotation uprightFrame(-crankFrameRotation_rad_, SimTK::ZAxis);
+  // phi_TDC is baked into the crank's inboard frame: crank angle 0 is TDC.
+  const double phiTdc = kinematics_.crankRotationAtTdc_rad();
+  const Rotation crankFrame(phiTdc, SimTK::ZAxis);
+  const Rotation uprightFrame(-phiTdc, SimTK::ZAxis);
 
   const double flywheel =
       engine_.drive.mode == CrankDrive::Mode::Free ? engine_.drive.flywheelInertia_kgm2 : 0.0;
@@ -146,7 +147,8 @@ void CrankTrain::setPose(SimTK::State& s, double theta, double uLat, double tilt
                          double uTran) const {
   const CrankTrainGeometry& g = engine_.geometry;
   const double r = g.crankRadius_m, L = g.conrodLength_m;
-  const double psiCrank = theta + crankFrameRotation_rad_;
+  const double phiTdc = kinematics_.crankRotationAtTdc_rad();
+  const double psiCrank = theta + phiTdc;
   const double cx = -r * std::sin(psiCrank);
   const double a = -tilt;  // piston rotation about +z
   const double px = g.crankOffset_m + uLat + g.pinOffset_m * std::cos(a);
@@ -165,12 +167,11 @@ void CrankTrain::setPose(SimTK::State& s, double theta, double uLat, double tilt
   conrod_.setOneQ(s, SimTK::MobilizerQIndex(0), psiRod - psiCrank);
   // Pin rotation: a floating pin does not spin (pin angle = rod angle), a pin fixed in
   // the piston turns with it.
-  const double psiPin =
-      engine_.pinJoint == PinJoint::FixedInPiston ? a + crankFrameRotation_rad_ : psiRod;
-  const SimTK::MobilizedBody& slider = engine_.pinJoint == PinJoint::FixedInRod ? piston_ : pin_;
+  const double psiPin = engine_.pinJoint == PinJoint::FixedInPiston ? a + phiTdc : psiRod;
+  const SimTK::MobilizedBody& slider = getSmallEndSlider();
   switch (engine_.pinJoint) {
     case PinJoint::FixedInRod:
-      piston_.setOneQ(s, SimTK::MobilizerQIndex(0), a - psiPin + crankFrameRotation_rad_);
+      piston_.setOneQ(s, SimTK::MobilizerQIndex(0), a - psiPin + phiTdc);
       break;
     case PinJoint::FixedInPiston:
       pin_.setOneQ(s, SimTK::MobilizerQIndex(0), psiPin - psiRod);
@@ -178,7 +179,7 @@ void CrankTrain::setPose(SimTK::State& s, double theta, double uLat, double tilt
     case PinJoint::Floating:
     default:
       pin_.setOneQ(s, SimTK::MobilizerQIndex(0), 0.0);
-      piston_.setOneQ(s, SimTK::MobilizerQIndex(0), a - psiPin + crankFrameRotation_rad_);
+      piston_.setOneQ(s, SimTK::MobilizerQIndex(0), a - psiPin + phiTdc);
       break;
   }
   slider.setOneQ(s, SimTK::MobilizerQIndex(1), uTran);
@@ -188,13 +189,15 @@ void CrankTrain::setRates(SimTK::State& s, double omega, double uLatDot, double 
                           double uTranDot) const {
   // Uses the pose already in the state's q's (call setPose first); no realization.
   const CrankTrainGeometry& g = engine_.geometry;
-  const double psiCrank = getCrankAngle_rad(s) + crankFrameRotation_rad_;
+  const double phiTdc = kinematics_.crankRotationAtTdc_rad();
+  const double psiCrank = getCrankAngle_rad(s) + phiTdc;
   const double cy = g.crankRadius_m * std::cos(psiCrank);
   const double psiRod = psiCrank + conrod_.getOneQ(s, SimTK::MobilizerQIndex(0));
   const double relY = g.conrodLength_m * std::cos(psiRod);  // (P - C)_y > 0
   // Piston rotation about +z (= -tilt) from the chain of joint angles.
-  double pistonAngle = psiRod - crankFrameRotation_rad_;
-  if (engine_.pinJoint != PinJoint::FixedInRod) pistonAngle += pin_.getOneQ(s, SimTK::MobilizerQIndex(0));
+  double pistonAngle = psiRod - phiTdc;
+  if (engine_.pinJoint != PinJoint::FixedInRod)
+    pistonAngle += pin_.getOneQ(s, SimTK::MobilizerQIndex(0));
   if (engine_.pinJoint != PinJoint::FixedInPiston) {
     pistonAngle += piston_.getOneQ(s, SimTK::MobilizerQIndex(0));
   }
@@ -207,7 +210,7 @@ void CrankTrain::setRates(SimTK::State& s, double omega, double uLatDot, double 
 
   crank_.setOneU(s, SimTK::MobilizerUIndex(0), omega);
   conrod_.setOneU(s, SimTK::MobilizerUIndex(0), omegaRod - omega);
-  const SimTK::MobilizedBody& slider = engine_.pinJoint == PinJoint::FixedInRod ? piston_ : pin_;
+  const SimTK::MobilizedBody& slider = getSmallEndSlider();
   switch (engine_.pinJoint) {
     case PinJoint::FixedInRod:
       piston_.setOneU(s, SimTK::MobilizerUIndex(0), aDot - omegaRod);
@@ -236,9 +239,8 @@ double CrankTrain::getDriveTorque_Nm(const SimTK::State& s) const {
 
 double CrankTrain::getConrodAxialForce_N(const SimTK::State& s) const {
   const SimTK::UnitVec3 rodAxis = conrod_.getBodyRotation(s).y();
-  const SimTK::SpatialVec onPin = engine_.pinJoint == PinJoint::FixedInRod
-                                      ? piston_.findMobilizerReactionOnBodyAtOriginInGround(s)
-                                      : pin_.findMobilizerReactionOnBodyAtOriginInGround(s);
+  const SimTK::SpatialVec onPin =
+      getSmallEndSlider().findMobilizerReactionOnBodyAtOriginInGround(s);
   return SimTK::dot(onPin[1], rodAxis);
 }
 

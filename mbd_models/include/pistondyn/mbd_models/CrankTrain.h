@@ -93,11 +93,16 @@ class CrankTrain {
   double getCrankTorqueFromConrod_Nm(const SimTK::State& s) const;
 
  private:
+  // The Cylinder mobilizer at the small end (rod -> pin, or pin -> piston when the pin is fixed
+  // in the rod): its second coordinate is the tertiary translation, its reaction loads the rod.
+  const SimTK::MobilizedBody& getSmallEndSlider() const {
+    return engine_.pinJoint == PinJoint::FixedInRod ? piston_ : pin_;
+  }
+
   EngineDescription engine_;
   SliderCrank kinematics_;
   const SimTK::SimbodyMatterSubsystem& matter_;
   SimTK::MobilizedBody crank_, conrod_, pin_, piston_;
-  double crankFrameRotation_rad_ = 0.0;  // phi_TDC baked into the crank's inboard frame
 };
 
 }  // namespace pistondyn::mbd

@@ -7,6 +7,15 @@
 
 namespace pistondyn::plugin {
 
+bool SimulationSettings::outputStepDividesCycle() const {
+  const double perCycle = outputStepsPerCycle();
+  return std::abs(perCycle - std::round(perCycle)) <= 1e-9 * perCycle;
+}
+
+long SimulationSettings::stepsPerCycle() const {
+  return std::lround(outputStepsPerCycle());
+}
+
 void validate(const SimulationSettings& s) {
   auto fail = [](const std::string& m) { throw std::invalid_argument("SimulationSettings: " + m); };
   if (!std::isfinite(s.startAngle_deg) || std::abs(s.startAngle_deg) > 720.0) {
@@ -20,11 +29,10 @@ void validate(const SimulationSettings& s) {
     fail("outputStep_deg must be between " + std::to_string(SimulationSettings::kMinOutputStep_deg) +
          " and 720 deg");
   }
-  const double perCycle = 720.0 / s.outputStep_deg;
-  if (std::abs(perCycle - std::round(perCycle)) > 1e-9 * perCycle) {
+  if (!s.outputStepDividesCycle()) {
     fail("outputStep_deg must divide 720 deg into a whole number of steps");
   }
-  if (perCycle * s.cycles > SimulationSettings::kMaxRows) {
+  if (s.outputStepsPerCycle() * s.cycles > SimulationSettings::kMaxRows) {
     fail("cycles x 720 / outputStep_deg exceeds " +
          std::to_string(static_cast<long>(SimulationSettings::kMaxRows)) + " output rows");
   }
@@ -162,8 +170,7 @@ ResultTable CycleSimulation::run(const Progress& progress, const RowObserver& ob
   for (auto& c : model_.getElementReportColumns())
     table.columns.push_back(std::move(c));
 
-  const long stepsPerCycle = std::lround(720.0 / settings_.outputStep_deg);
-  const long nRows = stepsPerCycle * settings_.cycles + 1;
+  const long nRows = settings_.stepsPerCycle() * settings_.cycles + 1;
   const double dTheta = settings_.outputStep_deg * M_PI / 180.0;
   table.rows.reserve(static_cast<std::size_t>(nRows));
   long stepsBeforeRestarts = 0;

@@ -98,10 +98,9 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
   s.outputStep_deg = d.getNumberInRange("simulation.output_step_deg", false,
                                         Settings::kMinOutputStep_deg, 720.0, "deg")
                          .value_or(1.0);
-  const double stepsPerCycle = 720.0 / s.outputStep_deg;
-  if (std::abs(stepsPerCycle - std::round(stepsPerCycle)) > 1e-9 * stepsPerCycle) {
+  if (!s.outputStepDividesCycle()) {
     d.addProblem("simulation.output_step_deg", "must divide 720 deg into a whole number of steps");
-  } else if (stepsPerCycle * s.cycles > Settings::kMaxRows) {
+  } else if (s.outputStepsPerCycle() * s.cycles > Settings::kMaxRows) {
     d.addProblem("simulation.output_step_deg",
                  "with simulation.cycles this makes more than " +
                      std::to_string(static_cast<long>(Settings::kMaxRows)) +

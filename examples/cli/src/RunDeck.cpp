@@ -52,8 +52,7 @@ void writeBody(JsonWriter& j, const std::string& key, const mbd::PlanarMassPrope
 
 }  // namespace
 
-CycleSummary summarize(const EngineDeck& deck, const plugin::ResultTable& table,
-                       const plugin::SimulationSettings& settings) {
+CycleSummary summarize(const EngineDeck& deck, const plugin::ResultTable& table) {
   CycleSummary s;
   const mbd::SliderCrank kin(deck.engine.geometry);
   const mbd::CylinderVolume vol(kin, deck.engine.piston.bore_m,
@@ -67,8 +66,7 @@ CycleSummary summarize(const EngineDeck& deck, const plugin::ResultTable& table,
 
   // Last cycle: the final 720/step rows (the first row of the cycle repeats as the
   // last one, so it is left out of the means).
-  const std::size_t perCycle =
-      static_cast<std::size_t>(std::lround(720.0 / settings.outputStep_deg));
+  const auto perCycle = static_cast<std::size_t>(deck.simulation.stepsPerCycle());
   const std::size_t end = table.rows.size() - 1, begin = end - perCycle;
   const std::size_t ia = table.columnIndex("crank_angle_deg");
   const std::size_t is = table.columnIndex("side_force_N");
@@ -197,7 +195,7 @@ RunOutcome runDeck(const EngineDeck& deck, const std::string& outDir,
   RunOutcome o;
   o.table = sim.run(progress);
   o.stats = sim.getStats();
-  o.summary = summarize(deck, o.table, deck.simulation);
+  o.summary = summarize(deck, o.table);
   if (!outDir.empty()) {
     std::ostringstream csv;
     writeCsv(csv, o.table,

@@ -35,6 +35,13 @@ struct SimulationSettings {
   Integrator integrator = Integrator::RungeKuttaMerson;
   double accuracy = 1e-9;              // integrator relative accuracy [-]
   double constraintTolerance = 1e-11;  // constraint projection tolerance [-]
+
+  // 720 / outputStep_deg, not rounded [-].
+  double outputStepsPerCycle() const { return 720.0 / outputStep_deg; }
+  // True when outputStep_deg divides 720 deg into a whole number of steps (to 1e-9).
+  bool outputStepDividesCycle() const;
+  // Output steps per 720 deg cycle, rounded (for settings that pass validate()).
+  long stepsPerCycle() const;
 };
 
 // Throws std::invalid_argument naming the member when settings are unusable.

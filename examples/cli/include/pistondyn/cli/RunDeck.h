@@ -22,8 +22,8 @@ struct CycleSummary {
   double indicatedPower_W = 0.0;  // mean crank torque x mean speed
 };
 
-CycleSummary summarize(const EngineDeck& deck, const plugin::ResultTable& table,
-                       const plugin::SimulationSettings& settings);
+// Figures of the last simulated cycle of `table`, a run of `deck` (its simulation settings).
+CycleSummary summarize(const EngineDeck& deck, const plugin::ResultTable& table);
 
 struct RunOutcome {
   plugin::ResultTable table;

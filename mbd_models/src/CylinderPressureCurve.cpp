@@ -8,8 +8,8 @@
 namespace pistondyn::mbd {
 namespace {
 
-[[noreturn]] void fail(const std::string& what) {
-  throw std::invalid_argument("CylinderPressureCurve: " + what);
+[[noreturn]] void fail(const std::string& what, std::optional<std::size_t> row = std::nullopt) {
+  throw PressureTableError("CylinderPressureCurve: " + what, row);
 }
 
 std::string rowText(std::size_t i, double angle, double p) {
@@ -76,13 +76,14 @@ CylinderPressureCurve::CylinderPressureCurve(std::vector<double> angle, std::vec
   }
   for (std::size_t i = 0; i < angle.size(); ++i) {
     if (!std::isfinite(angle[i]))
-      fail(rowText(i, angle[i], p[i]) + ": angle is not finite");
+      fail(rowText(i, angle[i], p[i]) + ": angle is not finite", i);
     if (!std::isfinite(p[i]) || p[i] <= 0.0) {
-      fail(rowText(i, angle[i], p[i]) + ": absolute pressure must be positive and finite");
+      fail(rowText(i, angle[i], p[i]) + ": absolute pressure must be positive and finite", i);
     }
     if (i > 0 && !(angle[i] > angle[i - 1])) {
       fail(rowText(i, angle[i], p[i]) + ": crank angle is not increasing (previous row has " +
-           std::to_string(angle[i - 1]) + " deg)");
+               std::to_string(angle[i - 1]) + " deg)",
+           i);
     }
   }
   if (angle.size() < 4)
@@ -167,7 +168,7 @@ void CylinderPressureCurve::requirePositiveBetweenKnots() const {
               << std::fmod(0.5 * (lo + hi), kCycle_deg) << " deg, between row " << i << " ("
               << angle_[i] << " deg) and the next; the table is too coarse around a steep "
               << "change - give more points there";
-          fail(msg.str());
+          fail(msg.str(), i);
         }
       }
       prevX = x;
@@ -177,7 +178,8 @@ void CylinderPressureCurve::requirePositiveBetweenKnots() const {
 }
 
 CylinderPressureCurve::Segment CylinderPressureCurve::locate(double crankAngle_deg) const {
-  if (!std::isfinite(crankAngle_deg)) fail("crank angle is not finite");
+  if (!std::isfinite(crankAngle_deg))  // a bad query, not a bad table
+    throw std::invalid_argument("CylinderPressureCurve: crank angle is not finite");
   const double w = wrap(crankAngle_deg);
   const std::size_t n = angle_.size();
   Segment g;

@@ -267,12 +267,12 @@ TEST(ResultWriters, AtomicWriteLeavesTheFolderAsItWasOnFailure) {
                      dir.string(), {{"cycle.csv", "new cycle"}, {"summary.json", "new summary"}}),
                  std::runtime_error);
     std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename());
+    for (const auto& e : fs::directory_iterator(dir))
+      names.push_back(e.path().filename());
     EXPECT_EQ(names.size(), 2u) << blocked;
     EXPECT_TRUE(fs::is_directory(dir / blocked));
     const std::string other = std::string(blocked) == "cycle.csv" ? "summary.json" : "cycle.csv";
-    EXPECT_EQ(readFile(dir / other),
-              other == "cycle.csv" ? "old cycle" : "old summary") << blocked;
+    EXPECT_EQ(readFile(dir / other), other == "cycle.csv" ? "old cycle" : "old summary") << blocked;
   }
   // And the success path replaces old results.
   fs::remove_all(dir);
@@ -299,11 +299,18 @@ TEST_F(ScratchDeck, PressureTableWithBomAndUnderflowIsReadNanIsNot) {
 // absolute pressure between knots: rejected, naming the interval.
 TEST_F(ScratchDeck, PressureTableWhoseSplineUndershootsIsRejected) {
   std::string t = "crank_angle_deg,pressure_bar\n";
-  for (int a = 0; a < 720; a += 30) t += std::to_string(a) + "," + (a == 360 ? "60" : "1") + "\n";
+  for (int a = 0; a < 720; a += 30)
+    t += std::to_string(a) + "," + (a == 360 ? "60" : "1") + "\n";
   writeTable(t);
   const std::string m = rejection();
   EXPECT_NE(m.find("the interpolated pressure falls to"), std::string::npos) << m;
   EXPECT_NE(m.find("too coarse"), std::string::npos) << m;
+  // The curve's 0-based row is reported as the file's line (header on line 1: row r is on
+  // line r + 2).
+  const std::size_t at = m.find("between row ");
+  ASSERT_NE(at, std::string::npos) << m;
+  const int row = std::stoi(m.substr(at + 12));
+  EXPECT_NE(m.find(":" + std::to_string(row + 2) + ": "), std::string::npos) << m;
 }
 
 // Inputs that used to crash, hang or be silently misread.

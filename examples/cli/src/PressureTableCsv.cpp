@@ -101,17 +101,11 @@ mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath) {
     throw DeckError(filePath + ": empty table (no header line)");
   try {
     return mbd::CylinderPressureCurve(std::move(angle), std::move(pressure));
-  } catch (const std::invalid_argument& e) {
-    // The curve reports 0-based rows; translate "row i" into this file's line.
-    std::string msg = e.what();
-    const auto pos = msg.find("row ");
-    if (pos != std::string::npos) {
-      const std::size_t row = std::strtoul(msg.c_str() + pos + 4, nullptr, 10);
-      if (row < lineOfRow.size()) {
-        throw DeckError(filePath + ":" + std::to_string(lineOfRow[row]) + ": " + msg);
-      }
-    }
-    throw DeckError(filePath + ": " + msg);
+  } catch (const mbd::PressureTableError& e) {
+    // The curve counts 0-based data rows; name this file's line instead.
+    if (e.row() && *e.row() < lineOfRow.size())
+      throw DeckError(filePath + ":" + std::to_string(lineOfRow[*e.row()]) + ": " + e.what());
+    throw DeckError(filePath + ": " + e.what());
   }
 }
 

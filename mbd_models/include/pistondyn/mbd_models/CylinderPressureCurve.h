@@ -4,11 +4,28 @@
 // sees is smooth). Angles are crank angles from firing TDC in degrees; pressures are
 // absolute, in Pa. Reading the table from a file is the caller's business (edge code).
 
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "pistondyn/mbd_models/SliderCrank.h"
 
 namespace pistondyn::mbd {
+
+// An unusable pressure table. row() is the 0-based index of the row the problem is at (also
+// named in the message), when there is one, so that a reader can translate it into its own
+// line numbers.
+class PressureTableError : public std::invalid_argument {
+ public:
+  PressureTableError(const std::string& what, std::optional<std::size_t> row)
+      : std::invalid_argument(what), row_(row) {}
+  std::optional<std::size_t> row() const { return row_; }
+
+ private:
+  std::optional<std::size_t> row_;
+};
 
 class CylinderPressureCurve {
  public:
@@ -23,7 +40,7 @@ class CylinderPressureCurve {
   //   pressure_Pa     absolute pressure at each angle, > 0 and finite; the spline must
   //                   stay > 0 between the knots too (a coarse table around a sharp
   //                   peak can make it undershoot: rejected, naming the interval).
-  // Throws std::invalid_argument naming the offending row index (0-based) otherwise.
+  // Throws PressureTableError (a std::invalid_argument) naming the offending row otherwise.
   CylinderPressureCurve(std::vector<double> crankAngle_deg, std::vector<double> pressure_Pa);
 
   // Pressure [Pa] at any crank angle (wrapped into the cycle).

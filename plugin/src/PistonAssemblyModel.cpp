@@ -1,5 +1,7 @@
 #include "pistondyn/plugin/PistonAssemblyModel.h"
 
+#include <algorithm>
+#include <cstddef>
 #include <stdexcept>
 
 namespace pistondyn::plugin {
@@ -46,22 +48,19 @@ void PistonAssemblyModel::requireNotBuilt(const char* what) const {
   }
 }
 
-std::vector<std::unique_ptr<ForceElement>>::iterator PistonAssemblyModel::find(
-    const std::string& name) {
-  for (auto it = elements_.begin(); it != elements_.end(); ++it) {
-    if ((*it)->getName() == name)
-      return it;
-  }
-  return elements_.end();
+std::size_t PistonAssemblyModel::indexOf(const std::string& name) const {
+  const auto it = std::find_if(elements_.begin(), elements_.end(),
+                               [&](const auto& e) { return e->getName() == name; });
+  return static_cast<std::size_t>(it - elements_.begin());
 }
 
-std::vector<std::unique_ptr<ForceElement>>::const_iterator PistonAssemblyModel::find(
-    const std::string& name) const {
-  for (auto it = elements_.begin(); it != elements_.end(); ++it) {
-    if ((*it)->getName() == name)
-      return it;
+std::size_t PistonAssemblyModel::requireIndexOf(const std::string& name, const char* caller) const {
+  const std::size_t k = indexOf(name);
+  if (k == elements_.size()) {
+    throw std::invalid_argument(std::string("PistonAssemblyModel::") + caller +
+                                ": no element called '" + name + "'");
   }
-  return elements_.end();
+  return k;
 }
 
 void PistonAssemblyModel::addElement(std::unique_ptr<ForceElement> element) {
@@ -83,40 +82,27 @@ void PistonAssemblyModel::replaceElement(const std::string& name,
   requireNotBuilt("replaceElement");
   if (!element)
     throw std::invalid_argument("PistonAssemblyModel::replaceElement: null element");
-  auto it = find(name);
-  if (it == elements_.end()) {
-    throw std::invalid_argument("PistonAssemblyModel::replaceElement: no element called '" + name +
-                                "'");
-  }
+  const std::size_t k = requireIndexOf(name, "replaceElement");
   const std::string newName = element->getName();
   if (newName != name && hasElement(newName)) {
     throw std::invalid_argument("PistonAssemblyModel::replaceElement: an element called '" +
                                 newName + "' is already registered");
   }
-  *it = std::move(element);
+  elements_[k] = std::move(element);
 }
 
 void PistonAssemblyModel::removeElement(const std::string& name) {
   requireNotBuilt("removeElement");
-  auto it = find(name);
-  if (it == elements_.end()) {
-    throw std::invalid_argument("PistonAssemblyModel::removeElement: no element called '" + name +
-                                "'");
-  }
-  elements_.erase(it);
+  const std::size_t k = requireIndexOf(name, "removeElement");
+  elements_.erase(elements_.begin() + static_cast<std::ptrdiff_t>(k));
 }
 
 bool PistonAssemblyModel::hasElement(const std::string& name) const {
-  return find(name) != elements_.end();
+  return indexOf(name) != elements_.size();
 }
 
 const ForceElement& PistonAssemblyModel::getElement(const std::string& name) const {
-  auto it = find(name);
-  if (it == elements_.end()) {
-    throw std::invalid_argument("PistonAssemblyModel::getElement: no element called '" + name +
-                                "'");
-  }
-  return **it;
+  return *elements_[requireIndexOf(name, "getElement")];
 }
 
 std::vector<std::string> PistonAssemblyModel::getElementNames() const {
@@ -130,7 +116,9 @@ void PistonAssemblyModel::buildSystem() {
   if (built_)
     return;
   const ModelBuildContext context{*matter_, *forces_, *crankTrain_};
+  reportColumnCounts_.clear();
   for (auto& e : elements_) {
+    reportColumnCounts_.push_back(e->getReportColumns().size());
     e->addToModel(context);
     // Force::Custom takes ownership of the adapter (Simbody's API); the adapter only
     // refers to the element.
@@ -156,11 +144,13 @@ std::vector<std::string> PistonAssemblyModel::getElementReportColumns() const {
 
 void PistonAssemblyModel::calcElementReports(const SimTK::State& s,
                                              std::vector<double>& values) const {
-  for (const auto& e : elements_) {
+  // Elements are frozen once the system is built (a State exists only then), so their column
+  // counts were recorded by buildSystem(): no column names are built per output row.
+  for (std::size_t k = 0; k < elements_.size(); ++k) {
     const std::size_t before = values.size();
-    e->calcReport(s, values);
-    if (values.size() - before != e->getReportColumns().size()) {
-      throw std::logic_error("force element '" + e->getName() +
+    elements_[k]->calcReport(s, values);
+    if (values.size() - before != reportColumnCounts_[k]) {
+      throw std::logic_error("force element '" + elements_[k]->getName() +
                              "' reported a different number of values than columns");
     }
   }

@@ -65,8 +65,10 @@ class PistonAssemblyModel {
 
  private:
   void requireNotBuilt(const char* what) const;
-  std::vector<std::unique_ptr<ForceElement>>::iterator find(const std::string& name);
-  std::vector<std::unique_ptr<ForceElement>>::const_iterator find(const std::string& name) const;
+  // Index of the element called `name`; elements_.size() when there is none.
+  std::size_t indexOf(const std::string& name) const;
+  // The same, but throws std::invalid_argument naming `caller` when there is none.
+  std::size_t requireIndexOf(const std::string& name, const char* caller) const;
 
   // Declared before the system: members are destroyed in reverse order, so the
   // Simbody system (whose Force::Custom adapters point at these elements) goes first.
@@ -75,6 +77,7 @@ class PistonAssemblyModel {
   std::unique_ptr<SimTK::SimbodyMatterSubsystem> matter_;
   std::unique_ptr<SimTK::GeneralForceSubsystem> forces_;
   std::unique_ptr<mbd::CrankTrain> crankTrain_;
+  std::vector<std::size_t> reportColumnCounts_;  // per element, recorded by buildSystem()
   bool built_ = false;
 };
 

@@ -135,6 +135,22 @@ std::string deckPath(const Engine& e) {
   return std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/" + e.deck + "/engine.yaml";
 }
 
+// The passenger-car example deck (the thesis' parameter-study operating point), with --set
+// overrides.
+EngineDeck loadGasolineDeck(const std::vector<std::string>& overrides) {
+  return pistondyn::cli::loadEngineDeck(
+      std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm/engine.yaml",
+      overrides);
+}
+
+// Swept volume of a deck's engine [m^3].
+double displacement_m3(const EngineDeck& deck) {
+  const pistondyn::mbd::SliderCrank kin(deck.engine.geometry);
+  return pistondyn::mbd::CylinderVolume(kin, deck.engine.piston.bore_m,
+                                        deck.engine.geometry.compressionRatio)
+      .displacement_m3();
+}
+
 // "Not near zero": above 1e-3 of the cycle's largest magnitude.
 double maxAbs(const std::vector<double>& v) {
   double m = 0;
@@ -223,8 +239,8 @@ TEST_P(ClosedFormEngines, KinematicsLoadsAndPowerOver720Degrees) {
       // Identically zero by symmetry (e.g. the guide moment without pin offset and
       // with a centred COM): compare with the moment scale peak gas force x bore.
       const double momentScale = maxAbs(gas) * deck.engine.piston.bore_m;
-      std::printf("  %-16s reference is zero; max |value| %.3e (scale %.3e)\n", what,
-                  maxAbs(got), momentScale);
+      std::printf("  %-16s reference is zero; max |value| %.3e (scale %.3e)\n", what, maxAbs(got),
+                  momentScale);
       EXPECT_LE(maxAbs(got), 1e-9 * momentScale) << what;
       return;
     }
@@ -263,28 +279,25 @@ TEST_P(ClosedFormEngines, KinematicsLoadsAndPowerOver720Degrees) {
 // angle, an off-axis piston COM, and the other two pin joints.
 INSTANTIATE_TEST_SUITE_P(
     ExampleEngines, ClosedFormEngines,
-    ::testing::Values(
-        Engine{"briggs_stratton_500", "briggs_stratton_500", {}},
-        Engine{"gasoline", "gasoline_1400_2000rpm", {}},
-        Engine{"gasoline_offsets_start_minus90",
-               "gasoline_1400_2000rpm",
-               {"geometry.crank_offset_mm=3", "geometry.pin_offset_mm=-1",
-                "piston.com_towards_thrust_mm=1", "simulation.start_angle_deg=-90"}},
-        Engine{"gasoline_pin_fixed_in_rod",
-               "gasoline_1400_2000rpm",
-               {"pin.joint=fixed_in_rod", "geometry.crank_offset_mm=-3"}},
-        Engine{"gasoline_pin_fixed_in_piston",
-               "gasoline_1400_2000rpm",
-               {"pin.joint=fixed_in_piston", "piston.com_towards_thrust_mm=-0.5"}}),
+    ::testing::Values(Engine{"briggs_stratton_500", "briggs_stratton_500", {}},
+                      Engine{"gasoline", "gasoline_1400_2000rpm", {}},
+                      Engine{"gasoline_offsets_start_minus90",
+                             "gasoline_1400_2000rpm",
+                             {"geometry.crank_offset_mm=3", "geometry.pin_offset_mm=-1",
+                              "piston.com_towards_thrust_mm=1", "simulation.start_angle_deg=-90"}},
+                      Engine{"gasoline_pin_fixed_in_rod",
+                             "gasoline_1400_2000rpm",
+                             {"pin.joint=fixed_in_rod", "geometry.crank_offset_mm=-3"}},
+                      Engine{"gasoline_pin_fixed_in_piston",
+                             "gasoline_1400_2000rpm",
+                             {"pin.joint=fixed_in_piston", "piston.com_towards_thrust_mm=-0.5"}}),
     [](const auto& paramInfo) { return std::string(paramInfo.param.name); });
 
 // Over a whole cycle at constant speed the rod's mean torque on the crank delivers the
 // indicated work: mean torque = imep * V_d / (4 pi) (inertia and gravity torques
 // average to zero over a period). imep from the pressure table, torque from Simbody.
 TEST(CycleEnergy, MeanCrankTorqueEqualsIndicatedWork) {
-  const EngineDeck deck = pistondyn::cli::loadEngineDeck(
-      std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm/engine.yaml",
-      {});
+  const EngineDeck deck = loadGasolineDeck({});
   auto model = pistondyn::cli::buildModel(deck);
   pistondyn::plugin::SimulationSettings settings = deck.simulation;
   settings.outputStep_deg = 0.5;
@@ -294,20 +307,15 @@ TEST(CycleEnergy, MeanCrankTorqueEqualsIndicatedWork) {
   for (std::size_t i = 0; i + 1 < torque.size(); ++i)
     mean += torque[i];
   mean /= static_cast<double>(torque.size() - 1);
-  const pistondyn::mbd::SliderCrank kin(deck.engine.geometry);
-  const pistondyn::mbd::CylinderVolume vol(kin, deck.engine.piston.bore_m,
-                                           deck.engine.geometry.compressionRatio);
   const double expected =
-      pistondyn::cli::calcDeckImep_Pa(deck) * vol.displacement_m3() / (4 * M_PI);
+      pistondyn::cli::calcDeckImep_Pa(deck) * displacement_m3(deck) / (4 * M_PI);
   std::printf("  mean crank torque %.9f N m, imep * Vd / 4pi %.9f N m\n", mean, expected);
   EXPECT_NEAR(mean, expected, 1e-6 * std::abs(expected));
 }
 
 // The deck's pressure table reproduces the thesis' imep (598 kPa) within 0.5 %.
 TEST(CycleEnergy, FiredTableImepMatchesThesisValue) {
-  const EngineDeck deck = pistondyn::cli::loadEngineDeck(
-      std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm/engine.yaml",
-      {});
+  const EngineDeck deck = loadGasolineDeck({});
   ASSERT_TRUE(deck.statedImep_Pa.has_value());
   EXPECT_DOUBLE_EQ(*deck.statedImep_Pa, 598e3);
   EXPECT_NEAR(pistondyn::cli::calcDeckImep_Pa(deck), 598e3, 0.005 * 598e3);
@@ -323,8 +331,7 @@ namespace {
 //   KE(720) - KE(0) = imep * V_d - T_load * 4 pi
 // (gas work along the ideal-guide path is the closed integral of p dV).
 TEST(FreeCrank, CycleEnergyBalanceWithGasAndLoad) {
-  const EngineDeck deck = pistondyn::cli::loadEngineDeck(
-      std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm/engine.yaml",
+  const EngineDeck deck = loadGasolineDeck(
       {"drive.mode=free", "drive.flywheel_inertia_kg_m2=0.08", "drive.load_torque_Nm=10",
        "simulation.output_step_deg=2", "simulation.accuracy=1e-11"});
   auto model = pistondyn::cli::buildModel(deck);
@@ -335,10 +342,7 @@ TEST(FreeCrank, CycleEnergyBalanceWithGasAndLoad) {
   };
   pistondyn::plugin::CycleSimulation sim(*model, deck.simulation);
   const auto table = sim.run({}, observer);
-  const pistondyn::mbd::SliderCrank kin(deck.engine.geometry);
-  const pistondyn::mbd::CylinderVolume vol(kin, deck.engine.piston.bore_m,
-                                           deck.engine.geometry.compressionRatio);
-  const double gasWork = pistondyn::cli::calcDeckImep_Pa(deck) * vol.displacement_m3();
+  const double gasWork = pistondyn::cli::calcDeckImep_Pa(deck) * displacement_m3(deck);
   const double loadWork = 10.0 * 4.0 * M_PI;
   // The potential energy also holds the gravity of the reciprocating parts; it returns
   // with the configuration, so the total mechanical energy change is the same.

@@ -40,9 +40,11 @@ if(SuiteSparse_FOUND)
     endif()
   endforeach()
   # Link order: the solvers need the ordering and config libraries behind them.
-  set_property(TARGET SuiteSparse::cholmod APPEND PROPERTY INTERFACE_LINK_LIBRARIES
-    SuiteSparse::amd SuiteSparse::colamd SuiteSparse::camd SuiteSparse::ccolamd
-    SuiteSparse::suitesparseconfig)
+  if(TARGET SuiteSparse::cholmod)
+    set_property(TARGET SuiteSparse::cholmod APPEND PROPERTY INTERFACE_LINK_LIBRARIES
+      SuiteSparse::amd SuiteSparse::colamd SuiteSparse::camd SuiteSparse::ccolamd
+      SuiteSparse::suitesparseconfig)
+  endif()
   if(TARGET SuiteSparse::umfpack)
     set_property(TARGET SuiteSparse::umfpack APPEND PROPERTY INTERFACE_LINK_LIBRARIES
       SuiteSparse::cholmod SuiteSparse::amd SuiteSparse::suitesparseconfig)

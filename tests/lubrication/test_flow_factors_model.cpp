@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "ExpectInvalidArgument.h"
 #include "pistondyn/lubrication/FlowFactorModel.h"
 #include "pistondyn/lubrication/PatirChengExpectedGap.h"
 #include "pistondyn/lubrication/PatirChengFactors.h"
@@ -170,12 +171,7 @@ TEST(PatirChengFlowFactors, AsperityContactGivesFiniteFactors) {
 
 TEST(PatirChengFlowFactors, BadInputThrowsNamingTheArgument) {
   const auto expectThrowMentioning = [](const PatirChengParameters& p, const std::string& word) {
-    try {
-      PatirChengFlowFactors model(p);
-      ADD_FAILURE() << "no exception for " << word;
-    } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find(word), std::string::npos) << e.what();
-    }
+    pistondyn::test::expectInvalidArgument([&] { PatirChengFlowFactors model(p); }, word);
   };
   PatirChengParameters p = skirtAndLiner();
   p.rq1_m = -1e-7;
@@ -198,12 +194,8 @@ TEST(PatirChengFlowFactors, BadInputThrowsNamingTheArgument) {
 
   const PatirChengFlowFactors model(skirtAndLiner());
   for (const double h : {0.0, -1e-6, std::nan(""), HUGE_VAL}) {
-    try {
-      model.calcFactors(h);
-      ADD_FAILURE() << "no exception for h = " << h;
-    } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("h_m"), std::string::npos) << e.what();
-    }
+    SCOPED_TRACE(h);
+    pistondyn::test::expectInvalidArgument([&] { model.calcFactors(h); }, {"h_m"});
   }
 }
 
@@ -219,12 +211,9 @@ TEST(PatirChengFlowFactors, PhiFCutoffIsPassedThrough) {
     EXPECT_EQ(model.calcFactors(H * sigma).phiF, pc::calcShearStressFactorF(H, 0.01)) << H;
   for (const double bad : {0.0, 0.5, std::nan("")}) {
     p.phiFCutoff = bad;
-    try {
-      const PatirChengFlowFactors m(p);
-      ADD_FAILURE() << "no throw for phiFCutoff = " << bad;
-    } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("phiFCutoff"), std::string::npos) << e.what();
-    }
+    SCOPED_TRACE(bad);
+    pistondyn::test::expectInvalidArgument([&] { const PatirChengFlowFactors m(p); },
+                                           {"phiFCutoff"});
   }
 }
 

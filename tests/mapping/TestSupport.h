@@ -112,15 +112,4 @@ void forEachClippedCell(const Eigen::VectorXd& x, const Eigen::VectorXd& y, doub
     }
 }
 
-// Expects std::invalid_argument whose message contains `needle` (the argument's name).
-template <class F>
-void expectInvalid(F&& f, const std::string& needle) {
-  try {
-    f();
-    ADD_FAILURE() << "no exception, expected one naming '" << needle << "'";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
-  }
-}
-
 }  // namespace pistondyn::mapping::test

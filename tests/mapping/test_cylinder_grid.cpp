@@ -7,12 +7,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "ExpectInvalidArgument.h"
 #include "TestSupport.h"
 #include "pistondyn/mapping/CylinderGrid.h"
 #include "pistondyn/mapping/HatOverlap1D.h"
 
 namespace pm = pistondyn::mapping;
-using pm::test::expectInvalid;
+using pistondyn::test::expectInvalidArgument;
 using pm::test::kPi;
 
 namespace {
@@ -29,42 +30,43 @@ Eigen::VectorXd vec(std::initializer_list<double> v) {
 
 TEST(CylinderGrid, RejectsBadNodesNamingTheArgument) {
   const Eigen::VectorXd y = vec({0.0, 0.01, 0.02});
-  expectInvalid(
+  expectInvalidArgument(
       [&] {
         pm::CylinderGrid::sector(0.03, vec({0.0, 0.2, 0.1, 0.3}), y);
       },
       "phi_rad[2]");
-  expectInvalid(
+  expectInvalidArgument(
       [&] {
         pm::CylinderGrid::sector(0.03, vec({0.0, 0.1}), vec({0.0, 0.0}));
       },
       "y_m[1]");
-  expectInvalid([&] { pm::CylinderGrid::sector(0.03, vec({0.0}), y); }, "phi_rad has 1 nodes");
-  expectInvalid(
+  expectInvalidArgument([&] { pm::CylinderGrid::sector(0.03, vec({0.0}), y); },
+                        "phi_rad has 1 nodes");
+  expectInvalidArgument(
       [&] {
         pm::CylinderGrid::sector(0.03, vec({0.0, 0.1}), vec({0.01}));
       },
       "y_m has 1 nodes");
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  expectInvalid(
+  expectInvalidArgument(
       [&] {
         pm::CylinderGrid::sector(0.03, vec({0.0, 0.1}), vec({0.0, nan}));
       },
       "y_m[1]");
-  expectInvalid([&] { pm::CylinderGrid::sector(0.0, vec({0.0, 0.1}), y); }, "radius_m");
-  expectInvalid([&] { pm::CylinderGrid::sector(nan, vec({0.0, 0.1}), y); }, "radius_m");
+  expectInvalidArgument([&] { pm::CylinderGrid::sector(0.0, vec({0.0, 0.1}), y); }, "radius_m");
+  expectInvalidArgument([&] { pm::CylinderGrid::sector(nan, vec({0.0, 0.1}), y); }, "radius_m");
   // A sector of 2*pi or more repeats a node: that is a full circle.
-  expectInvalid(
+  expectInvalidArgument(
       [&] {
         pm::CylinderGrid::sector(0.03, vec({0.0, kPi, 2 * kPi}), y);
       },
       "phi_rad spans");
-  expectInvalid(
+  expectInvalidArgument(
       [&] {
         pm::CylinderGrid::fullCircle(0.03, vec({0.0, kPi, 2 * kPi}), y);
       },
       "phi_rad spans");
-  expectInvalid(
+  expectInvalidArgument(
       [&] {
         pm::CylinderGrid::fullCircle(0.03, vec({0.0, kPi}), y);
       },
@@ -78,21 +80,21 @@ TEST(CylinderGrid, RejectsBadNodesNamingTheArgument) {
     Eigen::VectorXd ring(13);
     ring.head(12) = pm::fullCircleNodes_rad(12);
     ring[12] = 2 * kPi - 1e-13;
-    expectInvalid([&] { pm::CylinderGrid::fullCircle(0.03, ring, y); }, "closing cell");
+    expectInvalidArgument([&] { pm::CylinderGrid::fullCircle(0.03, ring, y); }, "closing cell");
     pm::HatOverlap1D out;
-    expectInvalid(
+    expectInvalidArgument(
         [&] {
           pm::calcHatOverlap1D(pm::fullCircleNodes_rad(8), true, ring, true, 2 * kPi, 0.0,
                                pm::LoadRule::Consistent, false, out);
         },
         "targetNodes[0]");
     ring[12] = 2 * kPi - 5.0e-3;  // 0.95 % of the smallest other cell
-    expectInvalid([&] { pm::CylinderGrid::fullCircle(0.03, ring, y); }, "closing cell");
+    expectInvalidArgument([&] { pm::CylinderGrid::fullCircle(0.03, ring, y); }, "closing cell");
     ring[12] = 2 * kPi - 5.5e-3;  // 1.05 %: a (strongly) graded ring, accepted
     EXPECT_NO_THROW(pm::CylinderGrid::fullCircle(0.03, ring, y));
   }
-  expectInvalid([] { pm::uniformNodes(0.0, 1.0, 1); }, "count");
-  expectInvalid([] { pm::fullCircleNodes_rad(2); }, "count");
+  expectInvalidArgument([] { pm::uniformNodes(0.0, 1.0, 1); }, "count");
+  expectInvalidArgument([] { pm::fullCircleNodes_rad(2); }, "count");
 }
 
 // Independent reference: the grid's area in closed form, R * (angle range) * length;

@@ -17,11 +17,12 @@
 #include <random>
 #include <vector>
 
+#include "ExpectInvalidArgument.h"
 #include "TestSupport.h"
 #include "pistondyn/mapping/ForceMap.h"
 
 namespace pm = pistondyn::mapping;
-using pm::test::expectInvalid;
+using pistondyn::test::expectInvalidArgument;
 using pm::test::kPi;
 
 namespace {
@@ -517,12 +518,15 @@ TEST(TensorForceMap, WorkspaceOfAnotherMapIsRejected) {
   Eigen::VectorXd f(tgtA.nodeCount()), f2(tgtA.nodeCount());
   pm::TensorForceMap::Workspace wsA;
   mapA.setAxialOffset(0.0, wsA);
-  expectInvalid([&] { (void)mapB.apply(wsA, p, f); }, "ws holds the axial factor of another map");
-  expectInvalid([&] { (void)mapB.accumulate(wsA, p, f); }, "TensorForceMap::accumulate: ws");
-  expectInvalid([&] { (void)mapB.applyTraction(wsA, p, p, p, f, f, f); }, "applyTraction: ws");
+  expectInvalidArgument([&] { (void)mapB.apply(wsA, p, f); },
+                        "ws holds the axial factor of another map");
+  expectInvalidArgument([&] { (void)mapB.accumulate(wsA, p, f); },
+                        "TensorForceMap::accumulate: ws");
+  expectInvalidArgument([&] { (void)mapB.applyTraction(wsA, p, p, p, f, f, f); },
+                        "applyTraction: ws");
   // Other load rule, same nodes: another A_y, rejected too.
   const pm::TensorForceMap halfCell(src, tgtA, 0.0, pm::LoadRule::HalfCell);
-  expectInvalid([&] { (void)halfCell.apply(wsA, p, f); }, "ws");
+  expectInvalidArgument([&] { (void)halfCell.apply(wsA, p, f); }, "ws");
   // Same axial nodes and rule: shared legitimately.
   pm::TensorForceMap::Workspace ws2;
   mapA2.setAxialOffset(0.0, ws2);
@@ -538,26 +542,27 @@ TEST(ForceMap, RejectsBadInputNamingTheArgument) {
   const auto tgt =
       pm::CylinderGrid::sector(r, pm::uniformNodes(-0.5, 0.5, 3), pm::uniformNodes(0.0, 0.05, 3));
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  expectInvalid([&] { pm::ForceMap(src, tgt, {nan, 0.0}); }, "sourceInTarget.phi_rad");
-  expectInvalid([&] { pm::ForceMap(src, tgt, {0.0, nan}); }, "sourceInTarget.y_m");
+  expectInvalidArgument([&] { pm::ForceMap(src, tgt, {nan, 0.0}); }, "sourceInTarget.phi_rad");
+  expectInvalidArgument([&] { pm::ForceMap(src, tgt, {0.0, nan}); }, "sourceInTarget.y_m");
   const pm::ForceMap map(src, tgt, {});
   Eigen::VectorXd p = Eigen::VectorXd::Ones(src.nodeCount()), f(tgt.nodeCount());
   p[7] = nan;
-  expectInvalid([&] { (void)map.apply(p, f); }, "sourcePressure_Pa[7]");
-  expectInvalid([&] { (void)map.apply(Eigen::VectorXd::Ones(3), f); }, "sourcePressure_Pa has 3");
+  expectInvalidArgument([&] { (void)map.apply(p, f); }, "sourcePressure_Pa[7]");
+  expectInvalidArgument([&] { (void)map.apply(Eigen::VectorXd::Ones(3), f); },
+                        "sourcePressure_Pa has 3");
   Eigen::VectorXd wrong(4);
-  expectInvalid([&] { (void)map.apply(Eigen::VectorXd::Ones(src.nodeCount()), wrong); },
-                "targetForce_N has 4");
+  expectInvalidArgument([&] { (void)map.apply(Eigen::VectorXd::Ones(src.nodeCount()), wrong); },
+                        "targetForce_N has 4");
 
   const pm::TensorForceMap tensor(src, tgt, 0.0);
   pm::TensorForceMap::Workspace ws;
-  expectInvalid([&] { (void)tensor.apply(ws, Eigen::VectorXd::Ones(src.nodeCount()), f); },
-                "setAxialOffset");
-  expectInvalid([&] { tensor.setAxialOffset(nan, ws); }, "yOffset_m");
-  expectInvalid([&] { pm::TensorForceMap(src, tgt, nan); }, "phiOffset_rad");
+  expectInvalidArgument([&] { (void)tensor.apply(ws, Eigen::VectorXd::Ones(src.nodeCount()), f); },
+                        "setAxialOffset");
+  expectInvalidArgument([&] { tensor.setAxialOffset(nan, ws); }, "yOffset_m");
+  expectInvalidArgument([&] { pm::TensorForceMap(src, tgt, nan); }, "phiOffset_rad");
   // Absurd angles throw (reducing 1e300 modulo 2*pi keeps no digit).
-  expectInvalid([&] { pm::TensorForceMap(src, tgt, 1e300); }, "phiOffset_rad");
-  expectInvalid([&] { pm::ForceMap(src, tgt, {-1e300, 0.0}); }, "sourceInTarget.phi_rad");
+  expectInvalidArgument([&] { pm::TensorForceMap(src, tgt, 1e300); }, "phiOffset_rad");
+  expectInvalidArgument([&] { pm::ForceMap(src, tgt, {-1e300, 0.0}); }, "sourceInTarget.phi_rad");
 }
 
 // The 1-D building block checks its own arguments (it is public).
@@ -565,25 +570,25 @@ TEST(HatOverlap1D, RejectsBadNodesNamingTheArgument) {
   pm::HatOverlap1D out;
   Eigen::VectorXd good = pm::uniformNodes(0.0, 1.0, 5), bad = good;
   bad[3] = bad[2];
-  expectInvalid(
+  expectInvalidArgument(
       [&] {
         pm::calcHatOverlap1D(bad, false, good, false, 0.0, 0.0, pm::LoadRule::Consistent, false,
                              out);
       },
       "sourceNodes[3]");
-  expectInvalid(
+  expectInvalidArgument(
       [&] {
         pm::calcHatOverlap1D(good, false, Eigen::VectorXd::Zero(1), false, 0.0, 0.0,
                              pm::LoadRule::Consistent, false, out);
       },
       "targetNodes has 1 nodes");
-  expectInvalid(
+  expectInvalidArgument(
       [&] {
         pm::calcHatOverlap1D(good, true, good, false, 0.0, 0.0, pm::LoadRule::Consistent, false,
                              out);
       },
       "period");
-  expectInvalid(
+  expectInvalidArgument(
       [&] {
         pm::calcHatOverlap1D(pm::uniformNodes(0.0, 0.4, 3), false, good, true, 0.5, 0.0,
                              pm::LoadRule::Consistent, false, out);

@@ -11,11 +11,12 @@
 #include <random>
 #include <vector>
 
+#include "ExpectInvalidArgument.h"
 #include "TestSupport.h"
 #include "pistondyn/mapping/HermiteSurface.h"
 
 namespace pm = pistondyn::mapping;
-using pm::test::expectInvalid;
+using pistondyn::test::expectInvalidArgument;
 using pm::test::kPi;
 
 namespace {
@@ -301,9 +302,9 @@ TEST(HermiteSurface, OutsidePointsThrowOrExtendTheEndCells) {
   const pm::CylinderGrid grid = gradedSector(rng, 8, 8);
   const Bicubic f = randomBicubic(rng, 0.04);
   const pm::HermiteSurface surface(grid, f.nodal(grid, &pm::HermiteSample::value));
-  expectInvalid([&] { surface.evaluate(0.0, 0.05); }, "y_m = 0.05");
-  expectInvalid([&] { surface.evaluate(0.8, 0.01); }, "phi_rad = 0.8");
-  expectInvalid([&] { surface.evaluate(-0.7, 0.01); }, "lies outside the sector");
+  expectInvalidArgument([&] { surface.evaluate(0.0, 0.05); }, "y_m = 0.05");
+  expectInvalidArgument([&] { surface.evaluate(0.8, 0.01); }, "phi_rad = 0.8");
+  expectInvalidArgument([&] { surface.evaluate(-0.7, 0.01); }, "lies outside the sector");
   MaxErrors e;
   for (auto [p, q] : {std::pair{0.75, 0.01}, {-0.65, 0.02}, {0.1, 0.0}, {0.2, 0.045}, {0.8, 0.045}})
     e.add(f.at(p, q), surface.evaluate(p, q, pm::OutsidePolicy::ExtendEndCells));
@@ -313,7 +314,7 @@ TEST(HermiteSurface, OutsidePointsThrowOrExtendTheEndCells) {
 
   pm::HermiteGridWorkspace ws;
   Eigen::VectorXd out(grid.nodeCount());
-  expectInvalid([&] { surface.evaluateOnGrid(grid, {0.0, 0.001}, out, ws); }, "y_m");
+  expectInvalidArgument([&] { surface.evaluateOnGrid(grid, {0.0, 0.001}, out, ws); }, "y_m");
 }
 
 TEST(HermiteSurface, RejectsBadInputNamingTheArgument) {
@@ -321,22 +322,24 @@ TEST(HermiteSurface, RejectsBadInputNamingTheArgument) {
   const pm::CylinderGrid grid = gradedSector(rng, 5, 6);
   Eigen::VectorXd v = Eigen::VectorXd::Ones(grid.nodeCount());
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  expectInvalid([&] { pm::HermiteSurface(grid, Eigen::VectorXd::Ones(7)); }, "values has 7");
+  expectInvalidArgument([&] { pm::HermiteSurface(grid, Eigen::VectorXd::Ones(7)); },
+                        "values has 7");
   v[5] = nan;
-  expectInvalid([&] { pm::HermiteSurface(grid, v); }, "values[5]");
+  expectInvalidArgument([&] { pm::HermiteSurface(grid, v); }, "values[5]");
   v[5] = 1.0;
   Eigen::VectorXd d = Eigen::VectorXd::Zero(grid.nodeCount());
   Eigen::VectorXd bad = d;
   bad[3] = std::numeric_limits<double>::infinity();
-  expectInvalid([&] { pm::HermiteSurface(grid, v, d, bad, d); }, "dY[3]");
+  expectInvalidArgument([&] { pm::HermiteSurface(grid, v, d, bad, d); }, "dY[3]");
   pm::HermiteSurface surface(grid, v);
-  expectInvalid([&] { surface.updateValues(Eigen::VectorXd::Ones(3)); }, "values has 3");
-  expectInvalid([&] { surface.evaluate(nan, 0.01); }, "phi_rad");
+  expectInvalidArgument([&] { surface.updateValues(Eigen::VectorXd::Ones(3)); }, "values has 3");
+  expectInvalidArgument([&] { surface.evaluate(nan, 0.01); }, "phi_rad");
   // Absurd angles: the reduction modulo 2*pi of 1e300 keeps no digit (it used to return
   // garbage); within the bound it is exact to ~1e-10 rad (reference: the same point
   // given at its reduced angle, 159154 turns back).
-  expectInvalid([&] { surface.evaluate(1e300, 0.01); }, "HermiteSurface::evaluate: phi_rad");
-  expectInvalid([&] { surface.evaluate(-2e6, 0.01); }, "kMaxAbsAngle_rad");
+  expectInvalidArgument([&] { surface.evaluate(1e300, 0.01); },
+                        "HermiteSurface::evaluate: phi_rad");
+  expectInvalidArgument([&] { surface.evaluate(-2e6, 0.01); }, "kMaxAbsAngle_rad");
   {
     Eigen::VectorXd w(grid.nodeCount());
     for (int k = 0; k < w.size(); ++k)
@@ -349,10 +352,14 @@ TEST(HermiteSurface, RejectsBadInputNamingTheArgument) {
     // 1e6 rad carries an ulp of 1.2e-10 rad and the reduction a few of them.
     EXPECT_NEAR(far.value, near.value, 1e-8);
   }
-  expectInvalid([&] { surface.evaluateInCell(99, 0, 0.5, 0.5); }, "cell (99, 0)");
+  expectInvalidArgument([&] { surface.evaluateInCell(99, 0, 0.5, 0.5); }, "cell (99, 0)");
   pm::HermiteGridWorkspace ws;
   Eigen::VectorXd out(3);
-  expectInvalid([&] { surface.evaluateOnGrid(grid, {}, out, ws); }, "output has 3");
+  expectInvalidArgument([&] { surface.evaluateOnGrid(grid, {}, out, ws); }, "output has 3");
   Eigen::VectorXd full(grid.nodeCount());
-  expectInvalid([&] { surface.evaluateOnGrid(grid, {1e300, 0.0}, full, ws); }, "offset.phi_rad");
+  expectInvalidArgument(
+      [&] {
+        surface.evaluateOnGrid(grid, {1e300, 0.0}, full, ws);
+      },
+      "offset.phi_rad");
 }

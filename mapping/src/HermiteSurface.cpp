@@ -164,14 +164,10 @@ void HermiteSurface::locatePhi(const char* fn, double phi_rad, OutsidePolicy out
   w -= kTwoPi * std::floor(w / kTwoPi);  // [0, 2*pi] (2*pi only through rounding)
   double p = phi0 + w;
   const int cells = grid_.phiCellCount();
-  if (grid_.isClosed()) {
-    if (p >= grid_.phiEnd_rad())
-      p = phi0;
-    cell = findCell(x, cells, p);
-    t = std::clamp((p - x[cell]) / phiCellWidth_[cell], 0.0, 1.0);
-    return;
-  }
   const double end = grid_.phiEnd_rad();
+  // A ring has no outside: its end phi_0 + 2*pi is phi_0 again, so p < end from here on.
+  if (grid_.isClosed() && p >= end)
+    p = phi0;
   if (p <= end) {
     cell = findCell(x, cells, p);
     t = std::clamp((p - x[cell]) / phiCellWidth_[cell], 0.0, 1.0);
@@ -179,30 +175,18 @@ void HermiteSurface::locatePhi(const char* fn, double phi_rad, OutsidePolicy out
   }
   // Outside the sector: nearer to its end (after) or to its start (before, one turn on)?
   const double after = p - end, before = phi0 + kTwoPi - p;
-  const double tol = kEdgeTolerance * (end - phi0);
-  if (after <= before) {
-    cell = cells - 1;
-    if (after <= tol) {
-      t = 1.0;
-      return;
-    }
-    if (outside == OutsidePolicy::Throw)
-      detail::fail(fn, "phi_rad = " + detail::str(phi_rad) + " lies outside the sector [" +
-                           detail::str(phi0) + ", " + detail::str(end) + "] rad (by " +
-                           detail::str(after) + " rad)");
-    t = (p - x[cell]) / phiCellWidth_[cell];
-  } else {
-    cell = 0;
-    if (before <= tol) {
-      t = 0.0;
-      return;
-    }
-    if (outside == OutsidePolicy::Throw)
-      detail::fail(fn, "phi_rad = " + detail::str(phi_rad) + " lies outside the sector [" +
-                           detail::str(phi0) + ", " + detail::str(end) + "] rad (by " +
-                           detail::str(before) + " rad)");
-    t = -before / phiCellWidth_[0];
+  const bool nearEnd = after <= before;
+  const double distance = nearEnd ? after : before;
+  cell = nearEnd ? cells - 1 : 0;
+  if (distance <= kEdgeTolerance * (end - phi0)) {
+    t = nearEnd ? 1.0 : 0.0;
+    return;
   }
+  if (outside == OutsidePolicy::Throw)
+    detail::fail(fn, "phi_rad = " + detail::str(phi_rad) + " lies outside the sector [" +
+                         detail::str(phi0) + ", " + detail::str(end) + "] rad (by " +
+                         detail::str(distance) + " rad)");
+  t = nearEnd ? (p - x[cell]) / phiCellWidth_[cell] : -before / phiCellWidth_[0];
 }
 
 void HermiteSurface::locateY(const char* fn, double y_m, OutsidePolicy outside, int& cell,

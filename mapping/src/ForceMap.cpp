@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "BuildHatOverlap1D.h"
 #include "Checks.h"
 
 namespace pistondyn::mapping {
@@ -153,8 +154,9 @@ TensorForceMap::TensorForceMap(const CylinderGrid& source, const CylinderGrid& t
 
 void TensorForceMap::setAxialOffset(double yOffset_m, Workspace& ws) const {
   detail::requireFiniteScalar("TensorForceMap::setAxialOffset", "yOffset_m", yOffset_m);
-  calcHatOverlap1D(source_.y_m(), false, target_.y_m(), false, 0.0, yOffset_m, rule_,
-                   /*withTrig=*/false, ws.axial);
+  // The axial nodes were checked by CylinderGrid; only the offset is new each step.
+  detail::buildHatOverlap1D(source_.y_m(), false, target_.y_m(), false, 0.0, yOffset_m, rule_,
+                            /*withTrig=*/false, ws.axial);
   ws.yOffset_m = yOffset_m;
   ws.axialKey = axialKey_;
   ws.ready = true;

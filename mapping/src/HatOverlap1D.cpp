@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "BuildHatOverlap1D.h"
 #include "Checks.h"
 
 namespace pistondyn::mapping {
@@ -133,6 +134,13 @@ void calcHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceClosed,
     detail::requireReasonableClosingCell(fn, "sourceNodes", sourceNodes, period);
   if (targetClosed)
     detail::requireReasonableClosingCell(fn, "targetNodes", targetNodes, period);
+  detail::buildHatOverlap1D(sourceNodes, sourceClosed, targetNodes, targetClosed, period, offset,
+                            rule, withTrig, out);
+}
+
+void detail::buildHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceClosed,
+                               const Eigen::VectorXd& targetNodes, bool targetClosed, double period,
+                               double offset, LoadRule rule, bool withTrig, HatOverlap1D& out) {
   const Axis src{sourceNodes, sourceClosed, period};
   const Axis tgt{targetNodes, targetClosed, period};
   const int ns = src.n(), nt = tgt.n();

@@ -6,13 +6,14 @@
 #include <vector>
 
 #include "BuildHatOverlap1D.h"
+#include "Cells.h"
 #include "Checks.h"
 
 namespace pistondyn::mapping {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
+using detail::kTwoPi;
 
 using ConstMatrixMap = Eigen::Map<const Eigen::MatrixXd>;
 using MatrixMap = Eigen::Map<Eigen::MatrixXd>;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "BuildHatOverlap1D.h"
+#include "Cells.h"
 #include "Checks.h"
 
 namespace pistondyn::mapping {
@@ -90,7 +91,7 @@ struct Axis {
   double period;
   int n() const { return static_cast<int>(x.size()); }
   int cells() const { return closed ? n() : n() - 1; }
-  double node(int i) const { return i < n() ? x[i] : x[0] + period; }  // i == n: closing node
+  double node(int i) const { return detail::ringNode(x, period, i); }  // i == n: closing node
   double end() const { return node(cells()); }
 };
 
@@ -117,7 +118,7 @@ void calcHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceClosed,
     detail::fail(fn, "period = " + detail::str(period) + " must be positive for a closed grid");
   // With a period the overlaps are found by counting periods from the offset: keep it
   // within kMaxAbsAngle_rad's number of turns (the counts stay exact integers).
-  constexpr double kMaxTurns = kMaxAbsAngle_rad / 6.283185307179586;
+  constexpr double kMaxTurns = kMaxAbsAngle_rad / detail::kTwoPi;
   if (period > 0.0 && !(std::abs(offset) <= kMaxTurns * period))
     detail::fail(fn, "offset = " + detail::str(offset) + " must be within +-" +
                          detail::str(kMaxTurns) + " periods");

@@ -4,13 +4,15 @@
 #include <cmath>
 #include <string>
 
+#include "Cells.h"
 #include "Checks.h"
 
 namespace pistondyn::mapping {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
+using detail::kTwoPi;
+
 // Points closer than this fraction of the grid extent outside an end are clamped onto it
 // (rounding of offsets must not turn an edge node into an "outside" error).
 constexpr double kEdgeTolerance = 1e-12;
@@ -29,13 +31,6 @@ Eigen::Vector4d dHermite(double t, double invH) {
   return Eigen::Vector4d(-six, six, (1.0 - t) * (1.0 - 3.0 * t), t * (3.0 * t - 2.0)) * invH;
 }
 
-Eigen::VectorXd cellWidths(const Eigen::VectorXd& x, int cells, double end) {
-  Eigen::VectorXd h(cells);
-  for (int c = 0; c < cells; ++c)
-    h[c] = (c + 1 < x.size() ? x[c + 1] : end) - x[c];
-  return h;
-}
-
 // Index of the cell containing x in [nodes[0], nodes[last]] (monotone nodes, `cells`
 // cells), found by bisection; x exactly on a node goes to the cell on its right except
 // at the last node.
@@ -52,8 +47,8 @@ HermiteSurface::HermiteSurface(CylinderGrid grid)
     : grid_(std::move(grid)),
       phiSlopes_(grid_.phi_rad(), grid_.isClosed(), kTwoPi),
       ySlopes_(grid_.y_m(), false, 0.0),
-      phiCellWidth_(cellWidths(grid_.phi_rad(), grid_.phiCellCount(), grid_.phiEnd_rad())),
-      yCellWidth_(cellWidths(grid_.y_m(), grid_.yCellCount(), 0.0)),
+      phiCellWidth_(detail::cellWidths(grid_.phi_rad(), grid_.isClosed(), kTwoPi)),
+      yCellWidth_(detail::cellWidths(grid_.y_m(), false, 0.0)),
       values_(grid_.nodeCount()),
       dPhi_(grid_.nodeCount()),
       dY_(grid_.nodeCount()),

@@ -284,13 +284,12 @@ void detail::buildHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceCl
       }
     }
 
-    // Merge the column: sort by target node (the sweep usually produces them in order
-    // already; only wrapped overlaps on a ring do not), sum duplicates.
-    const auto byRow = [](const HatOverlap1D::Entry& l, const HatOverlap1D::Entry& r) {
-      return l.row < r.row;
-    };
-    if (!std::is_sorted(column.begin(), column.end(), byRow))
-      std::sort(column.begin(), column.end(), byRow);
+    // Merge the column: sort by target node, sum duplicates. The sweep is not in order:
+    // the falling side restarts at the target cell holding node k, where the rising side
+    // ended (and overlaps on a ring wrap), so nearly every column needs the sort.
+    std::sort(
+        column.begin(), column.end(),
+        [](const HatOverlap1D::Entry& l, const HatOverlap1D::Entry& r) { return l.row < r.row; });
     for (size_t e = 0; e < column.size();) {
       const int row = column[e].row;
       double sum[3] = {0.0, 0.0, 0.0};

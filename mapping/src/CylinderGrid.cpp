@@ -3,13 +3,14 @@
 #include <cmath>
 #include <string>
 
+#include "Cells.h"
 #include "Checks.h"
 
 namespace pistondyn::mapping {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
+using detail::kTwoPi;
 
 void checkRadius(const char* function, double radius_m) {
   if (!(std::isfinite(radius_m) && radius_m > 0.0))
@@ -19,16 +20,11 @@ void checkRadius(const char* function, double radius_m) {
 // Trapezoid weights: integral of each 1-D hat function over its support.
 Eigen::VectorXd hatIntegrals(const Eigen::VectorXd& x, bool closed, double period) {
   const Eigen::Index n = x.size();
+  const Eigen::VectorXd h = detail::cellWidths(x, closed, period);
   Eigen::VectorXd w = Eigen::VectorXd::Zero(n);
-  for (Eigen::Index c = 0; c + 1 < n; ++c) {
-    const double h = x[c + 1] - x[c];
-    w[c] += 0.5 * h;
-    w[c + 1] += 0.5 * h;
-  }
-  if (closed) {
-    const double h = x[0] + period - x[n - 1];
-    w[n - 1] += 0.5 * h;
-    w[0] += 0.5 * h;
+  for (Eigen::Index c = 0; c < h.size(); ++c) {  // cell c joins nodes c and c + 1 (mod n)
+    w[c] += 0.5 * h[c];
+    w[(c + 1) % n] += 0.5 * h[c];
   }
   return w;
 }

@@ -5,13 +5,15 @@
 #include <string>
 #include <vector>
 
+#include "BuildHatOverlap1D.h"
+#include "Cells.h"
 #include "Checks.h"
 
 namespace pistondyn::mapping {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
+using detail::kTwoPi;
 
 using ConstMatrixMap = Eigen::Map<const Eigen::MatrixXd>;
 using MatrixMap = Eigen::Map<Eigen::MatrixXd>;
@@ -57,12 +59,21 @@ void scatterRight3(const Q& qx, const Q& qy, const Q& qz,
     }
 }
 
-// sum_l b[l] * (column sums of Q)[l].
+// sums = column sums of Q, added row by row (contiguous rows of the row-major products;
+// each column is still summed in row order). `sums` is workspace storage: no allocation
+// once it has the size.
 template <class Q>
-double columnSumsDot(const Q& q, const Eigen::Ref<const Eigen::VectorXd>& b) {
+void calcColumnSums(const Q& q, Eigen::RowVectorXd& sums) {
+  sums.setZero(q.cols());
+  for (Eigen::Index r = 0; r < q.rows(); ++r)
+    sums += q.row(r);
+}
+
+// sum_l b[l] * sums[l].
+double dotColumnSums(const Eigen::RowVectorXd& sums, const Eigen::Ref<const Eigen::VectorXd>& b) {
   double sum = 0.0;
-  for (Eigen::Index l = 0; l < q.cols(); ++l)
-    sum += b[l] * q.col(l).sum();
+  for (Eigen::Index l = 0; l < sums.size(); ++l)
+    sum += b[l] * sums[l];
   return sum;
 }
 
@@ -153,8 +164,9 @@ TensorForceMap::TensorForceMap(const CylinderGrid& source, const CylinderGrid& t
 
 void TensorForceMap::setAxialOffset(double yOffset_m, Workspace& ws) const {
   detail::requireFiniteScalar("TensorForceMap::setAxialOffset", "yOffset_m", yOffset_m);
-  calcHatOverlap1D(source_.y_m(), false, target_.y_m(), false, 0.0, yOffset_m, rule_,
-                   /*withTrig=*/false, ws.axial);
+  // The axial nodes were checked by CylinderGrid; only the offset is new each step.
+  detail::buildHatOverlap1D(source_.y_m(), false, target_.y_m(), false, 0.0, yOffset_m, rule_,
+                            /*withTrig=*/false, ws.axial);
   ws.yOffset_m = yOffset_m;
   ws.axialKey = axialKey_;
   ws.ready = true;
@@ -218,8 +230,9 @@ LoadBalance TensorForceMap::mapScalar(const char* fn, Workspace& ws,
   // column sums of Q give them for free. Outside in phi: only when the source reaches
   // beyond a sector target. Unmapped = (outside in phi) x (all y) + (inside) x (outside y).
   const HatOverlap1D& y = ws.axial;
-  const double inside = columnSumsDot(ws.q2, y.sourceIntegral.col(0));
-  const double insideOutY = columnSumsDot(ws.q2, y.outsideIntegral.col(0));
+  calcColumnSums(ws.q2, ws.columnSums);
+  const double inside = dotColumnSums(ws.columnSums, y.sourceIntegral.col(0));
+  const double insideOutY = dotColumnSums(ws.columnSums, y.outsideIntegral.col(0));
   const double outside =
       phiHasOutside_ ? r * weightedSum(phi_.outsideIntegral.col(0), p, y.sourceIntegral.col(0))
                      : 0.0;
@@ -301,10 +314,14 @@ CartesianLoadBalance TensorForceMap::mapTraction(
   // Balance as in mapScalar: inside-in-phi totals from the column sums of q.
   const HatOverlap1D& y = ws.axial;
   const auto ySource = y.sourceIntegral.col(0), yOutside = y.outsideIntegral.col(0);
-  const Eigen::Vector3d inside(columnSumsDot(qx, ySource), columnSumsDot(ws.q2, ySource),
-                               columnSumsDot(qz, ySource));
-  const Eigen::Vector3d insideOutY(columnSumsDot(qx, yOutside), columnSumsDot(ws.q2, yOutside),
-                                   columnSumsDot(qz, yOutside));
+  // Each product's column sums once, then both dot products (x, y, z in turn).
+  Eigen::Vector3d inside, insideOutY;
+  const decltype(ws.q0)* products[3] = {&qx, &ws.q2, &qz};
+  for (int d = 0; d < 3; ++d) {
+    calcColumnSums(*products[d], ws.columnSums);
+    inside[d] = dotColumnSums(ws.columnSums, ySource);
+    insideOutY[d] = dotColumnSums(ws.columnSums, yOutside);
+  }
   Eigen::Vector3d outside = Eigen::Vector3d::Zero();
   if (phiHasOutside_) {
     const HatOverlap1D& a = phi_;

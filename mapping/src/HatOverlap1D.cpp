@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "BuildHatOverlap1D.h"
+#include "Cells.h"
 #include "Checks.h"
 
 namespace pistondyn::mapping {
@@ -89,7 +91,7 @@ struct Axis {
   double period;
   int n() const { return static_cast<int>(x.size()); }
   int cells() const { return closed ? n() : n() - 1; }
-  double node(int i) const { return i < n() ? x[i] : x[0] + period; }  // i == n: closing node
+  double node(int i) const { return detail::ringNode(x, period, i); }  // i == n: closing node
   double end() const { return node(cells()); }
 };
 
@@ -116,7 +118,7 @@ void calcHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceClosed,
     detail::fail(fn, "period = " + detail::str(period) + " must be positive for a closed grid");
   // With a period the overlaps are found by counting periods from the offset: keep it
   // within kMaxAbsAngle_rad's number of turns (the counts stay exact integers).
-  constexpr double kMaxTurns = kMaxAbsAngle_rad / 6.283185307179586;
+  constexpr double kMaxTurns = kMaxAbsAngle_rad / detail::kTwoPi;
   if (period > 0.0 && !(std::abs(offset) <= kMaxTurns * period))
     detail::fail(fn, "offset = " + detail::str(offset) + " must be within +-" +
                          detail::str(kMaxTurns) + " periods");
@@ -133,6 +135,13 @@ void calcHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceClosed,
     detail::requireReasonableClosingCell(fn, "sourceNodes", sourceNodes, period);
   if (targetClosed)
     detail::requireReasonableClosingCell(fn, "targetNodes", targetNodes, period);
+  detail::buildHatOverlap1D(sourceNodes, sourceClosed, targetNodes, targetClosed, period, offset,
+                            rule, withTrig, out);
+}
+
+void detail::buildHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceClosed,
+                               const Eigen::VectorXd& targetNodes, bool targetClosed, double period,
+                               double offset, LoadRule rule, bool withTrig, HatOverlap1D& out) {
   const Axis src{sourceNodes, sourceClosed, period};
   const Axis tgt{targetNodes, targetClosed, period};
   const int ns = src.n(), nt = tgt.n();
@@ -275,13 +284,12 @@ void calcHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceClosed,
       }
     }
 
-    // Merge the column: sort by target node (the sweep usually produces them in order
-    // already; only wrapped overlaps on a ring do not), sum duplicates.
-    const auto byRow = [](const HatOverlap1D::Entry& l, const HatOverlap1D::Entry& r) {
-      return l.row < r.row;
-    };
-    if (!std::is_sorted(column.begin(), column.end(), byRow))
-      std::sort(column.begin(), column.end(), byRow);
+    // Merge the column: sort by target node, sum duplicates. The sweep is not in order:
+    // the falling side restarts at the target cell holding node k, where the rising side
+    // ended (and overlaps on a ring wrap), so nearly every column needs the sort.
+    std::sort(
+        column.begin(), column.end(),
+        [](const HatOverlap1D::Entry& l, const HatOverlap1D::Entry& r) { return l.row < r.row; });
     for (size_t e = 0; e < column.size();) {
       const int row = column[e].row;
       double sum[3] = {0.0, 0.0, 0.0};

@@ -4,13 +4,15 @@
 #include <cmath>
 #include <string>
 
+#include "Cells.h"
 #include "Checks.h"
 
 namespace pistondyn::mapping {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
+using detail::kTwoPi;
+
 // Points closer than this fraction of the grid extent outside an end are clamped onto it
 // (rounding of offsets must not turn an edge node into an "outside" error).
 constexpr double kEdgeTolerance = 1e-12;
@@ -29,13 +31,6 @@ Eigen::Vector4d dHermite(double t, double invH) {
   return Eigen::Vector4d(-six, six, (1.0 - t) * (1.0 - 3.0 * t), t * (3.0 * t - 2.0)) * invH;
 }
 
-Eigen::VectorXd cellWidths(const Eigen::VectorXd& x, int cells, double end) {
-  Eigen::VectorXd h(cells);
-  for (int c = 0; c < cells; ++c)
-    h[c] = (c + 1 < x.size() ? x[c + 1] : end) - x[c];
-  return h;
-}
-
 // Index of the cell containing x in [nodes[0], nodes[last]] (monotone nodes, `cells`
 // cells), found by bisection; x exactly on a node goes to the cell on its right except
 // at the last node.
@@ -52,8 +47,8 @@ HermiteSurface::HermiteSurface(CylinderGrid grid)
     : grid_(std::move(grid)),
       phiSlopes_(grid_.phi_rad(), grid_.isClosed(), kTwoPi),
       ySlopes_(grid_.y_m(), false, 0.0),
-      phiCellWidth_(cellWidths(grid_.phi_rad(), grid_.phiCellCount(), grid_.phiEnd_rad())),
-      yCellWidth_(cellWidths(grid_.y_m(), grid_.yCellCount(), 0.0)),
+      phiCellWidth_(detail::cellWidths(grid_.phi_rad(), grid_.isClosed(), kTwoPi)),
+      yCellWidth_(detail::cellWidths(grid_.y_m(), false, 0.0)),
       values_(grid_.nodeCount()),
       dPhi_(grid_.nodeCount()),
       dY_(grid_.nodeCount()),
@@ -164,14 +159,10 @@ void HermiteSurface::locatePhi(const char* fn, double phi_rad, OutsidePolicy out
   w -= kTwoPi * std::floor(w / kTwoPi);  // [0, 2*pi] (2*pi only through rounding)
   double p = phi0 + w;
   const int cells = grid_.phiCellCount();
-  if (grid_.isClosed()) {
-    if (p >= grid_.phiEnd_rad())
-      p = phi0;
-    cell = findCell(x, cells, p);
-    t = std::clamp((p - x[cell]) / phiCellWidth_[cell], 0.0, 1.0);
-    return;
-  }
   const double end = grid_.phiEnd_rad();
+  // A ring has no outside: its end phi_0 + 2*pi is phi_0 again, so p < end from here on.
+  if (grid_.isClosed() && p >= end)
+    p = phi0;
   if (p <= end) {
     cell = findCell(x, cells, p);
     t = std::clamp((p - x[cell]) / phiCellWidth_[cell], 0.0, 1.0);
@@ -179,30 +170,18 @@ void HermiteSurface::locatePhi(const char* fn, double phi_rad, OutsidePolicy out
   }
   // Outside the sector: nearer to its end (after) or to its start (before, one turn on)?
   const double after = p - end, before = phi0 + kTwoPi - p;
-  const double tol = kEdgeTolerance * (end - phi0);
-  if (after <= before) {
-    cell = cells - 1;
-    if (after <= tol) {
-      t = 1.0;
-      return;
-    }
-    if (outside == OutsidePolicy::Throw)
-      detail::fail(fn, "phi_rad = " + detail::str(phi_rad) + " lies outside the sector [" +
-                           detail::str(phi0) + ", " + detail::str(end) + "] rad (by " +
-                           detail::str(after) + " rad)");
-    t = (p - x[cell]) / phiCellWidth_[cell];
-  } else {
-    cell = 0;
-    if (before <= tol) {
-      t = 0.0;
-      return;
-    }
-    if (outside == OutsidePolicy::Throw)
-      detail::fail(fn, "phi_rad = " + detail::str(phi_rad) + " lies outside the sector [" +
-                           detail::str(phi0) + ", " + detail::str(end) + "] rad (by " +
-                           detail::str(before) + " rad)");
-    t = -before / phiCellWidth_[0];
+  const bool nearEnd = after <= before;
+  const double distance = nearEnd ? after : before;
+  cell = nearEnd ? cells - 1 : 0;
+  if (distance <= kEdgeTolerance * (end - phi0)) {
+    t = nearEnd ? 1.0 : 0.0;
+    return;
   }
+  if (outside == OutsidePolicy::Throw)
+    detail::fail(fn, "phi_rad = " + detail::str(phi_rad) + " lies outside the sector [" +
+                         detail::str(phi0) + ", " + detail::str(end) + "] rad (by " +
+                         detail::str(distance) + " rad)");
+  t = nearEnd ? (p - x[cell]) / phiCellWidth_[cell] : -before / phiCellWidth_[0];
 }
 
 void HermiteSurface::locateY(const char* fn, double y_m, OutsidePolicy outside, int& cell,

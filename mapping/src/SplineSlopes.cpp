@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "Cells.h"
+
 namespace pistondyn::mapping::detail {
 
 namespace {
@@ -20,11 +22,7 @@ SplineSlopes::SplineSlopes(const Eigen::VectorXd& x, bool closed, double period)
     : n_(static_cast<int>(x.size())), closed_(closed), solve_(closed || x.size() >= 4) {
   const int n = n_;
   const int cells = closed ? n : n - 1;
-  std::vector<double> h(cells);
-  for (int c = 0; c + 1 < n; ++c)
-    h[c] = x[c + 1] - x[c];
-  if (closed)
-    h[n - 1] = x[0] + period - x[n - 1];
+  const Eigen::VectorXd h = cellWidths(x, closed, period);
 
   // Stencils of the right-hand side. With divided differences d_c = (f_{c+1} - f_c)/h_c,
   // a combination alpha*d_{c} + beta*d_{c+1} over nodes (c, c+1, c+2) has coefficients

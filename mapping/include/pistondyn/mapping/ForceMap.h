@@ -127,6 +127,7 @@ class TensorForceMap {
     RowWindow rows;              // target rows A_y reaches at that offset
     // R A_phi P products on the reached target phi nodes (row-major: rows are written).
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> q0, q1, q2;
+    Eigen::RowVectorXd columnSums;  // column sums of one product, for the load balance
   };
 
   // Builds the circumferential factors (plain, and cos/sin-weighted for applyTraction);

@@ -119,7 +119,7 @@ void ActiveSetSolver::fillValues(const FilmSystem& s) {
       if (s.status[k] != kCav)
         continue;
       const int e = s.nbE[k], w = s.nbW[k], no = s.nbN[k], so = s.nbS[k];
-      v[pat_.posSelf[k]] = s.aOut[k] + s.squeeze[k] + s.capacity[k];
+      v[pat_.posSelf[k]] = s.thetaCoef[k];
       if (e != k && s.inIx[e] == k && eqRow_[e])
         v[pat_.posE[k]] -= s.inCx[e];
       if (w != k && s.inIx[w] == k && eqRow_[w])
@@ -272,7 +272,7 @@ void ActiveSetSolver::precondition(const FilmSystem& s, const double* r, double*
         t += s.inCx[k] * z[ix];
       if (iy != k && colType_[iy] == 2)
         t += s.inCy[k] * z[iy];
-      const double a = s.aOut[k] + s.squeeze[k] + s.capacity[k];
+      const double a = s.thetaCoef[k];
       z[k] = a > 0.0 ? t / a : 0.0;
     }
     return;
@@ -606,7 +606,7 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
           changed = true;
         }
       } else if (s.status[k] == kCav && !deferReformation) {
-        const double a = s.aOut[k] + s.squeeze[k] + s.capacity[k];
+        const double a = s.thetaCoef[k];
         const double thTol = std::max(1e-10, target > innerTarget && a > 0.0 ? target / a : 0.0);
         const bool toFull =
             s.jfo ? (th[k] > 1.0 + thTol || th[k] < -thTol) : (s.residualAt(k) < -rEps);

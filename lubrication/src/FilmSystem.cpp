@@ -37,11 +37,11 @@ void FilmSystem::resizeFor(const FilmGrid& grid) {
     }
   }
   order.reserve(n);
-  for (Eigen::ArrayXd* a :
-       {&tE,         &tW,   &tN,      &tS,       &diagP,     &couE,  &couN,      &aOut,
-        &inCx,       &inCy, &squeeze, &capacity, &thetaPrev, &src,   &fluxScale, &fixedPressure,
-        &fixedTheta, &hT,   &dhTdh,   &eta,      &phiF,      &phiFs, &phiFp,     &p,
-        &theta}) {
+  for (Eigen::ArrayXd* a : {&tE,        &tW,        &tN,   &tS,        &diagP,         &couE,
+                            &couN,      &aOut,      &inCx, &inCy,      &squeeze,       &capacity,
+                            &thetaPrev, &thetaCoef, &src,  &fluxScale, &fixedPressure, &fixedTheta,
+                            &hT,        &dhTdh,     &eta,  &phiF,      &phiFs,         &phiFp,
+                            &p,         &theta}) {
     a->setZero(n);
   }
   inIx.assign(n, 0);
@@ -159,6 +159,7 @@ void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
     squeeze[k] = area[k] * dhTdh[k] * rate;
     capacity[k] = transient ? area[k] * hT[k] / pr.timeStep_s : 0.0;
     thetaPrev[k] = (jfo && hasPrev) ? pr.previousFillFraction[k] : 1.0;
+    thetaCoef[k] = aOut[k] + squeeze[k] + capacity[k];
   }
 
   // ---- fixed nodes: open edges, starved inlets, dry zones ----

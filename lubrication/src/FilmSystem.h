@@ -41,6 +41,7 @@ struct FilmSystem {
   Eigen::ArrayXd squeeze;       // A dhT/dt, [m^3/s]
   Eigen::ArrayXd capacity;      // A hT / dt, [m^3/s] (0 when steady or not JFO)
   Eigen::ArrayXd thetaPrev;     // fill fraction at the start of the step (JFO)
+  Eigen::ArrayXd thetaCoef;     // aOut + squeeze + capacity: coefficient of the own theta
   Eigen::ArrayXd src;           // Reynolds-mode constant part: aOut - inflow(theta=1) + squeeze
   Eigen::ArrayXd fluxScale;     // per node scale of the driving fluxes (residual norm)
   double residualScale = 1.0;   // F of the residual definition
@@ -67,7 +68,7 @@ struct FilmSystem {
     const double P = diagP[k] * p[k] - (tE[k] * p[nbE[k]] + tW[k] * p[nbW[k]] + tN[k] * p[nbN[k]] +
                                         tS[k] * p[nbS[k]]);
     const double in = inCx[k] * theta[inIx[k]] + inCy[k] * theta[inIy[k]];
-    return P + theta[k] * (aOut[k] + squeeze[k] + capacity[k]) - in - capacity[k] * thetaPrev[k];
+    return P + theta[k] * thetaCoef[k] - in - capacity[k] * thetaPrev[k];
   }
 
   // Relative residual of the current iterate (definition in FilmProblem.h).

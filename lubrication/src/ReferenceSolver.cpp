@@ -47,7 +47,7 @@ double elrodAdamsSweep(FilmSystem& s, double omega, double omegaTheta) {
                                           s.tN[k] * p[s.nbN[k]] + s.tS[k] * p[s.nbS[k]]);
     const double G =
         -(s.inCx[k] * th[s.inIx[k]] + s.inCy[k] * th[s.inIy[k]]) - s.capacity[k] * s.thetaPrev[k];
-    const double a = s.aOut[k] + s.squeeze[k] + s.capacity[k];
+    const double a = s.thetaCoef[k];
     if (th[k] >= 1.0) {
       const double r = P + a + G;
       worst = std::max(worst, std::abs(r));

@@ -82,16 +82,9 @@ void ActiveSetSolver::fillValues(const FilmSystem& s) {
   std::fill(pat_.values.begin(), pat_.values.end(), 0.0);
   // Identity rows get the node's own Poiseuille diagonal (the film's conductance varies by
   // orders of magnitude): pivot-ratio checks stay meaningful and, should the node become an
-  // unknown later, the lagged factorisation acts on it like a Jacobi step.
-  double scale = 0.0;
-  int count = 0;
-  for (int k = 0; k < s.n; ++k) {
-    if (s.status[k] != kFixed) {
-      scale += s.diagP[k];
-      ++count;
-    }
-  }
-  scale = count > 0 && scale > 0.0 ? scale / count : 1.0;
+  // unknown later, the lagged factorisation acts on it like a Jacobi step. Where that diagonal is
+  // not positive, the mean over the non-fixed nodes (FilmSystem::meanFreeDiagP).
+  const double scale = s.meanFreeDiagP;
   double* v = pat_.values.data();
   for (int k = 0; k < s.n; ++k) {
     if (!eqRow_[k]) {

@@ -241,14 +241,19 @@ void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
   if (model != CavitationModel::None)
     pMin = pMax = pCav;
   freeCount = 0;
+  int freeNodes = 0;
+  double freeDiagSum = 0.0;
   for (int k = 0; k < n; ++k) {
     if (status[k] == kFixed) {
       pMin = std::min(pMin, fixedPressure[k]);
       pMax = std::max(pMax, fixedPressure[k]);
     } else {
       ++freeCount;
+      freeDiagSum += diagP[k];
+      ++freeNodes;
     }
   }
+  meanFreeDiagP = freeNodes > 0 && freeDiagSum > 0.0 ? freeDiagSum / freeNodes : 1.0;
   const double span = (pMax > pMin) ? pMax - pMin : 0.0;
 
   residualScale = 0.0;

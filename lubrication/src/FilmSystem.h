@@ -45,6 +45,9 @@ struct FilmSystem {
   Eigen::ArrayXd src;           // Reynolds-mode constant part: aOut - inflow(theta=1) + squeeze
   Eigen::ArrayXd fluxScale;     // per node scale of the driving fluxes (residual norm)
   double residualScale = 1.0;   // F of the residual definition
+  // Mean diagP over the non-fixed nodes (1 when there is none or it is not positive): the
+  // diagonal of the Jacobian's identity rows at nodes whose own diagP is not positive.
+  double meanFreeDiagP = 1.0;
 
   std::vector<std::uint8_t> status;  // NodeStatus per node
   std::vector<std::uint8_t> dry;     // 1: dry node of the Reynolds partial-flooding heuristic

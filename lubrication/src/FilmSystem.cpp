@@ -37,11 +37,11 @@ void FilmSystem::resizeFor(const FilmGrid& grid) {
     }
   }
   order.reserve(n);
-  for (Eigen::ArrayXd* a : {&tE,        &tW,        &tN,   &tS,        &diagP,         &couE,
-                            &couN,      &aOut,      &inCx, &inCy,      &squeeze,       &capacity,
-                            &thetaPrev, &thetaCoef, &src,  &fluxScale, &fixedPressure, &fixedTheta,
-                            &hT,        &dhTdh,     &eta,  &phiF,      &phiFs,         &phiFp,
-                            &p,         &theta}) {
+  for (Eigen::ArrayXd* a :
+       {&tE,         &tW,   &tN,      &tS,       &diagP,     &couE,      &couN,  &aOut,
+        &inCx,       &inCy, &squeeze, &capacity, &thetaPrev, &thetaCoef, &src,   &fixedPressure,
+        &fixedTheta, &hT,   &dhTdh,   &eta,      &phiF,      &phiFs,     &phiFp, &p,
+        &theta}) {
     a->setZero(n);
   }
   inIx.assign(n, 0);
@@ -240,7 +240,6 @@ void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
   double pMin = std::numeric_limits<double>::infinity(), pMax = -pMin;
   if (model != CavitationModel::None)
     pMin = pMax = pCav;
-  freeCount = 0;
   int freeNodes = 0;
   double freeDiagSum = 0.0;
   for (int k = 0; k < n; ++k) {
@@ -248,7 +247,6 @@ void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
       pMin = std::min(pMin, fixedPressure[k]);
       pMax = std::max(pMax, fixedPressure[k]);
     } else {
-      ++freeCount;
       freeDiagSum += diagP[k];
       ++freeNodes;
     }
@@ -260,10 +258,11 @@ void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
   for (int k = 0; k < n; ++k) {
     // Reynolds-mode constant part (theta = 1 everywhere).
     src[k] = aOut[k] - inCx[k] - inCy[k] + squeeze[k];
-    fluxScale[k] = aOut[k] + std::abs(inCx[k]) + std::abs(inCy[k]) + std::abs(squeeze[k]) +
-                   capacity[k] + diagP[k] * span;
+    // Scale of the node's driving fluxes.
+    const double fluxScale = aOut[k] + std::abs(inCx[k]) + std::abs(inCy[k]) +
+                             std::abs(squeeze[k]) + capacity[k] + diagP[k] * span;
     if (status[k] != kFixed)
-      residualScale = std::max(residualScale, fluxScale[k]);
+      residualScale = std::max(residualScale, fluxScale);
   }
   if (!(residualScale > 0.0))
     residualScale = 1.0;

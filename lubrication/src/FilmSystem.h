@@ -25,7 +25,8 @@ struct FilmSystem {
   bool periodicX = false;
   // Neighbours; a missing neighbour is the node itself with a zero coefficient (branch-free).
   std::vector<int> nbE, nbW, nbN, nbS;
-  // Gauss-Seidel sweep order (follows the sliding direction) and the free-node list.
+  // The non-fixed nodes in Gauss-Seidel sweep order (lexicographic, following the sliding
+  // direction; rebuilt by assemble).
   std::vector<int> order;
 
   // ---- per-solve coefficients ----
@@ -43,7 +44,6 @@ struct FilmSystem {
   Eigen::ArrayXd thetaPrev;     // fill fraction at the start of the step (JFO)
   Eigen::ArrayXd thetaCoef;     // aOut + squeeze + capacity: coefficient of the own theta
   Eigen::ArrayXd src;           // Reynolds-mode constant part: aOut - inflow(theta=1) + squeeze
-  Eigen::ArrayXd fluxScale;     // per node scale of the driving fluxes (residual norm)
   double residualScale = 1.0;   // F of the residual definition
   // Mean diagP over the non-fixed nodes (1 when there is none or it is not positive): the
   // diagonal of the Jacobian's identity rows at nodes whose own diagP is not positive.
@@ -56,7 +56,6 @@ struct FilmSystem {
 
   // Nodal quantities kept for post-processing.
   Eigen::ArrayXd hT, dhTdh, eta, phiF, phiFs, phiFp;
-  int freeCount = 0;
 
   // ---- current iterate ----
   Eigen::ArrayXd p, theta;

@@ -169,13 +169,14 @@ void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
   fixedPressure.setZero();
   const FilmBoundary& b = pr.boundary;
   // inflowCouette: full-film Couette flux through the node's face into the region (> 0 when
-  // surface 1 slides inwards); supplyFlux = U_n * supply * edge length of the node.
+  // surface 1 slides inwards); supplyFlux = U_n * supply * edge length of the node. Starved
+  // edge nodes of the non-conservative models are marked dry by the partial-flooding march
+  // below, which starts at every inflow edge node (corners included).
   auto fixEdgeNode = [&](int k, const FilmEdge& edge, int along, double inflowCouette,
                          double normalSpeed, double edgeLength) {
     status[k] = kFixed;
     fixedPressure[k] = edge.pressure_Pa;
     fixedTheta[k] = 1.0;
-    dry[k] = 0;
     if (!(normalSpeed > 0.0))
       return;
     const double s = edgeSupply(edge, along);
@@ -188,8 +189,6 @@ void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
       fixedTheta[k] = th;
       if (th < 1.0)
         fixedPressure[k] = pCav;
-    } else if (pr.gap_m[k] > 2.0 * s) {
-      dry[k] = 1;
     }
   };
   // y edges first, then x edges so that corners take the x edge (FilmBoundary comment).

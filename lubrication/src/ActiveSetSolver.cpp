@@ -365,8 +365,9 @@ bool ActiveSetSolver::wouldChangeSet(const FilmSystem& s, const Eigen::VectorXd&
       if (s.p[k] + dz[k] < s.pCav - accuracy / s.diagP[k])
         return true;
     } else if (s.status[k] == kCav) {
-      const double r = cavResidual_[k] - (s.tE[k] * dz[s.nbE[k]] + s.tW[k] * dz[s.nbW[k]] +
-                                          s.tN[k] * dz[s.nbN[k]] + s.tS[k] * dz[s.nbS[k]]);
+      // Balance after the step; dz vanishes on the cavitated (masked) rows, so only the
+      // neighbours' pressure changes enter.
+      const double r = cavResidual_[k] + s.poiseuilleAt(k, dz.data());
       if (r < -rEps)
         return true;
     }

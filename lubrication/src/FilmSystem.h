@@ -65,10 +65,15 @@ struct FilmSystem {
   // Assembles all coefficients for the problem; classifies fixed nodes. Validated input only.
   void assemble(const FilmGrid& grid, const FilmProblem& problem);
 
+  // Five-point Poiseuille product at node k: net Poiseuille outflow of the nodal field x.
+  double poiseuilleAt(int k, const double* x) const {
+    return diagP[k] * x[k] -
+           (tE[k] * x[nbE[k]] + tW[k] * x[nbW[k]] + tN[k] * x[nbN[k]] + tS[k] * x[nbS[k]]);
+  }
+
   // Net outflow R_k of node k at the current iterate (FilmProblem.h).
   double residualAt(int k) const {
-    const double P = diagP[k] * p[k] - (tE[k] * p[nbE[k]] + tW[k] * p[nbW[k]] + tN[k] * p[nbN[k]] +
-                                        tS[k] * p[nbS[k]]);
+    const double P = poiseuilleAt(k, p.data());
     const double in = inCx[k] * theta[inIx[k]] + inCy[k] * theta[inIy[k]];
     return P + theta[k] * thetaCoef[k] - in - capacity[k] * thetaPrev[k];
   }

@@ -290,10 +290,6 @@ bool ActiveSetSolver::rebuildMultigrid(const FilmSystem& s) {
 bool ActiveSetSolver::linearSolveMultigrid(const FilmSystem& s, double* b, double target,
                                            double looseTarget) {
   Eigen::Map<Eigen::VectorXd> bv(b, s.n);
-  if (factorExact_) {  // a fallback factorisation of this very Jacobian exists
-    solveWithFactor(s, b, 1);
-    return true;
-  }
   bool fresh = false;
   if (!mgBuilt_ || refactorNext_) {
     refactorNext_ = false;
@@ -496,6 +492,14 @@ bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target,
     bv.setZero();
     return true;
   }
+  // A factorisation of this very Jacobian exists (sparse-direct path, or the multigrid path's
+  // fallback): solve directly. It is never stale here: refactorNext_ is only raised by a Krylov
+  // solve, which does not run while factorExact_ holds, and is cleared before every
+  // factorisation.
+  if (factorExact_) {
+    solveWithFactor(s, b, 1);
+    return true;
+  }
   if (useMg_)
     return linearSolveMultigrid(s, b, target, looseTarget);
   const bool haveFactor = s.jfo ? kluFactored_ : cholFactored_;
@@ -503,9 +507,7 @@ bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target,
     refactorNext_ = false;
     if (!factorCurrent(s))
       return false;
-  }
-  if (factorExact_) {
-    solveWithFactor(s, b, 1);
+    solveWithFactor(s, b, 1);  // the fresh factorisation is of the current Jacobian
     return true;
   }
   rhs_ = Eigen::Map<Eigen::VectorXd>(b, s.n);  // keep the right-hand side for a fallback

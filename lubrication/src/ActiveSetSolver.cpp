@@ -82,16 +82,9 @@ void ActiveSetSolver::fillValues(const FilmSystem& s) {
   std::fill(pat_.values.begin(), pat_.values.end(), 0.0);
   // Identity rows get the node's own Poiseuille diagonal (the film's conductance varies by
   // orders of magnitude): pivot-ratio checks stay meaningful and, should the node become an
-  // unknown later, the lagged factorisation acts on it like a Jacobi step.
-  double scale = 0.0;
-  int count = 0;
-  for (int k = 0; k < s.n; ++k) {
-    if (s.status[k] != kFixed) {
-      scale += s.diagP[k];
-      ++count;
-    }
-  }
-  scale = count > 0 && scale > 0.0 ? scale / count : 1.0;
+  // unknown later, the lagged factorisation acts on it like a Jacobi step. Where that diagonal is
+  // not positive, the mean over the non-fixed nodes (FilmSystem::meanFreeDiagP).
+  const double scale = s.meanFreeDiagP;
   double* v = pat_.values.data();
   for (int k = 0; k < s.n; ++k) {
     if (!eqRow_[k]) {
@@ -119,7 +112,7 @@ void ActiveSetSolver::fillValues(const FilmSystem& s) {
       if (s.status[k] != kCav)
         continue;
       const int e = s.nbE[k], w = s.nbW[k], no = s.nbN[k], so = s.nbS[k];
-      v[pat_.posSelf[k]] = s.aOut[k] + s.squeeze[k] + s.capacity[k];
+      v[pat_.posSelf[k]] = s.thetaCoef[k];
       if (e != k && s.inIx[e] == k && eqRow_[e])
         v[pat_.posE[k]] -= s.inCx[e];
       if (w != k && s.inIx[w] == k && eqRow_[w])
@@ -272,7 +265,7 @@ void ActiveSetSolver::precondition(const FilmSystem& s, const double* r, double*
         t += s.inCx[k] * z[ix];
       if (iy != k && colType_[iy] == 2)
         t += s.inCy[k] * z[iy];
-      const double a = s.aOut[k] + s.squeeze[k] + s.capacity[k];
+      const double a = s.thetaCoef[k];
       z[k] = a > 0.0 ? t / a : 0.0;
     }
     return;
@@ -297,10 +290,6 @@ bool ActiveSetSolver::rebuildMultigrid(const FilmSystem& s) {
 bool ActiveSetSolver::linearSolveMultigrid(const FilmSystem& s, double* b, double target,
                                            double looseTarget) {
   Eigen::Map<Eigen::VectorXd> bv(b, s.n);
-  if (factorExact_) {  // a fallback factorisation of this very Jacobian exists
-    solveWithFactor(s, b, 1);
-    return true;
-  }
   bool fresh = false;
   if (!mgBuilt_ || refactorNext_) {
     refactorNext_ = false;
@@ -372,8 +361,9 @@ bool ActiveSetSolver::wouldChangeSet(const FilmSystem& s, const Eigen::VectorXd&
       if (s.p[k] + dz[k] < s.pCav - accuracy / s.diagP[k])
         return true;
     } else if (s.status[k] == kCav) {
-      const double r = cavResidual_[k] - (s.tE[k] * dz[s.nbE[k]] + s.tW[k] * dz[s.nbW[k]] +
-                                          s.tN[k] * dz[s.nbN[k]] + s.tS[k] * dz[s.nbS[k]]);
+      // Balance after the step; dz vanishes on the cavitated (masked) rows, so only the
+      // neighbours' pressure changes enter.
+      const double r = cavResidual_[k] + s.poiseuilleAt(k, dz.data());
       if (r < -rEps)
         return true;
     }
@@ -502,6 +492,14 @@ bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target,
     bv.setZero();
     return true;
   }
+  // A factorisation of this very Jacobian exists (sparse-direct path, or the multigrid path's
+  // fallback): solve directly. It is never stale here: refactorNext_ is only raised by a Krylov
+  // solve, which does not run while factorExact_ holds, and is cleared before every
+  // factorisation.
+  if (factorExact_) {
+    solveWithFactor(s, b, 1);
+    return true;
+  }
   if (useMg_)
     return linearSolveMultigrid(s, b, target, looseTarget);
   const bool haveFactor = s.jfo ? kluFactored_ : cholFactored_;
@@ -509,9 +507,7 @@ bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target,
     refactorNext_ = false;
     if (!factorCurrent(s))
       return false;
-  }
-  if (factorExact_) {
-    solveWithFactor(s, b, 1);
+    solveWithFactor(s, b, 1);  // the fresh factorisation is of the current Jacobian
     return true;
   }
   rhs_ = Eigen::Map<Eigen::VectorXd>(b, s.n);  // keep the right-hand side for a fallback
@@ -606,7 +602,7 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
           changed = true;
         }
       } else if (s.status[k] == kCav && !deferReformation) {
-        const double a = s.aOut[k] + s.squeeze[k] + s.capacity[k];
+        const double a = s.thetaCoef[k];
         const double thTol = std::max(1e-10, target > innerTarget && a > 0.0 ? target / a : 0.0);
         const bool toFull =
             s.jfo ? (th[k] > 1.0 + thTol || th[k] < -thTol) : (s.residualAt(k) < -rEps);

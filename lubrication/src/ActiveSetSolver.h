@@ -60,10 +60,6 @@ class ActiveSetSolver {
   int factorisations() const { return factorisations_; }
   int krylovIterations() const { return krylovIterations_; }
   int multigridBuilds() const { return multigridBuilds_; }
-  // True when the symmetric systems of the last solve() used the multigrid preconditioner.
-  bool usesMultigrid() const { return useMg_; }
-  // The multigrid preconditioner (tests inspect it).
-  GridMultigrid& multigrid() { return mg_; }
 
  private:
   void fillJacobian(const FilmSystem& sys);  // row flags, and values unless multigrid is used
@@ -117,10 +113,8 @@ class ActiveSetSolver {
   int factorisations_ = 0, krylovIterations_ = 0;
   bool stoppedLoose_ = false;
   double tolerance_ = 1e-8;
-  Eigen::VectorXd cavResidual_;
-  Eigen::VectorXd factorDiag_,
-      precondScale_;  // diagonal at factorisation, drift scaling  // Reynolds: balance of the
-                      // cavitated nodes before the step
+  Eigen::VectorXd cavResidual_;  // Reynolds: balance of the cavitated nodes before the step
+  Eigen::VectorXd factorDiag_, precondScale_;  // diagonal at factorisation, drift scaling
 
   Eigen::VectorXd rhs_, step_, x_, r_, z_, p_, q_;
   Eigen::MatrixXd V_;  // GMRES basis

@@ -6,15 +6,7 @@ namespace pistondyn::lubrication::detail {
 
 namespace {
 
-// Derivative at node i of a nodal function f along one axis from a quadratic through three
-// nodes: central on interior (and periodic) nodes, one-sided at open ends. Second order on
-// graded grids. Returns weights (cm, c0, cp) for (f[i-1], f[i], f[i+1]) or, at an open start,
-// for (f[0], f[1], f[2]) and, at an open end, for (f[n-3], f[n-2], f[n-1]).
-struct Stencil3 {
-  int im, i0, ip;
-  double cm, c0, cp;
-};
-
+// The Stencil3 of node i along the axis with coordinates c (FilmPostprocess.h).
 Stencil3 derivativeStencil(const Eigen::VectorXd& c, int i, bool periodic, double period) {
   const int n = static_cast<int>(c.size());
   if (periodic || (i > 0 && i < n - 1)) {
@@ -57,10 +49,29 @@ void integrateShear(SurfaceShear& s, const FilmGrid& grid, const Eigen::Vector2d
   s.poiseuilleMoment_Nm = mp;
 }
 
+struct LoadAndMoments {
+  double load = 0.0, firstMomentX = 0.0, firstMomentY = 0.0;
+};
+
+// Load and first moments about point c of the nodal field q(k) (a pressure or a pressure
+// derivative).
+template <class NodalField>
+LoadAndMoments integrateLoad(const FilmGrid& grid, const Eigen::Vector2d& c, int n, NodalField q) {
+  const Eigen::ArrayXd& A = grid.areaWeights_m2();
+  LoadAndMoments r;
+  for (int k = 0; k < n; ++k) {
+    const double v = q(k);
+    r.load += A[k] * v;
+    r.firstMomentX += (grid.xFirstMomentWeights_m3()[k] - c.x() * A[k]) * v;
+    r.firstMomentY += (grid.yFirstMomentWeights_m3()[k] - c.y() * A[k]) * v;
+  }
+  return r;
+}
+
 }  // namespace
 
 void postprocess(const FilmGrid& grid, const FilmProblem& pr, const FilmSystem& s,
-                 const Eigen::MatrixXd* dP, FilmResult& res) {
+                 const Eigen::MatrixXd* dP, PostprocessWorkspace& ws, FilmResult& res) {
   const int n = s.n, nx = s.nx, ny = s.ny;
   FilmState& st = res.state;
   st.pressure_Pa = s.p;
@@ -77,25 +88,23 @@ void postprocess(const FilmGrid& grid, const FilmProblem& pr, const FilmSystem& 
   res.areaWeights_m2 = A;
   const Eigen::Vector2d& c = pr.momentPoint_m;
   const double pref = pr.referencePressure_Pa;
-  double load = 0.0, mx = 0.0, my = 0.0;
-  for (int k = 0; k < n; ++k) {
-    const double q = s.p[k] - pref;
-    load += A[k] * q;
-    mx += (grid.xFirstMomentWeights_m3()[k] - c.x() * A[k]) * q;
-    my += (grid.yFirstMomentWeights_m3()[k] - c.y() * A[k]) * q;
-  }
-  res.load_N = load;
-  res.firstMomentX_Nm = mx;
-  res.firstMomentY_Nm = my;
+  const LoadAndMoments lm = integrateLoad(grid, c, n, [&](int k) { return s.p[k] - pref; });
+  res.load_N = lm.load;
+  res.firstMomentX_Nm = lm.firstMomentX;
+  res.firstMomentY_Nm = lm.firstMomentY;
 
   // Shear stress (FilmResult comment) with the nodal pressure gradient.
   resizeShear(res.shearOnSurface1, n);
   resizeShear(res.shearOnSurface2, n);
   const double Ux = pr.slidingVelocity_mps.x(), Uy = pr.slidingVelocity_mps.y();
+  ws.xStencils.resize(static_cast<size_t>(nx));
+  for (int i = 0; i < nx; ++i)
+    ws.xStencils[static_cast<size_t>(i)] =
+        derivativeStencil(grid.x_m(), i, grid.isPeriodicX(), grid.periodX_m());
   for (int j = 0; j < ny; ++j) {
     const Stencil3 sy = derivativeStencil(grid.y_m(), j, false, 0.0);
     for (int i = 0; i < nx; ++i) {
-      const Stencil3 sx = derivativeStencil(grid.x_m(), i, grid.isPeriodicX(), grid.periodX_m());
+      const Stencil3& sx = ws.xStencils[static_cast<size_t>(i)];
       const int k = i + nx * j;
       const double dpdx =
           sx.cm * s.p[sx.im + nx * j] + sx.c0 * s.p[sx.i0 + nx * j] + sx.cp * s.p[sx.ip + nx * j];
@@ -137,16 +146,10 @@ void postprocess(const FilmGrid& grid, const FilmProblem& pr, const FilmSystem& 
     res.dFirstMomentX_dVelocity.resize(m);
     res.dFirstMomentY_dVelocity.resize(m);
     for (Eigen::Index col = 0; col < m; ++col) {
-      double dl = 0.0, dmx = 0.0, dmy = 0.0;
-      for (int k = 0; k < n; ++k) {
-        const double d = (*dP)(k, col);
-        dl += A[k] * d;
-        dmx += (grid.xFirstMomentWeights_m3()[k] - c.x() * A[k]) * d;
-        dmy += (grid.yFirstMomentWeights_m3()[k] - c.y() * A[k]) * d;
-      }
-      res.dLoad_dVelocity[col] = dl;
-      res.dFirstMomentX_dVelocity[col] = dmx;
-      res.dFirstMomentY_dVelocity[col] = dmy;
+      const LoadAndMoments d = integrateLoad(grid, c, n, [&](int k) { return (*dP)(k, col); });
+      res.dLoad_dVelocity[col] = d.load;
+      res.dFirstMomentX_dVelocity[col] = d.firstMomentX;
+      res.dFirstMomentY_dVelocity[col] = d.firstMomentY;
     }
   } else {
     res.dPressure_dVelocity.resize(0, 0);

@@ -177,6 +177,7 @@ struct FilmSolver::Impl {
   detail::FilmSystem sys;
   detail::ActiveSetSolver fast;
   Eigen::MatrixXd derivRhs;
+  detail::PostprocessWorkspace post;
 
   void initialiseIterate(const FilmProblem& pr, const FilmState* warm);
   void solve(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm, FilmResult& r);
@@ -286,7 +287,7 @@ void FilmSolver::Impl::solve(const FilmGrid& grid, const FilmProblem& pr, const 
   res.factorisations = fast.factorisations() - factorisations0;
   res.krylovIterations = fast.krylovIterations() - krylov0;
   res.multigridBuilds = fast.multigridBuilds() - mgBuilds0;
-  detail::postprocess(grid, pr, sys, m > 0 ? &derivRhs : nullptr, res);
+  detail::postprocess(grid, pr, sys, m > 0 ? &derivRhs : nullptr, post, res);
 }
 
 FilmSolver::FilmSolver(const FilmSolverOptions& options) : impl_(std::make_unique<Impl>()) {

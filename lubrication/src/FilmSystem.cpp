@@ -38,9 +38,9 @@ void FilmSystem::resizeFor(const FilmGrid& grid) {
   }
   order.reserve(n);
   for (Eigen::ArrayXd* a :
-       {&tE,         &tW,   &tN,      &tS,       &diagP,     &couE,  &couN,      &aOut,
-        &inCx,       &inCy, &squeeze, &capacity, &thetaPrev, &src,   &fluxScale, &fixedPressure,
-        &fixedTheta, &hT,   &dhTdh,   &eta,      &phiF,      &phiFs, &phiFp,     &p,
+       {&tE,         &tW,   &tN,      &tS,       &diagP,     &couE,      &couN,  &aOut,
+        &inCx,       &inCy, &squeeze, &capacity, &thetaPrev, &thetaCoef, &src,   &fixedPressure,
+        &fixedTheta, &hT,   &dhTdh,   &eta,      &phiF,      &phiFs,     &phiFp, &p,
         &theta}) {
     a->setZero(n);
   }
@@ -159,6 +159,7 @@ void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
     squeeze[k] = area[k] * dhTdh[k] * rate;
     capacity[k] = transient ? area[k] * hT[k] / pr.timeStep_s : 0.0;
     thetaPrev[k] = (jfo && hasPrev) ? pr.previousFillFraction[k] : 1.0;
+    thetaCoef[k] = aOut[k] + squeeze[k] + capacity[k];
   }
 
   // ---- fixed nodes: open edges, starved inlets, dry zones ----
@@ -168,13 +169,14 @@ void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
   fixedPressure.setZero();
   const FilmBoundary& b = pr.boundary;
   // inflowCouette: full-film Couette flux through the node's face into the region (> 0 when
-  // surface 1 slides inwards); supplyFlux = U_n * supply * edge length of the node.
+  // surface 1 slides inwards); supplyFlux = U_n * supply * edge length of the node. Starved
+  // edge nodes of the non-conservative models are marked dry by the partial-flooding march
+  // below, which starts at every inflow edge node (corners included).
   auto fixEdgeNode = [&](int k, const FilmEdge& edge, int along, double inflowCouette,
                          double normalSpeed, double edgeLength) {
     status[k] = kFixed;
     fixedPressure[k] = edge.pressure_Pa;
     fixedTheta[k] = 1.0;
-    dry[k] = 0;
     if (!(normalSpeed > 0.0))
       return;
     const double s = edgeSupply(edge, along);
@@ -187,8 +189,6 @@ void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
       fixedTheta[k] = th;
       if (th < 1.0)
         fixedPressure[k] = pCav;
-    } else if (pr.gap_m[k] > 2.0 * s) {
-      dry[k] = 1;
     }
   };
   // y edges first, then x edges so that corners take the x edge (FilmBoundary comment).
@@ -239,25 +239,29 @@ void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
   double pMin = std::numeric_limits<double>::infinity(), pMax = -pMin;
   if (model != CavitationModel::None)
     pMin = pMax = pCav;
-  freeCount = 0;
+  int freeNodes = 0;
+  double freeDiagSum = 0.0;
   for (int k = 0; k < n; ++k) {
     if (status[k] == kFixed) {
       pMin = std::min(pMin, fixedPressure[k]);
       pMax = std::max(pMax, fixedPressure[k]);
     } else {
-      ++freeCount;
+      freeDiagSum += diagP[k];
+      ++freeNodes;
     }
   }
+  meanFreeDiagP = freeNodes > 0 && freeDiagSum > 0.0 ? freeDiagSum / freeNodes : 1.0;
   const double span = (pMax > pMin) ? pMax - pMin : 0.0;
 
   residualScale = 0.0;
   for (int k = 0; k < n; ++k) {
     // Reynolds-mode constant part (theta = 1 everywhere).
     src[k] = aOut[k] - inCx[k] - inCy[k] + squeeze[k];
-    fluxScale[k] = aOut[k] + std::abs(inCx[k]) + std::abs(inCy[k]) + std::abs(squeeze[k]) +
-                   capacity[k] + diagP[k] * span;
+    // Scale of the node's driving fluxes.
+    const double fluxScale = aOut[k] + std::abs(inCx[k]) + std::abs(inCy[k]) +
+                             std::abs(squeeze[k]) + capacity[k] + diagP[k] * span;
     if (status[k] != kFixed)
-      residualScale = std::max(residualScale, fluxScale[k]);
+      residualScale = std::max(residualScale, fluxScale);
   }
   if (!(residualScale > 0.0))
     residualScale = 1.0;

@@ -25,7 +25,8 @@ struct FilmSystem {
   bool periodicX = false;
   // Neighbours; a missing neighbour is the node itself with a zero coefficient (branch-free).
   std::vector<int> nbE, nbW, nbN, nbS;
-  // Gauss-Seidel sweep order (follows the sliding direction) and the free-node list.
+  // The non-fixed nodes in Gauss-Seidel sweep order (lexicographic, following the sliding
+  // direction; rebuilt by assemble).
   std::vector<int> order;
 
   // ---- per-solve coefficients ----
@@ -41,9 +42,12 @@ struct FilmSystem {
   Eigen::ArrayXd squeeze;       // A dhT/dt, [m^3/s]
   Eigen::ArrayXd capacity;      // A hT / dt, [m^3/s] (0 when steady or not JFO)
   Eigen::ArrayXd thetaPrev;     // fill fraction at the start of the step (JFO)
+  Eigen::ArrayXd thetaCoef;     // aOut + squeeze + capacity: coefficient of the own theta
   Eigen::ArrayXd src;           // Reynolds-mode constant part: aOut - inflow(theta=1) + squeeze
-  Eigen::ArrayXd fluxScale;     // per node scale of the driving fluxes (residual norm)
   double residualScale = 1.0;   // F of the residual definition
+  // Mean diagP over the non-fixed nodes (1 when there is none or it is not positive): the
+  // diagonal of the Jacobian's identity rows at nodes whose own diagP is not positive.
+  double meanFreeDiagP = 1.0;
 
   std::vector<std::uint8_t> status;  // NodeStatus per node
   std::vector<std::uint8_t> dry;     // 1: dry node of the Reynolds partial-flooding heuristic
@@ -52,7 +56,6 @@ struct FilmSystem {
 
   // Nodal quantities kept for post-processing.
   Eigen::ArrayXd hT, dhTdh, eta, phiF, phiFs, phiFp;
-  int freeCount = 0;
 
   // ---- current iterate ----
   Eigen::ArrayXd p, theta;
@@ -62,12 +65,17 @@ struct FilmSystem {
   // Assembles all coefficients for the problem; classifies fixed nodes. Validated input only.
   void assemble(const FilmGrid& grid, const FilmProblem& problem);
 
+  // Five-point Poiseuille product at node k: net Poiseuille outflow of the nodal field x.
+  double poiseuilleAt(int k, const double* x) const {
+    return diagP[k] * x[k] -
+           (tE[k] * x[nbE[k]] + tW[k] * x[nbW[k]] + tN[k] * x[nbN[k]] + tS[k] * x[nbS[k]]);
+  }
+
   // Net outflow R_k of node k at the current iterate (FilmProblem.h).
   double residualAt(int k) const {
-    const double P = diagP[k] * p[k] - (tE[k] * p[nbE[k]] + tW[k] * p[nbW[k]] + tN[k] * p[nbN[k]] +
-                                        tS[k] * p[nbS[k]]);
+    const double P = poiseuilleAt(k, p.data());
     const double in = inCx[k] * theta[inIx[k]] + inCy[k] * theta[inIy[k]];
-    return P + theta[k] * (aOut[k] + squeeze[k] + capacity[k]) - in - capacity[k] * thetaPrev[k];
+    return P + theta[k] * thetaCoef[k] - in - capacity[k] * thetaPrev[k];
   }
 
   // Relative residual of the current iterate (definition in FilmProblem.h).

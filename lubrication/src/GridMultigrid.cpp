@@ -6,8 +6,6 @@
 namespace pistondyn::lubrication::detail {
 
 void GridMultigrid::buildMap(int fineCount, bool periodic, bool coarsen, Map1d& m) {
-  m.fineCount = fineCount;
-  m.periodic = periodic;
   m.c0.assign(static_cast<size_t>(fineCount), 0);
   m.c1.assign(static_cast<size_t>(fineCount), 0);
   m.w0.assign(static_cast<size_t>(fineCount), 1.0);
@@ -120,7 +118,6 @@ void GridMultigrid::prepare(const FilmSystem& sys) {
   shapeN_ = sys.n;
   shapeNx_ = sys.nx;
   shapePeriodic_ = sys.periodicX;
-  built_ = false;
   levels_.clear();
   Level fine;
   fine.nx = sys.nx;
@@ -209,7 +206,6 @@ void GridMultigrid::prepare(const FilmSystem& sys) {
 }
 
 bool GridMultigrid::rebuild(const FilmSystem& sys, const std::uint8_t* eqRow) {
-  built_ = false;
   if (levels_.size() > 1) {
     fineAsNinePoint(sys);
     galerkin(0, fine9_.data(), fineDiag_.data(), eqRow);
@@ -224,7 +220,6 @@ bool GridMultigrid::rebuild(const FilmSystem& sys, const std::uint8_t* eqRow) {
     if (!factorCoarsest())
       return false;
   }
-  built_ = true;
   return true;
 }
 
@@ -543,14 +538,14 @@ void GridMultigrid::apply(const FilmSystem& s, const double* rIn, double* z) {
         for (int i = j & 1, k = i + nx * j; i < nx; i += 2, k += 2)
           res(k);
     }
-    restrictTo(levels_[1], r, nx, ny);
+    restrictTo(levels_[1], r, nx);
     for (size_t l = 1; l + 1 < levels; ++l) {
       Level& L = levels_[l];
       std::fill(L.x.begin(), L.x.end(), 0.0);
       for (int it = 0; it < smoothingSteps; ++it)
         smoothLevel(L, true);
       residualLevel(L);
-      restrictTo(levels_[l + 1], L.r.data(), L.nx, L.ny);
+      restrictTo(levels_[l + 1], L.r.data(), L.nx);
     }
     coarsestSolve(levels_.back());
     for (size_t l = levels - 1; l-- > 1;) {
@@ -584,8 +579,7 @@ void GridMultigrid::residualLevel(Level& L) const {
 
 // c.b = P' r (r vanishes on masked fine nodes), as a gather over each coarse node's fine
 // neighbours.
-void GridMultigrid::restrictTo(Level& c, const double* r, int fnx, int fny) const {
-  (void)fny;
+void GridMultigrid::restrictTo(Level& c, const double* r, int fnx) const {
   const Map1d &mx = c.mx, &my = c.my;
   const int *g0 = mx.g[0].data(), *g1 = mx.g[1].data(), *g2 = mx.g[2].data();
   const double *w0 = mx.gw[0].data(), *w1 = mx.gw[1].data(), *w2 = mx.gw[2].data();

@@ -71,7 +71,6 @@ class GridMultigrid {
   // vanish on masked rows; z vanishes there on return. r and z may not alias.
   void apply(const FilmSystem& sys, const double* r, double* z);
 
-  bool built() const { return built_; }
   int levelCount() const { return static_cast<int>(levels_.size()); }
   int levelNodes(int l) const { return levels_[static_cast<size_t>(l)].n; }
   // Cost of one rebuild() in units of one PCG iteration with this preconditioner (a cycle plus
@@ -82,8 +81,7 @@ class GridMultigrid {
 
   // Fine-to-coarse map of one direction: fine index f takes w0 * coarse c0 + w1 * coarse c1.
   struct Map1d {
-    int fineCount = 0, coarseCount = 0;
-    bool periodic = false;
+    int coarseCount = 0;
     std::vector<int> c0, c1;
     std::vector<double> w0, w1;
     // Gather form of the restriction P': coarse node c collects up to 3 fine nodes g[t][c] with
@@ -119,7 +117,7 @@ class GridMultigrid {
   void finishLevel(Level& c);
   bool factorCoarsest();
   void residualLevel(Level& L) const;
-  void restrictTo(Level& c, const double* r, int fnx, int fny) const;
+  void restrictTo(Level& c, const double* r, int fnx) const;
   void prolongFrom(const Level& c, double* x, int fnx, int fny, const double* mask);
   // One red-black Gauss-Seidel half sweep (colour 0: i + j even) on the fine level.
   void smoothFineColour(const FilmSystem& sys, double* x, const double* b, int colour,
@@ -130,7 +128,6 @@ class GridMultigrid {
   std::vector<Level> levels_;
   int shapeN_ = -1, shapeNx_ = -1;
   bool shapePeriodic_ = false;
-  bool built_ = false;
   Pattern pattern_{};
   double rebuildCost_ = 5.0;
   std::vector<double> fineInvDiag_;       // 1 / diagP on equation rows, 0 on masked ones

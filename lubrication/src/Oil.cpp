@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "OilUnits.h"
+
 namespace pistondyn::lubrication {
 
 namespace {
@@ -13,7 +15,7 @@ namespace {
 constexpr double kZeroCelsius_K = 273.15;
 constexpr double kWaltherShift_cSt = 0.7;         // ASTM D341, nu >= 2 cSt
 constexpr double kWaltherMinViscosity_cSt = 2.0;  // lower limit of the simple form
-constexpr double kM2psPerCSt = 1e-6;
+using detail::kM2psPerCSt;
 constexpr double kMaxThermalExpansion_perK = 2e-3;
 
 [[noreturn]] void fail(const std::string& what) {
@@ -183,11 +185,16 @@ Oil::Oil(const OilSpec& spec) : spec_(spec) {
   }
 }
 
-void Oil::checkTemperature(const char* function, double temperature_degC) const {
+void Oil::checkTemperature(const char* function, double temperature_degC,
+                           Eigen::Index index) const {
   if (!(temperature_degC >= minTemperature_degC_ && temperature_degC <= maxTemperature_degC_)) {
     std::ostringstream msg;
-    msg << "Oil::" << function << ": temperature " << temperature_degC
-        << " degC is outside the valid range [" << minTemperature_degC_ << ", "
+    msg << "Oil::" << function << ": ";
+    if (index >= 0)
+      msg << "temperature_degC[" << index << "] = " << temperature_degC;
+    else
+      msg << "temperature " << temperature_degC;
+    msg << " degC is outside the valid range [" << minTemperature_degC_ << ", "
         << maxTemperature_degC_ << "] degC of oil '" << spec_.name << "'";
     throw std::invalid_argument(msg.str());
   }
@@ -214,10 +221,14 @@ double Oil::calcDensity_kgpm3(double temperature_degC) const {
   return density_kgpm3(temperature_degC);
 }
 
-double Oil::calcDynamicViscosity_Pas(double temperature_degC) const {
-  checkTemperature("calcDynamicViscosity_Pas", temperature_degC);
+double Oil::dynamicViscosity_Pas(double temperature_degC) const {
   return density_kgpm3(temperature_degC) *
          kinematicViscosity_cSt(temperature_degC + kZeroCelsius_K) * kM2psPerCSt;
+}
+
+double Oil::calcDynamicViscosity_Pas(double temperature_degC) const {
+  checkTemperature("calcDynamicViscosity_Pas", temperature_degC);
+  return dynamicViscosity_Pas(temperature_degC);
 }
 
 void Oil::calcDynamicViscosity_Pas(const Eigen::Ref<const Eigen::ArrayXd>& temperature_degC,
@@ -229,20 +240,10 @@ void Oil::calcDynamicViscosity_Pas(const Eigen::Ref<const Eigen::ArrayXd>& tempe
     throw std::invalid_argument(msg.str());
   }
   // Check everything first, so that a bad entry leaves the output untouched.
-  for (Eigen::Index k = 0; k < temperature_degC.size(); ++k) {
-    const double t = temperature_degC[k];
-    if (!(t >= minTemperature_degC_ && t <= maxTemperature_degC_)) {
-      std::ostringstream msg;
-      msg << "Oil::calcDynamicViscosity_Pas: temperature_degC[" << k << "] = " << t
-          << " degC is outside the valid range [" << minTemperature_degC_ << ", "
-          << maxTemperature_degC_ << "] degC of oil '" << spec_.name << "'";
-      throw std::invalid_argument(msg.str());
-    }
-  }
-  for (Eigen::Index k = 0; k < temperature_degC.size(); ++k) {
-    const double t = temperature_degC[k];
-    viscosity_Pas[k] = density_kgpm3(t) * kinematicViscosity_cSt(t + kZeroCelsius_K) * kM2psPerCSt;
-  }
+  for (Eigen::Index k = 0; k < temperature_degC.size(); ++k)
+    checkTemperature("calcDynamicViscosity_Pas", temperature_degC[k], k);
+  for (Eigen::Index k = 0; k < temperature_degC.size(); ++k)
+    viscosity_Pas[k] = dynamicViscosity_Pas(temperature_degC[k]);
 }
 
 double Oil::calcDynamicViscosityAtKelvin_Pas(double temperature_K) const {

@@ -15,11 +15,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "OilUnits.h"
+
 namespace pistondyn::lubrication {
 
 namespace {
 
-constexpr double kM2psPerCSt = 1e-6;
+using detail::kM2psPerCSt;
 // Density of water at 60 F (15.56 C), to turn a 60/60 F specific gravity into a density.
 constexpr double kWaterDensityAt60F_kgpm3 = 999.01;
 // Walther data points of all data sheets.

@@ -28,6 +28,13 @@ void checkPeklenik(const char* name, double gamma) {
   }
 }
 
+// Equal brackets give bit-identical blends (same rows, same weight), so calcFactors
+// evaluates the row functions once and reuses the value.
+bool sameBracket(const patir_cheng::detail::GammaBracket& a,
+                 const patir_cheng::detail::GammaBracket& b) {
+  return a.lo == b.lo && a.hi == b.hi && a.wHi == b.wHi;
+}
+
 }  // namespace
 
 PatirChengFlowFactors::PatirChengFlowFactors(const PatirChengParameters& parameters)
@@ -69,6 +76,8 @@ PatirChengFlowFactors::PatirChengFlowFactors(const PatirChengParameters& paramet
   bracketCross_ = patir_cheng::detail::bracketGamma(1.0 / gammaComposite_);
   bracket1_ = patir_cheng::detail::bracketGamma(parameters.peklenik1);
   bracket2_ = patir_cheng::detail::bracketGamma(parameters.peklenik2);
+  crossEqualsSliding_ = sameBracket(bracketCross_, bracketSliding_);
+  bracket2EqualsBracket1_ = sameBracket(bracket2_, bracket1_);
 }
 
 NodeFlowFactors PatirChengFlowFactors::calcFactors(double h_m) const {
@@ -91,20 +100,29 @@ NodeFlowFactors PatirChengFlowFactors::calcFactors(double h_m) const {
     f.phiPressureCross = pcd::pressureFlowDesignNoteFit(H, 1.0 / gammaComposite_);
   } else {
     f.phiPressureSliding = blend(bracketSliding_, H, pcd::pressureFlowRow);
-    f.phiPressureCross = blend(bracketCross_, H, pcd::pressureFlowRow);
+    f.phiPressureCross =
+        crossEqualsSliding_ ? f.phiPressureSliding : blend(bracketCross_, H, pcd::pressureFlowRow);
   }
 
   // Each term only where its surface is rough: a smooth surface contributes nothing and
   // skipping it saves the transcendental calls.
+  // With gamma1 = gamma2 (the default) both surfaces share one blend, evaluated once.
   double phiS = 0.0;
   double phiFs = 0.0;
+  double shear1 = 0.0;
+  double shearFs1 = 0.0;
   if (varianceRatio1_ > 0.0) {
-    phiS += varianceRatio1_ * blend(bracket1_, H, pcd::shearFlowRow);
-    phiFs += varianceRatio1_ * blend(bracket1_, H, pcd::shearStressFsRow);
+    shear1 = blend(bracket1_, H, pcd::shearFlowRow);
+    shearFs1 = blend(bracket1_, H, pcd::shearStressFsRow);
+    phiS += varianceRatio1_ * shear1;
+    phiFs += varianceRatio1_ * shearFs1;
   }
   if (varianceRatio2_ > 0.0) {
-    phiS -= varianceRatio2_ * blend(bracket2_, H, pcd::shearFlowRow);
-    phiFs -= varianceRatio2_ * blend(bracket2_, H, pcd::shearStressFsRow);
+    const bool reuse = bracket2EqualsBracket1_ && varianceRatio1_ > 0.0;
+    const double shear2 = reuse ? shear1 : blend(bracket2_, H, pcd::shearFlowRow);
+    const double shearFs2 = reuse ? shearFs1 : blend(bracket2_, H, pcd::shearStressFsRow);
+    phiS -= varianceRatio2_ * shear2;
+    phiFs -= varianceRatio2_ * shearFs2;
   }
   f.sigmaPhiS_m = sigma_m_ * phiS;
   f.phiFs = phiFs;

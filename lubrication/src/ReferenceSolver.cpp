@@ -20,10 +20,7 @@ double reynoldsSweep(FilmSystem& s, double omega) {
   double* p = s.p.data();
   const double pCav = s.pCav;
   for (const int k : s.order) {
-    const double r = s.diagP[k] * p[k] -
-                     (s.tE[k] * p[s.nbE[k]] + s.tW[k] * p[s.nbW[k]] + s.tN[k] * p[s.nbN[k]] +
-                      s.tS[k] * p[s.nbS[k]]) +
-                     s.src[k];
+    const double r = s.poiseuilleAt(k, p) + s.src[k];
     double pn = p[k] - omega * r / s.diagP[k];
     if (kProject) {
       worst = std::max(worst, p[k] <= pCav ? -r : std::abs(r));
@@ -43,11 +40,10 @@ double elrodAdamsSweep(FilmSystem& s, double omega, double omegaTheta) {
   double* th = s.theta.data();
   const double pCav = s.pCav;
   for (const int k : s.order) {
-    const double P = s.diagP[k] * p[k] - (s.tE[k] * p[s.nbE[k]] + s.tW[k] * p[s.nbW[k]] +
-                                          s.tN[k] * p[s.nbN[k]] + s.tS[k] * p[s.nbS[k]]);
+    const double P = s.poiseuilleAt(k, p);
     const double G =
         -(s.inCx[k] * th[s.inIx[k]] + s.inCy[k] * th[s.inIy[k]]) - s.capacity[k] * s.thetaPrev[k];
-    const double a = s.aOut[k] + s.squeeze[k] + s.capacity[k];
+    const double a = s.thetaCoef[k];
     if (th[k] >= 1.0) {
       const double r = P + a + G;
       worst = std::max(worst, std::abs(r));

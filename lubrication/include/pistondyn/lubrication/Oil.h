@@ -87,9 +87,13 @@ class Oil {
   const OilSpec& getSpec() const { return spec_; }
 
  private:
-  void checkTemperature(const char* function, double temperature_degC) const;
-  double kinematicViscosity_cSt(double temperature_K) const;  // unchecked
-  double density_kgpm3(double temperature_degC) const;        // unchecked
+  // Throws std::invalid_argument naming function (and, for index >= 0, the array entry
+  // temperature_degC[index]) if the temperature is outside the valid range.
+  void checkTemperature(const char* function, double temperature_degC,
+                        Eigen::Index index = -1) const;
+  double kinematicViscosity_cSt(double temperature_K) const;   // unchecked
+  double density_kgpm3(double temperature_degC) const;         // unchecked
+  double dynamicViscosity_Pas(double temperature_degC) const;  // unchecked
 
   OilSpec spec_;
   double waltherA_ = 0.0;

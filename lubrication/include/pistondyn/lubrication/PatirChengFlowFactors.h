@@ -106,6 +106,9 @@ class PatirChengFlowFactors final : public FlowFactorModel {
   patir_cheng::detail::GammaBracket bracketCross_;    // 1 / gammaC
   patir_cheng::detail::GammaBracket bracket1_;        // gamma1
   patir_cheng::detail::GammaBracket bracket2_;        // gamma2
+  // Bracket equalities, so that calcFactors blends each row function once per bracket.
+  bool crossEqualsSliding_ = false;      // bracketCross_ == bracketSliding_ (gammaC = 1)
+  bool bracket2EqualsBracket1_ = false;  // bracket2_ == bracket1_ (gamma1 = gamma2)
 };
 
 }  // namespace pistondyn::lubrication

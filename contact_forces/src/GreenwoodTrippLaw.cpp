@@ -15,18 +15,18 @@ constexpr double kPi = 3.14159265358979323846;
 
 void validatePowerLaw(const PowerLawTailFit& fit, const char* name) {
   const std::string n(name);
-  detail::requirePositiveFinite(fit.coefficient, kWhere, (n + ".coefficient").c_str(), "");
-  detail::requirePositiveFinite(fit.exponent, kWhere, (n + ".exponent").c_str(), "");
-  detail::requireFinite(fit.lambdaMax, kWhere, (n + ".lambdaMax").c_str(), "");
+  detail::requirePositiveFinite(fit.coefficient, kWhere, n + ".coefficient", "");
+  detail::requirePositiveFinite(fit.exponent, kWhere, n + ".exponent", "");
+  detail::requireFinite(fit.lambdaMax, kWhere, n + ".lambdaMax", "");
 }
 
 void validatePolynomial(const PolynomialTailFit& fit, const char* name) {
   const std::string n(name);
   for (std::size_t k = 0; k < fit.coefficients.size(); ++k) {
     detail::requireFinite(fit.coefficients[k], kWhere,
-                          (n + ".coefficients[" + std::to_string(k) + "]").c_str(), "");
+                          n + ".coefficients[" + std::to_string(k) + "]", "");
   }
-  detail::requireFinite(fit.lambdaEnd, kWhere, (n + ".lambdaEnd").c_str(), "");
+  detail::requireFinite(fit.lambdaEnd, kWhere, n + ".lambdaEnd", "");
 }
 
 }  // namespace

@@ -27,6 +27,15 @@ void requirePressure(double p, const char* function) {
   }
 }
 
+// tanh(s/v_ε)/s [s/m] for x = s/v_ε, finite at s = 0 (where it is 1/v_ε).
+inline double tanhFractionOverSpeed(double x, double speed, double vEps) {
+  if (x < 1e-3) {  // tanh(x)/x = 1 − x²/3 + 2x⁴/15 − …; truncation error < 1e-18
+    const double x2 = x * x;
+    return (1.0 - x2 / 3.0 + 2.0 * x2 * x2 / 15.0) / vEps;
+  }
+  return std::tanh(x) / speed;
+}
+
 // "(i, j)", appended to a field's name in messages.
 std::string nodeIndex(Eigen::Index i, Eigen::Index j) {
   return "(" + std::to_string(i) + ", " + std::to_string(j) + ")";
@@ -87,12 +96,7 @@ void BoundaryFriction::fractionOverSpeedAndSlope(double speed, double& overSpeed
   const double vEps = parameters_.regularisationSpeed_mps;
   const double x = speed / vEps;
   if (parameters_.regularisation == FrictionRegularisation::Tanh) {
-    if (x < 1e-3) {  // tanh(x)/x = 1 − x²/3 + 2x⁴/15 − …; truncation error < 1e-18
-      const double x2 = x * x;
-      overSpeed = (1.0 - x2 / 3.0 + 2.0 * x2 * x2 / 15.0) / vEps;
-    } else {
-      overSpeed = std::tanh(x) / speed;
-    }
+    overSpeed = tanhFractionOverSpeed(x, speed, vEps);
     const double sech = 1.0 / std::cosh(x);  // cosh(x) = inf for large x: sech = 0
     slope = sech * sech / vEps;
     return;
@@ -123,13 +127,7 @@ void BoundaryFriction::weightedDirection(double vx, double vy, double& tx, doubl
       w = 1.0 / std::sqrt(s2 + vEps * vEps);
     } else {
       const double s = std::sqrt(s2);
-      const double x = s / vEps;
-      if (x < 1e-3) {  // tanh(x)/x = 1 − x²/3 + 2x⁴/15 − …; truncation error < 1e-18
-        const double x2 = x * x;
-        w = (1.0 - x2 / 3.0 + 2.0 * x2 * x2 / 15.0) / vEps;
-      } else {
-        w = std::tanh(x) / s;
-      }
+      w = tanhFractionOverSpeed(s / vEps, s, vEps);
     }
     tx = w * vx;
     ty = w * vy;

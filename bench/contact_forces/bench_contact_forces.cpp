@@ -24,48 +24,36 @@ std::vector<double> filmRatios() {
   return out;
 }
 
-void BM_F52_ExactTable(benchmark::State& state) {
+// f(λ) for every film ratio of filmRatios(), once per iteration.
+template <class F>
+void overFilmRatios(benchmark::State& state, F f) {
   const std::vector<double> lambdas = filmRatios();
   for (auto _ : state) {
     for (double lambda : lambdas) {
-      benchmark::DoNotOptimize(pc::greenwoodTrippF52(lambda));
+      benchmark::DoNotOptimize(f(lambda));
     }
   }
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(lambdas.size()));
+}
+
+void BM_F52_ExactTable(benchmark::State& state) {
+  overFilmRatios(state, [](double lambda) { return pc::greenwoodTrippF52(lambda); });
 }
 BENCHMARK(BM_F52_ExactTable);
 
 void BM_F52AndSlope_ExactTable(benchmark::State& state) {
-  const std::vector<double> lambdas = filmRatios();
-  for (auto _ : state) {
-    for (double lambda : lambdas) {
-      benchmark::DoNotOptimize(pc::greenwoodTrippF52WithSlope(lambda));
-    }
-  }
-  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(lambdas.size()));
+  overFilmRatios(state, [](double lambda) { return pc::greenwoodTrippF52WithSlope(lambda); });
 }
 BENCHMARK(BM_F52AndSlope_ExactTable);
 
 void BM_F52_PowerLawFit(benchmark::State& state) {
-  const std::vector<double> lambdas = filmRatios();
-  for (auto _ : state) {
-    for (double lambda : lambdas) {
-      benchmark::DoNotOptimize(pc::kPowerLawFitF52.value(lambda));
-    }
-  }
-  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(lambdas.size()));
+  overFilmRatios(state, [](double lambda) { return pc::kPowerLawFitF52.value(lambda); });
 }
 BENCHMARK(BM_F52_PowerLawFit);
 
 void BM_F52_Erfc_Reference(benchmark::State& state) {
   // Not F_{5/2}: one std::erfc per node, as a yardstick for "one special function call".
-  const std::vector<double> lambdas = filmRatios();
-  for (auto _ : state) {
-    for (double lambda : lambdas) {
-      benchmark::DoNotOptimize(std::erfc(lambda * 0.7071067811865476));
-    }
-  }
-  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(lambdas.size()));
+  overFilmRatios(state, [](double lambda) { return std::erfc(lambda * 0.7071067811865476); });
 }
 BENCHMARK(BM_F52_Erfc_Reference);
 

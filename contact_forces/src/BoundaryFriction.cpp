@@ -14,17 +14,31 @@ constexpr const char* kWhere = "BoundaryFriction";
 
 void requireFiniteVelocity(const Eigen::Vector2d& v, const char* function) {
   if (!std::isfinite(v.x()) || !std::isfinite(v.y())) {
-    const double bad = std::isfinite(v.x()) ? v.y() : v.x();
-    detail::throwInvalid(std::string(kWhere) + "::" + function, "slidingVelocity_mps component",
-                         bad, "m/s", "finite");
+    detail::throwNotFinite(std::isfinite(v.x()) ? v.y() : v.x(),
+                           std::string(kWhere) + "::" + function, "slidingVelocity_mps component",
+                           "m/s");
   }
 }
 
 void requirePressure(double p, const char* function) {
-  if (!(p >= 0.0) || !std::isfinite(p)) {
-    detail::throwInvalid(std::string(kWhere) + "::" + function, "contactPressure_Pa", p, "Pa",
-                         "non-negative and finite");
+  if (detail::notNonNegativeFinite(p)) {
+    detail::throwNotNonNegativeFinite(p, std::string(kWhere) + "::" + function,
+                                      "contactPressure_Pa", "Pa");
   }
+}
+
+// tanh(s/v_ε)/s [s/m] for x = s/v_ε, finite at s = 0 (where it is 1/v_ε).
+inline double tanhFractionOverSpeed(double x, double speed, double vEps) {
+  if (x < 1e-3) {  // tanh(x)/x = 1 − x²/3 + 2x⁴/15 − …; truncation error < 1e-18
+    const double x2 = x * x;
+    return (1.0 - x2 / 3.0 + 2.0 * x2 * x2 / 15.0) / vEps;
+  }
+  return std::tanh(x) / speed;
+}
+
+// "(i, j)", appended to a field's name in messages.
+std::string nodeIndex(Eigen::Index i, Eigen::Index j) {
+  return "(" + std::to_string(i) + ", " + std::to_string(j) + ")";
 }
 
 }  // namespace
@@ -82,12 +96,7 @@ void BoundaryFriction::fractionOverSpeedAndSlope(double speed, double& overSpeed
   const double vEps = parameters_.regularisationSpeed_mps;
   const double x = speed / vEps;
   if (parameters_.regularisation == FrictionRegularisation::Tanh) {
-    if (x < 1e-3) {  // tanh(x)/x = 1 − x²/3 + 2x⁴/15 − …; truncation error < 1e-18
-      const double x2 = x * x;
-      overSpeed = (1.0 - x2 / 3.0 + 2.0 * x2 * x2 / 15.0) / vEps;
-    } else {
-      overSpeed = std::tanh(x) / speed;
-    }
+    overSpeed = tanhFractionOverSpeed(x, speed, vEps);
     const double sech = 1.0 / std::cosh(x);  // cosh(x) = inf for large x: sech = 0
     slope = sech * sech / vEps;
     return;
@@ -118,13 +127,7 @@ void BoundaryFriction::weightedDirection(double vx, double vy, double& tx, doubl
       w = 1.0 / std::sqrt(s2 + vEps * vEps);
     } else {
       const double s = std::sqrt(s2);
-      const double x = s / vEps;
-      if (x < 1e-3) {  // tanh(x)/x = 1 − x²/3 + 2x⁴/15 − …; truncation error < 1e-18
-        const double x2 = x * x;
-        w = (1.0 - x2 / 3.0 + 2.0 * x2 * x2 / 15.0) / vEps;
-      } else {
-        w = std::tanh(x) / s;
-      }
+      w = tanhFractionOverSpeed(s / vEps, s, vEps);
     }
     tx = w * vx;
     ty = w * vy;
@@ -137,10 +140,8 @@ void BoundaryFriction::weightedDirection(double vx, double vy, double& tx, doubl
 }
 
 double BoundaryFriction::calcEffectiveCoefficient(double slidingSpeed_mps) const {
-  if (!(slidingSpeed_mps >= 0.0) || !std::isfinite(slidingSpeed_mps)) {
-    detail::throwInvalid("BoundaryFriction::calcEffectiveCoefficient", "slidingSpeed_mps",
-                         slidingSpeed_mps, "m/s", "non-negative and finite");
-  }
+  detail::requireNonNegativeFinite(slidingSpeed_mps, "BoundaryFriction::calcEffectiveCoefficient",
+                                   "slidingSpeed_mps", "m/s");
   return parameters_.frictionCoefficient * fraction(slidingSpeed_mps);
 }
 
@@ -185,21 +186,17 @@ void BoundaryFriction::calcShearStressField(
         "must have the shape of contactPressure_Pa (" +
         std::to_string(rows) + " x " + std::to_string(cols) + ")");
   }
+  const char* fn = "BoundaryFriction::calcShearStressField";
   for (Eigen::Index j = 0; j < cols; ++j) {
     for (Eigen::Index i = 0; i < rows; ++i) {
       const double p = contactPressure_Pa(i, j);
       const double vx = slidingVelocityX_mps(i, j);
       const double vy = slidingVelocityY_mps(i, j);
-      if (!(p >= 0.0) || !std::isfinite(p) || !std::isfinite(vx) || !std::isfinite(vy)) {
-        const std::string at = "(" + std::to_string(i) + ", " + std::to_string(j) + ")";
-        if (!(p >= 0.0) || !std::isfinite(p)) {
-          detail::throwInvalid("BoundaryFriction::calcShearStressField", "contactPressure_Pa" + at,
-                               p, "Pa", "non-negative and finite");
-        }
-        detail::throwInvalid(
-            "BoundaryFriction::calcShearStressField",
-            (std::isfinite(vx) ? "slidingVelocityY_mps" : "slidingVelocityX_mps") + at,
-            std::isfinite(vx) ? vy : vx, "m/s", "finite");
+      if (detail::notNonNegativeFinite(p) || !std::isfinite(vx) || !std::isfinite(vy)) {
+        const std::string at = nodeIndex(i, j);
+        detail::requireNonNegativeFinite(p, fn, "contactPressure_Pa" + at, "Pa");
+        detail::requireFinite(vx, fn, "slidingVelocityX_mps" + at, "m/s");
+        detail::throwNotFinite(vy, fn, "slidingVelocityY_mps" + at, "m/s");
       }
     }
   }
@@ -228,10 +225,8 @@ void BoundaryFriction::calcShearStressField(
   for (Eigen::Index j = 0; j < cols; ++j) {
     for (Eigen::Index i = 0; i < rows; ++i) {
       const double p = contactPressure_Pa(i, j);
-      if (!(p >= 0.0) || !std::isfinite(p)) {
-        detail::throwInvalid(
-            fn, "contactPressure_Pa(" + std::to_string(i) + ", " + std::to_string(j) + ")", p, "Pa",
-            "non-negative and finite");
+      if (detail::notNonNegativeFinite(p)) {
+        detail::throwNotNonNegativeFinite(p, fn, "contactPressure_Pa" + nodeIndex(i, j), "Pa");
       }
     }
   }

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "GreenwoodTrippTails.h"
+
 namespace pistondyn::contact {
 namespace {
 
@@ -59,38 +61,69 @@ int checkedOrder(TailOrder order) {
   return k;
 }
 
+// The one place where the range of λ is decided and the table piece located. `set` names
+// the integrals wanted: set.uniform(v) gives all of them equal to v (NaN for a NaN λ, 0 for
+// λ ≥ kTableLambdaZero) and set.from(F) builds them from F(k) = F_k(λ), the overlap
+// expansion for λ < kTableLambdaMin and otherwise the piece located once for every k.
+template <class TailSet>
+inline auto evalTails(const TailSet& set, double lambda) {
+  if (std::isnan(lambda)) {
+    return set.uniform(lambda);
+  }
+  if (lambda >= kTableLambdaZero) {
+    return set.uniform(0.0);
+  }
+  if (lambda < kTableLambdaMin) {
+    return set.from([lambda](int k) { return overlapExpansion(k, lambda); });
+  }
+  const PieceLocation at = locate(lambda);
+  return set.from([&at](int k) { return std::exp(chebyshevSum(kLogTailCheb[k][at.piece], at.t)); });
+}
+
+constexpr int k52 = static_cast<int>(TailOrder::F5_2);
+constexpr int k32 = static_cast<int>(TailOrder::F3_2);
+constexpr int k2 = static_cast<int>(TailOrder::F2);
+
+// F_k alone.
+struct OneOrder {
+  int k;
+  double uniform(double v) const { return v; }
+  template <class F>
+  double from(const F& tail) const {
+    return tail(k);
+  }
+};
+
+// F_{5/2} and dF_{5/2}/dλ = −(5/2)·F_{3/2}.
+struct F52AndSlope {
+  TailValueAndSlope uniform(double v) const { return {v, v}; }
+  template <class F>
+  TailValueAndSlope from(const F& tail) const {
+    return {tail(k52), -2.5 * tail(k32)};
+  }
+};
+
+// F_{5/2}, its slope and F_2.
+struct F52SlopeAndF2 {
+  detail::GreenwoodTrippTails uniform(double v) const { return {v, v, v}; }
+  template <class F>
+  detail::GreenwoodTrippTails from(const F& tail) const {
+    return {tail(k52), -2.5 * tail(k32), tail(k2)};
+  }
+};
+
 }  // namespace
 
 double gaussianTailIntegral(TailOrder order, double lambda) {
-  const int k = checkedOrder(order);
-  if (std::isnan(lambda)) {
-    return lambda;
-  }
-  if (lambda >= kTableLambdaZero) {
-    return 0.0;
-  }
-  if (lambda < kTableLambdaMin) {
-    return overlapExpansion(k, lambda);
-  }
-  const PieceLocation at = locate(lambda);
-  return std::exp(chebyshevSum(kLogTailCheb[k][at.piece], at.t));
+  return evalTails(OneOrder{checkedOrder(order)}, lambda);
 }
 
 TailValueAndSlope greenwoodTrippF52WithSlope(double lambda) {
-  constexpr int k52 = static_cast<int>(TailOrder::F5_2);
-  constexpr int k32 = static_cast<int>(TailOrder::F3_2);
-  if (std::isnan(lambda)) {
-    return {lambda, lambda};
-  }
-  if (lambda >= kTableLambdaZero) {
-    return {0.0, 0.0};
-  }
-  if (lambda < kTableLambdaMin) {
-    return {overlapExpansion(k52, lambda), -2.5 * overlapExpansion(k32, lambda)};
-  }
-  const PieceLocation at = locate(lambda);
-  return {std::exp(chebyshevSum(kLogTailCheb[k52][at.piece], at.t)),
-          -2.5 * std::exp(chebyshevSum(kLogTailCheb[k32][at.piece], at.t))};
+  return evalTails(F52AndSlope{}, lambda);
+}
+
+detail::GreenwoodTrippTails detail::greenwoodTrippTails(double lambda) {
+  return evalTails(F52SlopeAndF2{}, lambda);
 }
 
 double PowerLawTailFit::value(double lambda) const {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "GreenwoodTrippTails.h"
 #include "Validation.h"
 
 namespace pistondyn::contact {
@@ -14,18 +15,18 @@ constexpr double kPi = 3.14159265358979323846;
 
 void validatePowerLaw(const PowerLawTailFit& fit, const char* name) {
   const std::string n(name);
-  detail::requirePositiveFinite(fit.coefficient, kWhere, (n + ".coefficient").c_str(), "");
-  detail::requirePositiveFinite(fit.exponent, kWhere, (n + ".exponent").c_str(), "");
-  detail::requireFinite(fit.lambdaMax, kWhere, (n + ".lambdaMax").c_str(), "");
+  detail::requirePositiveFinite(fit.coefficient, kWhere, n + ".coefficient", "");
+  detail::requirePositiveFinite(fit.exponent, kWhere, n + ".exponent", "");
+  detail::requireFinite(fit.lambdaMax, kWhere, n + ".lambdaMax", "");
 }
 
 void validatePolynomial(const PolynomialTailFit& fit, const char* name) {
   const std::string n(name);
   for (std::size_t k = 0; k < fit.coefficients.size(); ++k) {
     detail::requireFinite(fit.coefficients[k], kWhere,
-                          (n + ".coefficients[" + std::to_string(k) + "]").c_str(), "");
+                          n + ".coefficients[" + std::to_string(k) + "]", "");
   }
-  detail::requireFinite(fit.lambdaEnd, kWhere, (n + ".lambdaEnd").c_str(), "");
+  detail::requireFinite(fit.lambdaEnd, kWhere, n + ".lambdaEnd", "");
 }
 
 }  // namespace
@@ -122,6 +123,30 @@ double GreenwoodTrippLaw::evalAreaFraction(double gap_m) const {
   // The statistical model gives A_c/A > 1 only for overlaps of many σ, where it no longer
   // describes anything physical; the fraction is capped at 1.
   return std::min(1.0, areaScale_ * evalF2(gap_m / sigma_m_));
+}
+
+// λ once per node; for the exact model F_{5/2}, its slope and F_2 from one table lookup, for
+// the fits evalF52 and evalF2 as in evalPressureAndSlope and evalAreaFraction. Same
+// expressions as those two and the default evalNode, so the same values to the last bit.
+ContactNodeState GreenwoodTrippLaw::evalNode(double gap_m) const {
+  const double lambda = gap_m / sigma_m_;
+  TailValueAndSlope f52;
+  double f2 = 0.0;
+  if (parameters_.tailModel == TailIntegralModel::Exact) {
+    const detail::GreenwoodTrippTails f = detail::greenwoodTrippTails(lambda);
+    f52 = {f.f52, f.f52Slope};
+    f2 = f.f2;
+  } else {
+    f52 = evalF52(lambda);
+    f2 = evalF2(lambda);
+  }
+  ContactNodeState node;
+  node.pressure_Pa = pressureScale_Pa_ * f52.value;
+  node.dPressure_dGap_PaPerM = pressureScale_Pa_ * f52.slope / sigma_m_;
+  node.realAreaFraction = std::min(1.0, areaScale_ * f2);
+  node.filmRatio = lambda;
+  node.regime = classifyRegime(lambda);
+  return node;
 }
 
 }  // namespace pistondyn::contact

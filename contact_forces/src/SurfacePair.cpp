@@ -9,10 +9,7 @@ namespace pistondyn::contact {
 
 void validateMaterial(const ElasticMaterial& material, const char* where, const char* argName) {
   const std::string name(argName);
-  if (!(material.youngsModulus_Pa > 0.0) || !std::isfinite(material.youngsModulus_Pa)) {
-    detail::throwInvalid(where, name + ".youngsModulus_Pa", material.youngsModulus_Pa, "Pa",
-                         "positive and finite");
-  }
+  detail::requirePositiveFinite(material.youngsModulus_Pa, where, name + ".youngsModulus_Pa", "Pa");
   if (!(material.poissonRatio > -1.0 && material.poissonRatio < 0.5)) {
     detail::throwInvalid(where, name + ".poissonRatio", material.poissonRatio, "",
                          "in the open interval (-1, 0.5)");

@@ -90,6 +90,9 @@ class GreenwoodTrippLaw final : public AsperityContactLaw {
   double evalPressure(double gap_m) const override;
   PressureAndSlope evalPressureAndSlope(double gap_m) const override;
   double evalAreaFraction(double gap_m) const override;
+  // λ = h/σ once per node; the exact model gets F_{5/2}, its slope and F_2 from one table
+  // lookup (the fits go through evalF52 and evalF2). Same values as the default evalNode.
+  ContactNodeState evalNode(double gap_m) const override;
 
  private:
   TailValueAndSlope evalF52(double lambda) const;

@@ -15,12 +15,13 @@
 
 #include "pistondyn/cli/EngineDeck.h"
 #include "pistondyn/plugin/CycleSimulation.h"
+#include "pistondyn/plugin/LinerElement.h"
 
 namespace {
 
 using namespace pistondyn;
 
-class SpringLinerGuide final : public plugin::ForceElement {
+class SpringLinerGuide final : public plugin::LinerElement {
  public:
   struct Parameters {
     double lateralStiffness_Npm = 2e7;  // [N/m]
@@ -50,11 +51,15 @@ class SpringLinerGuide final : public plugin::ForceElement {
     forces.addForceAtStation(s, piston, SimTK::Vec3(0), SimTK::Vec3(fx, 0, fz));
     forces.addTorque(s, piston, SimTK::Vec3(0, 0, mz));
   }
-  std::vector<std::string> getReportColumns() const override { return {"side_force_N"}; }
-  void calcReport(const SimTK::State& s, std::vector<double>& values) const override {
+  // The liner role (LinerElement.h): the force the piston puts on the liner.
+  double getSideForce_N(const SimTK::State& s) const override {
     const double x = crankTrain_->getLateralDisplacement_m(s);
     const double vx = crankTrain_->getPiston().getBodyOriginVelocity(s)[0];
-    values.push_back(p_.lateralStiffness_Npm * x + p_.lateralDamping_Nspm * vx);  // on liner
+    return p_.lateralStiffness_Npm * x + p_.lateralDamping_Nspm * vx;
+  }
+  plugin::ElementOutputs getOutputs() const override {
+    return {{"side_force", "N", "lateral force the piston exerts on the springs, + towards thrust",
+             [this](const SimTK::State& s) { return getSideForce_N(s); }}};
   }
 
  private:

@@ -26,8 +26,8 @@ void validate(const SimulationSettings& s) {
   }
   if (!(s.outputStep_deg >= SimulationSettings::kMinOutputStep_deg) ||
       !std::isfinite(s.outputStep_deg) || s.outputStep_deg > 720.0) {
-    fail("outputStep_deg must be between " + std::to_string(SimulationSettings::kMinOutputStep_deg) +
-         " and 720 deg");
+    fail("outputStep_deg must be between " +
+         std::to_string(SimulationSettings::kMinOutputStep_deg) + " and 720 deg");
   }
   if (!s.outputStepDividesCycle()) {
     fail("outputStep_deg must divide 720 deg into a whole number of steps");
@@ -36,10 +36,28 @@ void validate(const SimulationSettings& s) {
     fail("cycles x 720 / outputStep_deg exceeds " +
          std::to_string(static_cast<long>(SimulationSettings::kMaxRows)) + " output rows");
   }
-  if (!(s.accuracy > 0.0 && s.accuracy < 1.0)) fail("accuracy must be in (0, 1)");
+  if (!(s.accuracy > 0.0 && s.accuracy < 1.0))
+    fail("accuracy must be in (0, 1)");
   if (!(s.constraintTolerance > 0.0 && s.constraintTolerance < 1.0)) {
     fail("constraintTolerance must be in (0, 1)");
   }
+}
+
+void ResultTableSink::beginRun(const std::vector<std::string>& columns) {
+  table_ = ResultTable();
+  table_.columns = columns;
+}
+
+void ResultTableSink::consumeRow(const SimTK::State&, const std::vector<double>& values) {
+  table_.rows.push_back(values);
+}
+
+bool ResultTable::hasColumn(const std::string& name) const {
+  for (const auto& c : columns) {
+    if (c == name)
+      return true;
+  }
+  return false;
 }
 
 std::size_t ResultTable::columnIndex(const std::string& name) const {
@@ -62,6 +80,14 @@ std::vector<double> ResultTable::column(const std::string& name) const {
 CycleSimulation::CycleSimulation(PistonAssemblyModel& model, SimulationSettings settings)
     : model_(model), settings_(settings) {
   validate(settings_);
+}
+
+std::vector<std::string> CycleSimulation::getColumns() const {
+  std::vector<std::string> columns = crankTrainColumns();
+  model_.buildSystem();
+  for (auto& c : model_.getElementOutputColumns())
+    columns.push_back(std::move(c));
+  return columns;
 }
 
 std::vector<std::string> CycleSimulation::crankTrainColumns() {
@@ -119,8 +145,8 @@ long landOnCrankAngle(SimTK::Integrator& integ, const mbd::CrankTrain& ct, doubl
   const SimTK::State start = integ.getState();
   const double tol = 1e-12 * std::max(1.0, std::abs(thetaTarget));
   long abandonedSteps = 0;
-  double t = start.getTime() +
-             (thetaTarget - ct.getCrankAngle_rad(start)) / ct.getCrankSpeed_radps(start);
+  double t =
+      start.getTime() + (thetaTarget - ct.getCrankAngle_rad(start)) / ct.getCrankSpeed_radps(start);
   for (int iter = 0; iter < 50; ++iter) {
     if (t < integ.getTime()) {
       abandonedSteps += integ.getNumStepsTaken();
@@ -129,12 +155,14 @@ long landOnCrankAngle(SimTK::Integrator& integ, const mbd::CrankTrain& ct, doubl
     advanceTo(integ, t);
     const SimTK::State& s = integ.getState();
     const double err = thetaTarget - ct.getCrankAngle_rad(s);
-    if (std::abs(err) <= tol) return abandonedSteps;
+    if (std::abs(err) <= tol)
+      return abandonedSteps;
     const double speed = ct.getCrankSpeed_radps(s);
     if (!(speed > 0.0)) {
-      throw std::runtime_error(
-          "CycleSimulation: the free crank stopped or reversed (speed " + std::to_string(speed) +
-          " rad/s at t = " + std::to_string(s.getTime()) + " s); raise the speed or lower the load");
+      throw std::runtime_error("CycleSimulation: the free crank stopped or reversed (speed " +
+                               std::to_string(speed) +
+                               " rad/s at t = " + std::to_string(s.getTime()) +
+                               " s); raise the speed or lower the load");
     }
     t = s.getTime() + err / speed;
   }
@@ -145,7 +173,24 @@ long landOnCrankAngle(SimTK::Integrator& integ, const mbd::CrankTrain& ct, doubl
 }  // namespace
 
 ResultTable CycleSimulation::run(const Progress& progress, const RowObserver& observer) {
+  // The observer sees each row's state before the row is stored, as a sink placed first.
+  struct ObserverSink final : RowSink {
+    explicit ObserverSink(const RowObserver& o) : observe(o) {}
+    void consumeRow(const SimTK::State& s, const std::vector<double>&) override { observe(s); }
+    const RowObserver& observe;
+  } observerSink(observer);
+  ResultTableSink tableSink;
+  std::vector<RowSink*> sinks;
+  if (observer)
+    sinks.push_back(&observerSink);
+  sinks.push_back(&tableSink);
+  run(sinks, progress);
+  return tableSink.releaseTable();
+}
+
+void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& progress) {
   const auto wallStart = std::chrono::steady_clock::now();
+  model_.buildSystem();
   const SimTK::MultibodySystem& system = model_.getSystem();
   SimTK::State state = model_.getDefaultState();
   const mbd::CrankTrain& ct = model_.getCrankTrain();
@@ -165,15 +210,16 @@ ResultTable CycleSimulation::run(const Progress& progress, const RowObserver& ob
   integ->setConstraintTolerance(settings_.constraintTolerance);
   integ->initialize(state);
 
-  ResultTable table;
-  table.columns = crankTrainColumns();
-  for (auto& c : model_.getElementReportColumns())
-    table.columns.push_back(std::move(c));
+  const std::vector<std::string> columns = getColumns();
+  for (RowSink* sink : sinks)
+    sink->beginRun(columns);
 
-  const long nRows = settings_.stepsPerCycle() * settings_.cycles + 1;
+  const long perCycle = settings_.stepsPerCycle();
+  const long nRows = perCycle * settings_.cycles + 1;
   const double dTheta = settings_.outputStep_deg * M_PI / 180.0;
-  table.rows.reserve(static_cast<std::size_t>(nRows));
   long stepsBeforeRestarts = 0;
+  std::vector<double> row;
+  row.reserve(columns.size());
   for (long k = 0; k < nRows; ++k) {
     const double thetaTarget = theta0 + static_cast<double>(k) * dTheta;
     if (k > 0) {
@@ -186,26 +232,31 @@ ResultTable CycleSimulation::run(const Progress& progress, const RowObserver& ob
     }
     const SimTK::State& s = integ->getState();
     system.realize(s, SimTK::Stage::Acceleration);
-    if (observer) observer(s);
-    std::vector<double> row;
-    row.reserve(table.columns.size());
+    row.clear();
     calcCrankTrainRow(ct, s, row);
     row[1] = thetaTarget * 180.0 / M_PI;  // the nominal angle the row was taken at
-    model_.calcElementReports(s, row);
+    model_.calcElementOutputs(s, row);
     for (double v : row) {
       if (!std::isfinite(v)) {
         throw std::runtime_error("CycleSimulation: non-finite result at crank angle " +
                                  std::to_string(row[1]) + " deg");
       }
     }
-    table.rows.push_back(std::move(row));
-    if (progress) progress(static_cast<double>(k) / static_cast<double>(nRows - 1));
+    if (k % perCycle == 0 && k < nRows - 1) {
+      for (RowSink* sink : sinks)
+        sink->beginCycle(static_cast<int>(k / perCycle));
+    }
+    for (RowSink* sink : sinks)
+      sink->consumeRow(s, row);
+    if (progress)
+      progress(static_cast<double>(k) / static_cast<double>(nRows - 1));
   }
   stats_.integratorSteps = stepsBeforeRestarts + integ->getNumStepsTaken();
   stats_.realizations = integ->getNumRealizations();
   stats_.wallTime_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
-  return table;
+  for (RowSink* sink : sinks)
+    sink->endRun();
 }
 
 }  // namespace pistondyn::plugin

@@ -20,8 +20,8 @@ void GasForceElement::addToModel(const ModelBuildContext& context) {
   area_m2_ = 0.25 * M_PI * bore * bore;
 }
 
-void GasForceElement::realizeTopology(SimTK::State& s, const SimTK::Subsystem& forces) const {
-  cache_.allocate(s, forces, SimTK::Stage::Position);
+void GasForceElement::realizeTopology(SimTK::State&, ElementStateAllocator& alloc) const {
+  cache_.allocate(alloc, SimTK::Stage::Position);
 }
 
 const GasForceElement::Results& GasForceElement::getResults(const SimTK::State& s) const {
@@ -39,14 +39,12 @@ void GasForceElement::calcForces(const SimTK::State& s, AppliedForces& forces) c
   forces.addForceAtStation(s, piston, crankTrain_->getCrownCentreInPiston(), forceInGround);
 }
 
-std::vector<std::string> GasForceElement::getReportColumns() const {
-  return {"cylinder_pressure_Pa", "gas_force_N"};
-}
-
-void GasForceElement::calcReport(const SimTK::State& s, std::vector<double>& values) const {
-  const Results& r = getResults(s);
-  values.push_back(r.cylinderPressure_Pa);
-  values.push_back(r.gasForce_N);
+ElementOutputs GasForceElement::getOutputs() const {
+  return {{"cylinder_pressure", "Pa", "absolute cylinder pressure from the pressure table",
+           [this](const SimTK::State& s) { return getResults(s).cylinderPressure_Pa; }},
+          {"gas_force", "N",
+           "(cylinder - crankcase pressure) x bore area, + pushing the piston towards the crank",
+           [this](const SimTK::State& s) { return getResults(s).gasForce_N; }}};
 }
 
 }  // namespace pistondyn::plugin

@@ -40,15 +40,14 @@ SimTK::SpatialVec IdealLinerGuide::calcForceOnLiner(const SimTK::State& s) const
   return total;
 }
 
-std::vector<std::string> IdealLinerGuide::getReportColumns() const {
-  return {"side_force_N", "guide_moment_Nm", "guide_axial_N"};
-}
-
-void IdealLinerGuide::calcReport(const SimTK::State& s, std::vector<double>& values) const {
-  const SimTK::SpatialVec f = calcForceOnLiner(s);
-  values.push_back(f[1][0]);
-  values.push_back(f[0][2]);
-  values.push_back(f[1][2]);
+ElementOutputs IdealLinerGuide::getOutputs() const {
+  return {{"side_force", "N", "lateral force the piston exerts on the liner, + towards thrust",
+           [this](const SimTK::State& s) { return getSideForce_N(s); }},
+          {"guide_moment", "Nm",
+           "moment the piston exerts on the liner about +z, about the piston-frame origin",
+           [this](const SimTK::State& s) { return calcForceOnLiner(s)[0][2]; }},
+          {"guide_axial", "N", "force the piston exerts on the liner along the pin axis (+z)",
+           [this](const SimTK::State& s) { return calcForceOnLiner(s)[1][2]; }}};
 }
 
 }  // namespace pistondyn::plugin

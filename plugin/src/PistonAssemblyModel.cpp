@@ -23,7 +23,22 @@ class ElementForceAdapter final : public SimTK::Force::Custom::Implementation {
     return element_.calcPotentialEnergy(s);
   }
   bool dependsOnlyOnPositions() const override { return element_.dependsOnlyOnPositions(); }
-  void realizeTopology(SimTK::State& s) const override { element_.realizeTopology(s, forces_); }
+
+  // Every realize stage Simbody offers a custom force, forwarded to the element.
+  void realizeTopology(SimTK::State& s) const override {
+    ElementStateAllocator allocator(s, forces_);
+    element_.realizeTopology(s, allocator);
+  }
+  void realizeModel(SimTK::State& s) const override { element_.realizeModel(s); }
+  void realizeInstance(const SimTK::State& s) const override { element_.realizeInstance(s); }
+  void realizeTime(const SimTK::State& s) const override { element_.realizeTime(s); }
+  void realizePosition(const SimTK::State& s) const override { element_.realizePosition(s); }
+  void realizeVelocity(const SimTK::State& s) const override { element_.realizeVelocity(s); }
+  void realizeDynamics(const SimTK::State& s) const override { element_.realizeDynamics(s); }
+  void realizeAcceleration(const SimTK::State& s) const override {
+    element_.realizeAcceleration(s);
+  }
+  void realizeReport(const SimTK::State& s) const override { element_.realizeReport(s); }
 
  private:
   const ForceElement& element_;
@@ -116,10 +131,17 @@ void PistonAssemblyModel::buildSystem() {
   if (built_)
     return;
   const ModelBuildContext context{*matter_, *forces_, *crankTrain_};
-  reportColumnCounts_.clear();
+  (void)findLinerElement();  // at most one element may hold the piston in the bore
+  outputs_.clear();
   for (auto& e : elements_) {
-    reportColumnCounts_.push_back(e->getReportColumns().size());
     e->addToModel(context);
+    for (auto& o : e->getOutputs()) {
+      if (!o.getter) {
+        throw std::logic_error("force element '" + e->getName() + "': output '" + o.name +
+                               "' has no getter");
+      }
+      outputs_.push_back(std::move(o));
+    }
     // Force::Custom takes ownership of the adapter (Simbody's API); the adapter only
     // refers to the element.
     SimTK::Force::Custom(*forces_, new ElementForceAdapter(*e, *forces_));
@@ -133,27 +155,58 @@ const SimTK::State& PistonAssemblyModel::getDefaultState() {
   return system_->getDefaultState();
 }
 
-std::vector<std::string> PistonAssemblyModel::getElementReportColumns() const {
-  std::vector<std::string> columns;
-  for (const auto& e : elements_) {
-    for (auto& c : e->getReportColumns())
-      columns.push_back(std::move(c));
+const std::vector<ElementOutput>& PistonAssemblyModel::getElementOutputs() {
+  buildSystem();
+  return outputs_;
+}
+
+const std::vector<ElementOutput>& PistonAssemblyModel::getElementOutputs() const {
+  if (!built_) {
+    throw std::logic_error(
+        "PistonAssemblyModel::getElementOutputs: outputs are recorded when the system is built");
   }
+  return outputs_;
+}
+
+std::vector<std::string> PistonAssemblyModel::getElementOutputColumns() const {
+  std::vector<std::string> columns;
+  for (const auto& o : getElementOutputs())
+    columns.push_back(o.getColumnName());
   return columns;
 }
 
-void PistonAssemblyModel::calcElementReports(const SimTK::State& s,
+void PistonAssemblyModel::calcElementOutputs(const SimTK::State& s,
                                              std::vector<double>& values) const {
-  // Elements are frozen once the system is built (a State exists only then), so their column
-  // counts were recorded by buildSystem(): no column names are built per output row.
-  for (std::size_t k = 0; k < elements_.size(); ++k) {
-    const std::size_t before = values.size();
-    elements_[k]->calcReport(s, values);
-    if (values.size() - before != reportColumnCounts_[k]) {
-      throw std::logic_error("force element '" + elements_[k]->getName() +
-                             "' reported a different number of values than columns");
+  for (const auto& o : outputs_)
+    values.push_back(o.getter(s));
+}
+
+const LinerElement* PistonAssemblyModel::findLinerElement() const {
+  const LinerElement* found = nullptr;
+  for (const auto& e : elements_) {
+    if (const auto* liner = dynamic_cast<const LinerElement*>(e.get())) {
+      if (found != nullptr) {
+        throw std::logic_error("PistonAssemblyModel: elements '" + found->getName() + "' and '" +
+                               liner->getName() +
+                               "' both hold the piston in the bore (LinerElement); keep one");
+      }
+      found = liner;
     }
   }
+  return found;
+}
+
+bool PistonAssemblyModel::calcElementForceJacobian(const SimTK::State& s,
+                                                   ForceJacobian& jacobian) const {
+  const int nq = s.getNQ(), nu = s.getNU();
+  jacobian.dfdq.resize(nu, nq);
+  jacobian.dfdu.resize(nu, nu);
+  jacobian.dfdq = 0.0;
+  jacobian.dfdu = 0.0;
+  bool any = false;
+  for (const auto& e : elements_)
+    any = e->addForceJacobian(s, jacobian) || any;
+  return any;
 }
 
 }  // namespace pistondyn::plugin

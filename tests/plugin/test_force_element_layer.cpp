@@ -49,9 +49,8 @@ class LateralPush final : public plugin::ForceElement {
     f.addForceAtStation(s, ct_->getPiston(), ct_->getCrownCentreInPiston(),
                         SimTK::Vec3(force_N_, 0, 0));
   }
-  std::vector<std::string> getReportColumns() const override { return {"push_N"}; }
-  void calcReport(const SimTK::State&, std::vector<double>& v) const override {
-    v.push_back(force_N_);
+  plugin::ElementOutputs getOutputs() const override {
+    return {{"push", "N", "the constant push", [this](const SimTK::State&) { return force_N_; }}};
   }
 
  private:

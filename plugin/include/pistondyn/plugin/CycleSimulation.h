@@ -1,6 +1,8 @@
 #pragma once
 // Runs a PistonAssemblyModel over whole 720 deg cycles and records one row per output
-// crank angle: the crank-train columns below, then every element's report columns.
+// crank angle: the crank-train columns below, then every element's outputs
+// (ElementOutput.h) in registration order. Rows go to a RowSink as they are computed
+// (a file writer streams them to disk; ResultTableSink keeps them in memory).
 //
 // Crank-train columns (units in the names; crank angle 0 = firing TDC):
 //   time_s, crank_angle_deg (continuous from the start angle), crank_speed_rpm,
@@ -20,6 +22,7 @@
 #include <vector>
 
 #include "pistondyn/plugin/PistonAssemblyModel.h"
+#include "pistondyn/plugin/ResultTable.h"
 
 namespace pistondyn::plugin {
 
@@ -47,13 +50,32 @@ struct SimulationSettings {
 // Throws std::invalid_argument naming the member when settings are unusable.
 void validate(const SimulationSettings& settings);
 
-struct ResultTable {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;  // rows[i][j] = value of columns[j] at row i
+// Where a simulation puts its rows. The simulation calls beginRun() once with the column
+// names, beginCycle() at the first row of every 720 deg cycle, consumeRow() for every
+// row (the state is realized through Stage::Acceleration, so a sink may also evaluate
+// outputs or role interfaces of its own), and endRun() after the last row. If the run
+// fails, the exception leaves the simulation before endRun(): a file-writing sink then
+// discards what it wrote (all-or-nothing).
+class RowSink {
+ public:
+  virtual ~RowSink() = default;
+  virtual void beginRun(const std::vector<std::string>& /*columns*/) {}
+  // cycle = 0, 1, ...; the row of crank angle start + 720 * cycle.
+  virtual void beginCycle(int /*cycle*/) {}
+  virtual void consumeRow(const SimTK::State& state, const std::vector<double>& values) = 0;
+  virtual void endRun() {}
+};
 
-  // Index of a column; throws std::out_of_range naming it if absent.
-  std::size_t columnIndex(const std::string& name) const;
-  std::vector<double> column(const std::string& name) const;
+// Keeps every row in a ResultTable.
+class ResultTableSink final : public RowSink {
+ public:
+  void beginRun(const std::vector<std::string>& columns) override;
+  void consumeRow(const SimTK::State& state, const std::vector<double>& values) override;
+  const ResultTable& getTable() const { return table_; }
+  ResultTable releaseTable() { return std::move(table_); }
+
+ private:
+  ResultTable table_;
 };
 
 struct SimulationStats {
@@ -71,9 +93,14 @@ class CycleSimulation {
   // Row observer: called at every output row with the state realized through
   // Stage::Acceleration (custom outputs, checks), before the row is stored.
   using RowObserver = std::function<void(const SimTK::State&)>;
+  // Runs and keeps every row in memory.
   ResultTable run(const Progress& progress = {}, const RowObserver& observer = {});
+  // Runs and hands every row to each sink, in order.
+  void run(const std::vector<RowSink*>& sinks, const Progress& progress = {});
   const SimulationStats& getStats() const { return stats_; }
 
+  // All columns of a run of this model: crankTrainColumns() then the elements' outputs.
+  std::vector<std::string> getColumns() const;
   // The crank-train columns listed above, and their values at a state realized
   // through Stage::Acceleration (also usable outside a run).
   static std::vector<std::string> crankTrainColumns();

@@ -1,7 +1,7 @@
 #pragma once
 // Per-state results of one force element, kept in the Simbody State cache (so two
 // states never share results and nothing global is touched). Allocate in
-// ForceElement::realizeTopology(); fill lazily from calcForces() or calcReport():
+// ForceElement::realizeTopology(); fill lazily from calcForces() or an output getter:
 //
 //   const Results& r = cache_.getOrCalc(s, [&](Results& out) { ...compute... });
 //
@@ -23,15 +23,16 @@
 
 #include <stdexcept>
 
+#include "pistondyn/plugin/ElementState.h"
+
 namespace pistondyn::plugin {
 
 template <class T>
 class ElementCache {
  public:
-  void allocate(SimTK::State& s, const SimTK::Subsystem& subsystem,
-                SimTK::Stage dependsOn = SimTK::Stage::Dynamics) const {
-    subsystem_ = &subsystem;
-    index_ = subsystem.allocateLazyCacheEntry(s, dependsOn, new SimTK::Value<T>());
+  void allocate(ElementStateAllocator& a, SimTK::Stage dependsOn = SimTK::Stage::Dynamics) const {
+    subsystem_ = &a.getSubsystem();
+    index_ = subsystem_->allocateLazyCacheEntry(a.updState(), dependsOn, new SimTK::Value<T>());
   }
 
   template <class Calc>

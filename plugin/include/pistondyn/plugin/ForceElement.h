@@ -7,17 +7,33 @@
 // PistonAssemblyModel::addElement() (or swaps it for an existing one with
 // replaceElement()), and touches nothing else.
 //
-// Life cycle (Simbody verbs):
-//   addToModel()      once, when the model builds its Simbody system: keep handles,
-//                     add Simbody constraints if the element is kinematic (ideal guide)
-//   realizeTopology() once per new default state: allocate per-state cache entries and
-//                     state variables (film fill fraction, warm starts) - see ElementCache
-//   calcForces()      every force evaluation; must be a pure function of the state
-//   calcPotentialEnergy() for conservative elements (default 0)
-//   getReportColumns()/calcReport()  output columns (names carry units) evaluated on a
-//                     state realized through Stage::Acceleration
+// Life cycle (Simbody verbs; every hook has a do-nothing default):
+//   addToModel()        once, when the model builds its Simbody system: keep handles,
+//                       add Simbody constraints if the element is kinematic (ideal guide)
+//   realizeTopology()   once per new default state: allocate state variables
+//                       (ElementState.h: continuous z, discrete and auto-update discrete
+//                       variables) and cache entries (ElementCache.h)
+//   realizeModel() .. realizeReport()   Simbody's realize stages, forwarded unchanged
+//   calcForces()        every force evaluation, state realized through Stage::Velocity;
+//                       may compute the update values of auto-update variables
+//   realizeAcceleration() set the derivatives of the element's z (ElementZ)
+//   getOutputs()        typed outputs (ElementOutput.h), read on a state realized through
+//                       Stage::Acceleration
+//
+// Where an element keeps what (DESIGN.md §2). Everything the trajectory depends on is a
+// function of the State: q, u, z, discrete variables, time. History (fill fraction,
+// inlet film, wear depth) lives in auto-update discrete variables, integrals in z. Per-
+// state results go into the State's cache (ElementCache). Mutable members are allowed
+// ONLY for solver workspaces and warm starts (factorisations, multigrid levels, the last
+// film solution as a starting guess) and only when results depend on them no more than
+// the solver tolerance does: a State evaluated twice, or two copies of a State evaluated
+// in any order, give the same forces to that tolerance. Such workspaces make an element
+// single-threaded: use one model per thread (models are cheap to build), never share an
+// element, a model or a State's realization between threads.
 
 #include "pistondyn/mbd_models/CrankTrain.h"
+#include "pistondyn/plugin/ElementOutput.h"
+#include "pistondyn/plugin/ElementState.h"
 
 #include <string>
 #include <vector>
@@ -60,6 +76,16 @@ class AppliedForces {
   SimTK::Vector& mobilityForces_;
 };
 
+// Linearisation of an element's generalised (mobility) forces f(q, u) about the state
+// of the last calcForces(), for implicit steppers: dfdq(i, j) = d f_i / d q_j,
+// dfdu(i, j) = d f_i / d u_j (nu x nq and nu x nu, Simbody's mobility order). An element
+// adds the parts it knows (a stiff squeeze-film damping, a contact stiffness); what it
+// leaves out is treated explicitly by the stepper, so leave out only what is not stiff.
+struct ForceJacobian {
+  SimTK::Matrix dfdq;
+  SimTK::Matrix dfdu;
+};
+
 class ForceElement {
  public:
   virtual ~ForceElement() = default;
@@ -68,16 +94,32 @@ class ForceElement {
   virtual std::string getName() const = 0;
 
   virtual void addToModel(const ModelBuildContext& context) = 0;
-  virtual void realizeTopology(SimTK::State& /*state*/,
-                               const SimTK::Subsystem& /*forceSubsystem*/) const {}
+
+  // ---- Simbody realize stages (forwarded by the model's Force::Custom adapter) -----
+  virtual void realizeTopology(SimTK::State& /*state*/, ElementStateAllocator& /*alloc*/) const {}
+  virtual void realizeModel(SimTK::State& /*state*/) const {}
+  virtual void realizeInstance(const SimTK::State& /*state*/) const {}
+  virtual void realizeTime(const SimTK::State& /*state*/) const {}
+  virtual void realizePosition(const SimTK::State& /*state*/) const {}
+  virtual void realizeVelocity(const SimTK::State& /*state*/) const {}
+  virtual void realizeDynamics(const SimTK::State& /*state*/) const {}
+  virtual void realizeAcceleration(const SimTK::State& /*state*/) const {}
+  virtual void realizeReport(const SimTK::State& /*state*/) const {}
+
+  // ---- forces ------------------------------------------------------------------------
   virtual void calcForces(const SimTK::State& state, AppliedForces& forces) const = 0;
   virtual double calcPotentialEnergy(const SimTK::State& /*state*/) const { return 0.0; }
   // True if calcForces() reads only positions (lets Simbody cache forces at Position).
   virtual bool dependsOnlyOnPositions() const { return false; }
+  // Adds this element's part of the force Jacobian (see ForceJacobian) at a state
+  // realized through Stage::Dynamics. Returns false if the element adds nothing.
+  virtual bool addForceJacobian(const SimTK::State& /*state*/, ForceJacobian& /*jacobian*/) const {
+    return false;
+  }
 
-  virtual std::vector<std::string> getReportColumns() const { return {}; }
-  // Appends one value per column of getReportColumns(), in that order.
-  virtual void calcReport(const SimTK::State& /*state*/, std::vector<double>& /*values*/) const {}
+  // ---- outputs -----------------------------------------------------------------------
+  // Declared once; the model records them when it builds the system.
+  virtual ElementOutputs getOutputs() const { return {}; }
 };
 
 }  // namespace pistondyn::plugin

@@ -4,8 +4,8 @@
 // tilt: pressure acts normal to the crown). Periodic cylinder-pressure curve over 720
 // deg; crank angle from the crank train's state.
 //
-// Report columns: cylinder_pressure_Pa, gas_force_N (positive = pushing the piston
-// down, towards the crank).
+// Outputs: cylinder_pressure [Pa], gas_force [N] (positive = pushing the piston down,
+// towards the crank).
 
 #include "pistondyn/mbd_models/CylinderPressureCurve.h"
 #include "pistondyn/plugin/ElementCache.h"
@@ -20,11 +20,10 @@ class GasForceElement final : public ForceElement {
 
   std::string getName() const override { return "gas_force"; }
   void addToModel(const ModelBuildContext& context) override;
-  void realizeTopology(SimTK::State& s, const SimTK::Subsystem& forces) const override;
+  void realizeTopology(SimTK::State& s, ElementStateAllocator& alloc) const override;
   void calcForces(const SimTK::State& s, AppliedForces& forces) const override;
   bool dependsOnlyOnPositions() const override { return true; }
-  std::vector<std::string> getReportColumns() const override;
-  void calcReport(const SimTK::State& s, std::vector<double>& values) const override;
+  ElementOutputs getOutputs() const override;
 
   const mbd::CylinderPressureCurve& getCylinderPressure() const { return pressure_; }
   double getCrankcasePressure_Pa() const { return crankcase_Pa_; }

@@ -6,22 +6,22 @@
 // the crank train against closed forms and as the simplest liner for quick studies;
 // the lubricated skirt element replaces it.
 //
-// Report columns (state realized through Stage::Acceleration):
+// Outputs (state realized through Stage::Acceleration):
 //   side_force_N      lateral force the piston exerts on the liner, + towards thrust
 //   guide_moment_Nm   moment the piston exerts on the liner about +z
 //   guide_axial_N     force the piston exerts along the pin axis (tertiary), + along +z
 
-#include "pistondyn/plugin/ForceElement.h"
+#include "pistondyn/plugin/LinerElement.h"
 
 namespace pistondyn::plugin {
 
-class IdealLinerGuide final : public ForceElement {
+class IdealLinerGuide final : public LinerElement {
  public:
   std::string getName() const override { return "ideal_liner_guide"; }
   void addToModel(const ModelBuildContext& context) override;
   void calcForces(const SimTK::State&, AppliedForces&) const override {}
-  std::vector<std::string> getReportColumns() const override;
-  void calcReport(const SimTK::State& s, std::vector<double>& values) const override;
+  ElementOutputs getOutputs() const override;
+  double getSideForce_N(const SimTK::State& s) const override { return calcForceOnLiner(s)[1][0]; }
 
   // Force [N] and moment about the piston-frame origin [N m], in ground, that the
   // piston exerts on the liner through the three constraints (Stage::Acceleration).

@@ -17,6 +17,7 @@
 
 #include "pistondyn/mbd_models/CrankTrain.h"
 #include "pistondyn/plugin/ForceElement.h"
+#include "pistondyn/plugin/LinerElement.h"
 
 namespace pistondyn::plugin {
 
@@ -59,9 +60,26 @@ class PistonAssemblyModel {
   const SimTK::GeneralForceSubsystem& getForceSubsystem() const { return *forces_; }
   const mbd::CrankTrain& getCrankTrain() const { return *crankTrain_; }
 
-  // Output columns of every element, in registration order, and their values.
-  std::vector<std::string> getElementReportColumns() const;
-  void calcElementReports(const SimTK::State& s, std::vector<double>& values) const;
+  // ---- outputs (ElementOutput.h) ---------------------------------------------------
+  // Every element's outputs in registration order, as declared when the system was built
+  // (builds it first).
+  const std::vector<ElementOutput>& getElementOutputs();
+  const std::vector<ElementOutput>& getElementOutputs() const;
+  // Their column names (name_unit).
+  std::vector<std::string> getElementOutputColumns() const;
+  // Appends the value of every output, in that order (state realized through
+  // Stage::Acceleration).
+  void calcElementOutputs(const SimTK::State& s, std::vector<double>& values) const;
+
+  // The element that holds the piston in the bore (LinerElement.h), or nullptr if the
+  // model has none. Throws std::logic_error if several elements claim the role.
+  const LinerElement* findLinerElement() const;
+
+  // ---- force Jacobian for implicit steppers (ForceElement::addForceJacobian) --------
+  // Sum of the elements' Jacobian parts at a state realized through Stage::Dynamics
+  // (nu x nq and nu x nu, zero where no element adds anything). Returns false if no
+  // element adds anything.
+  bool calcElementForceJacobian(const SimTK::State& s, ForceJacobian& jacobian) const;
 
  private:
   void requireNotBuilt(const char* what) const;
@@ -77,7 +95,7 @@ class PistonAssemblyModel {
   std::unique_ptr<SimTK::SimbodyMatterSubsystem> matter_;
   std::unique_ptr<SimTK::GeneralForceSubsystem> forces_;
   std::unique_ptr<mbd::CrankTrain> crankTrain_;
-  std::vector<std::size_t> reportColumnCounts_;  // per element, recorded by buildSystem()
+  std::vector<ElementOutput> outputs_;  // recorded by buildSystem()
   bool built_ = false;
 };
 

@@ -137,9 +137,10 @@ class ElementAutoUpdateVariable {
   void allocate(ElementStateAllocator& a, const T& initialValue) const {
     subsystem_ = &a.getSubsystem();
     // Changing the variable invalidates Dynamics (forces depend on it); its update value
-    // is computed from a state realized through Velocity (inside calcForces()), and is
-    // discarded whenever the state's positions, velocities or z change, so a swap only
-    // ever installs a value computed from the state being accepted.
+    // is computed from a state realized through Velocity (inside calcForces()) and is
+    // discarded whenever the state's time, q or u change, so a swap only ever installs a
+    // value computed from the state being accepted (LinearlyImplicitStepper swaps right
+    // after its predictor evaluation for that reason).
     index_ = subsystem_->allocateAutoUpdateDiscreteVariable(a.updState(), SimTK::Stage::Dynamics,
                                                             new SimTK::Value<T>(initialValue),
                                                             SimTK::Stage::Velocity);

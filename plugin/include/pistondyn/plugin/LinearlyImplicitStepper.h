@@ -1,0 +1,117 @@
+#pragma once
+// A time stepper for a piston held in the bore by a squeeze film: variable-step,
+// linearly implicit BDF2 on the free generalised coordinates of a PistonAssemblyModel,
+// using the force Jacobian the elements supply (ForceElement::addForceJacobian).
+//
+// Why not an explicit Runge-Kutta method: the squeeze film damps the piston's lateral
+// and tilt motion with a coefficient c ~ 1/h^3; at h = 5 um it reaches ~1e7 N s/m, so
+// the time constant m/c of a 0.3 kg piston is ~3e-8 s and explicit steps collapse to
+// nanoseconds (DESIGN.md §5). Why not Simbody's CPodes BDF: it differentiates the whole
+// system numerically, one force evaluation (two film solves) per state variable for
+// every Jacobian, against a film whose solver tolerance makes such differences noisy.
+// The film solver instead returns the exact derivatives of its loads with respect to
+// the squeeze velocities (the pressure is linear in them for a fixed cavitation set),
+// and the asperity-contact law its exact stiffness: the stiff part of the Jacobian is
+// known, the rest (rigid-body coupling, film wedge stiffness, gas load) is not stiff and
+// can be left to the explicit part of the linearisation.
+//
+// Method. y = (q_f, u_f, z): free q and u (not prescribed by a Motion), and the z of
+// the elements. One step from t_n to t_{n+1} = t_n + h:
+//   1. predict y_p by extrapolating the polynomial through the last three accepted
+//      states (two on the second step, one with the last derivative on the first);
+//   2. evaluate f(y_p) (one realization: one film solve per skirt side) and the
+//      approximate Jacobian W = [[0, I, 0], [M^-1 K, M^-1 C, 0], [0, 0, 0]], where
+//      K = d f_gen / d q and C = d f_gen / d u are the elements' parts and M the mass
+//      matrix of the free mobilities;
+//   3. one Newton step of variable-step BDF2 from y_p:
+//        (I - beta h W) (y_{n+1} - y_p) = a0 y_n + a1 y_{n-1} + beta h f(y_p) - y_p,
+//      with a0 = (1+w)^2/(1+2w), a1 = -w^2/(1+2w), beta = (1+w)/(1+2w), w = h_n/h_{n-1}
+//      (backward Euler, a0 = 1, a1 = 0, beta = 1, on the first step);
+//   4. estimate the local error from the corrector-predictor difference,
+//      err ~ C_bdf / (C_bdf - C_pred) (y_{n+1} - y_p) = (2/7)(y_{n+1} - y_p) for constant
+//      steps (C_bdf = -2/9 of BDF2, C_pred = -1 of quadratic extrapolation), in a weighted
+//      RMS norm over (q_f, u_f) with absolute tolerances per coordinate (below); accept
+//      if err <= 1, and choose the next step from err^(-1/3).
+// Linearising about the predictor rather than about y_n makes the linearisation error
+// h W_err (y_{n+1} - y_p) = O(h^4): what W leaves out costs no order. The z (integrals
+// such as friction work) are quadratures of the trajectory: they take the same BDF2
+// formula with f(y_p) and are not in the error norm (their error follows the
+// trajectory's).
+//
+// History (auto-update discrete variables, ElementState.h): as in Simbody's integrators,
+// an element sees t - lastUpdateTime = h over a step and the update values it computes
+// at the step's end are installed for the next step. Which ones: those computed at the
+// accepted state if it was realized before the next step starts (an output row does
+// that: getState() returns the accepted state with the step's history not yet
+// installed, so a realization there evaluates the elements exactly as the step did),
+// else those computed at the predictor y_p (the one realization the step made).
+//
+// Requirements: no enabled constraints (the piston is held by force elements, not by
+// joints); mobilizers with qdot = u (Pin, Slider, Cylinder, Weld, ...; a ball or free
+// joint's quaternions are not handled).
+
+#include <functional>
+#include <memory>
+
+#include "pistondyn/plugin/PistonAssemblyModel.h"
+
+namespace pistondyn::plugin {
+
+struct LinearlyImplicitStepperOptions {
+  // Absolute tolerance on the piston pose, as a displacement [m]: the lateral
+  // displacement, the tertiary displacement and the tilt times the skirt length.
+  // Each free q gets positionTolerance_m / (its pose lever [m per unit q]). Default 10 nm.
+  double positionTolerance_m = 1e-8;
+  // Absolute tolerance on the corresponding rates [m/s]. Default 1e-8 m * 2000 rpm in rad/s.
+  double velocityTolerance_mps = 1e-8 * 209.4;
+  // Relative tolerance on |q_f|, |u_f| [-], default 0. Keep it 0 (or tiny) for a piston
+  // train: the rod angle swings by ~0.3 rad with the primary motion, so 1e-4 of it would
+  // allow ~4 um of lateral error; the pose tolerances above are what matters.
+  double relativeTolerance = 0.0;
+  double maxStep_s = 1e-4;          // upper bound of the step size [s]
+  double minStep_s = 1e-12;         // a step below this fails the run [s]
+  double initialStep_s = 1e-6;      // first step [s]
+  long maxSteps = 10000000;         // step budget of one stepper (a run never hangs)
+  int maxConsecutiveFailures = 30;  // element errors or rejections in a row before giving up
+};
+
+struct LinearlyImplicitStepperStats {
+  long steps = 0;              // accepted steps
+  long rejectedSteps = 0;      // by the error test
+  long failedEvaluations = 0;  // steps retried because an element threw
+  long forceEvaluations = 0;   // realizations to Stage::Acceleration done by the stepper
+};
+
+class LinearlyImplicitStepper {
+ public:
+  // Throws std::invalid_argument on bad options or a model with enabled constraints.
+  LinearlyImplicitStepper(const PistonAssemblyModel& model,
+                          const LinearlyImplicitStepperOptions& options);
+  ~LinearlyImplicitStepper();
+  LinearlyImplicitStepper(const LinearlyImplicitStepper&) = delete;
+  LinearlyImplicitStepper& operator=(const LinearlyImplicitStepper&) = delete;
+
+  // Starts from `state` (its time, q, u, z, discrete variables); prescribes the
+  // prescribed coordinates and swaps the auto-update variables once.
+  void initialize(const SimTK::State& state);
+  // Integrates until exactly t = tOut (> current time). Throws std::runtime_error naming
+  // the time and the reason when the step size falls below minStep_s, the step budget
+  // is used up or an element keeps failing.
+  void stepTo(double tOut);
+  double getTime() const;
+  // The state at getTime(), not yet realized beyond Stage::Position.
+  const SimTK::State& getState() const;
+  const LinearlyImplicitStepperStats& getStats() const;
+  const LinearlyImplicitStepperOptions& getOptions() const;
+
+  // Called with the failing time and a description before stepTo() throws (e.g. to add
+  // the crank angle to the message); the returned text replaces the message.
+  using FailureDescriber = std::function<std::string(double time_s, const std::string& reason)>;
+  void setFailureDescriber(FailureDescriber describer);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace pistondyn::plugin

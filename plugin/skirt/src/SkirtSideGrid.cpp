@@ -148,7 +148,7 @@ PistonLoads SkirtSideGrid::calcLoadsOnPiston(
   checkSize("axialShear_Pa", axialShear_Pa.size(), true);
   checkSize("circumferentialShear_Pa", circumferentialShear_Pa.size(), true);
 
-  const Eigen::ArrayXd& p = normalPressure_Pa;
+  const auto& p = normalPressure_Pa;  // the Ref itself: binding it to an ArrayXd& would copy
   PistonLoads out;
   out.force_N.x() = -(p * wc_).sum();
   out.force_N.z() = -(p * ws_).sum();

@@ -4,7 +4,8 @@
 // what was expected (docs/CONVENTIONS.md).
 
 #include <cmath>
-#include <sstream>
+#include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -19,12 +20,16 @@ namespace pistondyn::skirt::detail {
   throw std::invalid_argument(std::string(where) + ": " + what);
 }
 
-// Shortest text that reads back to the same double (17 significant digits at most).
+// Shortest text (15 to 17 significant digits) that reads back to the same double, so that
+// 0.015 prints as 0.015 and not 0.014999999999999999.
 inline std::string str(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
+  char buffer[32];
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, v);
+    if (std::strtod(buffer, nullptr) == v || !std::isfinite(v))
+      break;
+  }
+  return buffer;
 }
 
 // "name = value unit"

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "Checks.h"
+#include "NodalView.h"
 #include "OutputChecks.h"
 
 namespace pistondyn::skirt {
@@ -91,6 +92,8 @@ void LinerShape::calcField(double pinHeight_m, double axialVelocity_mps,
   const Eigen::Index nO = static_cast<Eigen::Index>(orders_.size());
   // Per-row coefficients on the stack (at most 13 orders): no allocation per call.
   std::array<double, kMaxBoreDistortionOrder + 1> a{}, b{}, aRate{}, bRate{};
+  auto gapRows = detail::asNodeMatrix(gap_m, nPhi_, nY_);
+  auto rateRows = detail::asNodeMatrix(gapRate_mps, nPhi_, nY_);
   for (int j = 0; j < nY_; ++j) {
     const double depth = linerTop_m_ - (pinHeight_m + y_m_[j]);
     for (Eigen::Index o = 0; o < nO; ++o) {
@@ -101,15 +104,14 @@ void LinerShape::calcField(double pinHeight_m, double axialVelocity_mps,
       aRate[o] = -sa.derivative * axialVelocity_mps;
       bRate[o] = -sb.derivative * axialVelocity_mps;
     }
-    const Eigen::Index row = Eigen::Index(j) * nPhi_;
     for (int i = 0; i < nPhi_; ++i) {
       double h = 0.0, rate = 0.0;
       for (Eigen::Index o = 0; o < nO; ++o) {
         h += a[o] * cosNPhi_(o, i) + b[o] * sinNPhi_(o, i);
         rate += aRate[o] * cosNPhi_(o, i) + bRate[o] * sinNPhi_(o, i);
       }
-      gap_m[row + i] = h;
-      gapRate_mps[row + i] = rate;
+      gapRows(i, j) = h;
+      rateRows(i, j) = rate;
     }
   }
 }

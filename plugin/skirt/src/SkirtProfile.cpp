@@ -1,5 +1,6 @@
 #include "pistondyn/skirt/SkirtProfile.h"
 
+#include "NodalView.h"
 #include "OutputChecks.h"
 
 namespace pistondyn::skirt {
@@ -12,11 +13,10 @@ void SkirtProfile::calcField(const SkirtSideGrid& grid, Eigen::Ref<Eigen::ArrayX
   detail::requireNodalSize("SkirtProfile::calcField", "gap_m", gap_m.size(), grid.nodeCount());
   const Eigen::VectorXd& phi = grid.getPhiNodes_rad();
   const Eigen::VectorXd& y = grid.getYNodes_m();
-  for (int j = 0; j < grid.nY(); ++j) {
-    const double axial = axial_.calcDrop_m(y[j]);
-    for (int i = 0; i < grid.nPhi(); ++i)
-      gap_m[grid.nodeIndex(i, j)] = axial + ovality_.calcDrop_m(phi[i]);
-  }
+  const Eigen::ArrayXd ovality = phi.unaryExpr([this](double p) { return ovality_.calcDrop_m(p); });
+  auto rows = detail::asNodeMatrix(gap_m, grid.nPhi(), grid.nY());
+  for (int j = 0; j < grid.nY(); ++j)
+    rows.col(j) = ovality + axial_.calcDrop_m(y[j]);
 }
 
 }  // namespace pistondyn::skirt

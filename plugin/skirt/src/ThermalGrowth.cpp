@@ -3,6 +3,7 @@
 #include <string>
 
 #include "Checks.h"
+#include "NodalView.h"
 #include "OutputChecks.h"
 
 namespace pistondyn::skirt {
@@ -70,8 +71,9 @@ void PistonThermalGrowth::calcField(const SkirtSideGrid& grid,
     return;
   }
   const Eigen::VectorXd& y = grid.getYNodes_m();
+  auto rows = detail::asNodeMatrix(gap_m, grid.nPhi(), grid.nY());
   for (int j = 0; j < grid.nY(); ++j)
-    gap_m.segment(Eigen::Index(j) * grid.nPhi(), grid.nPhi()).setConstant(calcGapFromTable_m(y[j]));
+    rows.col(j).setConstant(calcGapFromTable_m(y[j]));
 }
 
 LinerThermalGrowth::LinerThermalGrowth(const LinerThermalParameters& p, const SkirtSideGrid& grid,
@@ -114,10 +116,12 @@ void LinerThermalGrowth::calcField(double pinHeight_m, double axialVelocity_mps,
     gapRate_mps.setZero();
     return;
   }
+  auto gapRows = detail::asNodeMatrix(gap_m, nPhi_, y_m_.size());
+  auto rateRows = detail::asNodeMatrix(gapRate_mps, nPhi_, y_m_.size());
   for (Eigen::Index j = 0; j < y_m_.size(); ++j) {
     const LinerThermalSample s = calcSample(pinHeight_m + y_m_[j]);
-    gap_m.segment(j * nPhi_, nPhi_).setConstant(s.gap_m);
-    gapRate_mps.segment(j * nPhi_, nPhi_).setConstant(s.dGap_dBoreHeight * axialVelocity_mps);
+    gapRows.col(j).setConstant(s.gap_m);
+    rateRows.col(j).setConstant(s.dGap_dBoreHeight * axialVelocity_mps);
   }
 }
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "pistondyn/skirt/InterpolatedTable.h"
@@ -97,6 +98,8 @@ TEST(InterpolatedTable, PchipConvergesAtThirdOrderOnSmoothMonotoneData) {
     EXPECT_LT(order, 3.3) << "refinement " << k;
   }
   EXPECT_LT(err.back(), 1e-6);
+  std::printf("[ pchip    ] sin on 10, 20, 40, 80 intervals: max errors %.2e %.2e %.2e %.2e\n",
+              err[0], err[1], err[2], err[3]);
 }
 
 TEST(InterpolatedTable, DerivativeIsTheSlopeOfTheValueAndContinuous) {

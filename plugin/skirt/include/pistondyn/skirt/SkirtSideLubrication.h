@@ -1,0 +1,165 @@
+#pragma once
+// Film and asperity contact on one skirt side for one force evaluation: the gap fields of a
+// GapAssembly go in, the film (lubrication::FilmSolver), the asperity contact
+// (contact_forces::AsperityContactLaw) and the boundary friction
+// (contact_forces::BoundaryFriction) are evaluated on the side's grid, and the loads on the
+// piston come out with their derivatives with respect to the pose and its rates.
+//
+// Surfaces and velocities (FilmProblem.h, SurfacePair.h): the grid is attached to the skirt
+// (surface 2); the liner (surface 1) moves with U relative to it. U along the film grid's
+// axes: U_y (axial, +y) = -v_y of the piston; U_x (circumferential, along +e_phi = the film
+// grid's +x) = minus the skirt's tangential velocity at the side's centre line.
+//
+// Per node (k = i + nPhi j, SkirtSideGrid.h):
+//   film gap       h_f = (h + h_c + sqrt((h - h_c)^2 + h_c^2)) / 2 of the nominal gap h, a
+//                  smooth clamp >= h_c = clampFraction * sigma (PatirChengFlowFactors.h: it
+//                  changes the film gap by < 1.2 % at h/sigma >= 0.5); the gap rate and the
+//                  squeeze basis are multiplied by dh_f/dh
+//   film           lubrication::FilmSolver on SkirtSideGrid::getFilmGrid(), all four edges
+//                  open at edgePressure_Pa, the inlet supply film on both axial edges (it
+//                  matters only where the liner slides in), the flow-factor model of the
+//                  side (Patir & Cheng; smooth when sigma = 0)
+//   contact        p_c(h) of the asperity law on the NOMINAL gap (it carries the load where
+//                  the clamp holds the film open), its slope dp_c/dh
+//   boundary shear tau_b = BoundaryFriction::calcShearStress_Pa(p_c, -U) on the skirt
+// Tractions on the skirt: normal p = p_film + p_c (minus edgePressure_Pa, see below), axial
+// tau_y = film shear on surface 2 along y + tau_b,y, circumferential tau_phi = film shear on
+// surface 2 along x + tau_b,x. Loads by SkirtSideGrid::calcLoadsOnPiston (exact for the
+// bilinear fields), split into the hydrodynamic part (film pressure and film shear) and the
+// asperity part (contact pressure and boundary shear).
+//
+// Derivatives (for the implicit time stepper; pose order kLateral, kTilt, kTertiary):
+//   dLoads_dPoseRate  6 x 3: (force; moment) per unit pose rate, from the film's squeeze
+//                     derivatives (FilmResult::dPressure_dVelocity; exact for the final
+//                     cavitation set), pressure part only; columns beyond
+//                     squeezeColumns are zero
+//   dLoads_dPose      6 x 3: from the asperity law's exact slope, dp_c/dh * dh/dpose,
+//                     pressure part only. The film's own stiffness (the change of the wedge
+//                     pressure with the pose) is NOT included: it is not stiff (the film is
+//                     overdamped: K/C is slow), LinearlyImplicitStepper.h explains why that
+//                     is enough.
+//
+// Cost and state: one film solve per call (with squeezeColumns extra back-substitutions),
+// one contact field, a few weighted sums. No allocation after the first call at a size. The
+// object keeps the film solver's workspace and the last film state as the warm start of the
+// next call (a mutable workspace in the sense of ForceElement.h: results depend on it only
+// within the solver tolerance). History that matters (the mass-conserving model's fill
+// fraction) is NOT kept here: the caller passes the previous fill fraction and the time step
+// and stores the result's fill fraction in its own State.
+//
+// Errors: std::invalid_argument for inputs of the wrong size or not finite (naming them); a
+// film solve that does not converge (after the solver's own fallback) throws
+// std::runtime_error naming the side, the residual and the iterations, never returns NaN.
+
+#include <limits>
+#include <memory>
+
+#include <Eigen/Core>
+
+#include "pistondyn/contact_forces/AsperityContactLaw.h"
+#include "pistondyn/contact_forces/BoundaryFriction.h"
+#include "pistondyn/lubrication/FilmSolver.h"
+#include "pistondyn/lubrication/FlowFactorModel.h"
+#include "pistondyn/skirt/GapFields.h"
+#include "pistondyn/skirt/SkirtSideGrid.h"
+
+namespace pistondyn::skirt {
+
+struct SkirtLubricationParameters {
+  lubrication::CavitationModel cavitation = lubrication::CavitationModel::Reynolds;
+  double cavitationPressure_Pa = 0.0;  // p_cav, gauge [Pa], default 0
+  double edgePressure_Pa = 0.0;        // pressure on all four edges, gauge [Pa], default 0
+  lubrication::FilmSolverOptions solver;  // fast active-set solver by default
+  // h_c of the film-gap clamp as a fraction of the composite roughness sigma [-], > 0,
+  // default 0.1; with sigma = 0 (smooth surfaces) h_c = minimumClampGap_m.
+  double clampFraction = 0.1;
+  double minimumClampGap_m = 1e-8;  // [m], > 0, default 10 nm
+  // Archard wear coefficient k/H of the liner-skirt pair, wear volume per (normal force x
+  // sliding distance) [m^2/N] = [1/Pa], >= 0, default 0 (no wear reported).
+  double wearCoefficient_m2pN = 0.0;
+};
+
+// What one call needs besides the gap fields.
+struct SkirtSideInputs {
+  double slidingVelocityAxial_mps = 0.0;            // U_y, liner relative to skirt [m/s]
+  double slidingVelocityCircumferential_mps = 0.0;  // U_x [m/s]
+  double viscosity_Pas = 0.0;                       // dynamic viscosity [Pa s], > 0
+  // Oil layer on the liner ahead of the skirt (both axial edges) [m], > 0; +inf = fully
+  // flooded (FilmEdge::supplyFilm_m).
+  double supplyFilm_m = std::numeric_limits<double>::infinity();
+  // Squeeze derivatives wanted: the first squeezeColumns columns of the gap's squeeze basis
+  // (0..3; 2 = lateral and tilt, 3 with the tertiary motion).
+  int squeezeColumns = 2;
+  // Mass-conserving model only: fill fraction at the start of the step (nodeCount entries;
+  // empty = full film) and the step [s] (> 0; +inf or <= 0 = steady state).
+  const Eigen::ArrayXd* previousFillFraction = nullptr;
+  double timeStep_s = std::numeric_limits<double>::infinity();
+};
+
+struct SkirtSideResults {
+  lubrication::FilmResult film;        // pressure, fill fraction, film shear, diagnostics
+  contact_forces::ContactField contact;  // p_c, dp_c/dh, area fraction, h/sigma, regime
+  Eigen::ArrayXd filmGap_m;            // clamped film gap h_f [m]
+  Eigen::ArrayXd boundaryShearAxial_Pa, boundaryShearCircumferential_Pa;  // tau_b [Pa]
+  Eigen::ArrayXd normalPressure_Pa;    // p_film + p_c - edgePressure [Pa] (total traction)
+
+  PistonLoads hydrodynamicLoads;  // film pressure + film shear (piston frame, about origin)
+  PistonLoads asperityLoads;      // contact pressure + boundary shear
+  PistonLoads totalLoads;
+  Eigen::Matrix<double, 6, 3> dLoads_dPoseRate = Eigen::Matrix<double, 6, 3>::Zero();
+  Eigen::Matrix<double, 6, 3> dLoads_dPose = Eigen::Matrix<double, 6, 3>::Zero();
+
+  // Figures of the side (all SI, finite):
+  double hydrodynamicNormalForce_N = 0.0;  // load the film carries, along the side's normal, >= 0 typical
+  double asperityNormalForce_N = 0.0;      // load the asperities carry, >= 0
+  double hydrodynamicFrictionAxial_N = 0.0;  // film shear force on the piston along +y
+  double asperityFrictionAxial_N = 0.0;      // boundary friction force on the piston along +y
+  double frictionPower_W = 0.0;  // power the shear dissipates, U . (integral of tau on skirt)
+  double minFilmThickness_m = 0.0;  // smallest NOMINAL gap on the side (may be < 0: overlap)
+  double minFilmPhi_rad = 0.0, minFilmY_m = 0.0;  // where
+  double minGapOverSigma = 0.0;      // smallest h / sigma (nominal gap)
+  // Shares of the side's area by regime of the nominal gap (contact_forces' classification:
+  // hydrodynamic h/sigma > 3, mixed 1 < h/sigma <= 3, boundary <= 1); they sum to 1.
+  double hydrodynamicShare = 0.0, mixedShare = 0.0, boundaryShare = 0.0;
+  double wettedShare = 0.0;     // share of the area with oil (fill fraction > 0)
+  double wearRate_m3ps = 0.0;   // Archard wear volume rate k/H * integral p_c |U| dA [m^3/s]
+  double maxWearDepthRate_mps = 0.0;  // k/H * max p_c |U| [m/s]
+};
+
+class SkirtSideLubrication {
+ public:
+  // Inputs:
+  //   grid         the side (copied)
+  //   flowFactors  film flow-factor model (Patir & Cheng with the pair's Rq), shared, immutable
+  //   contactLaw   asperity law with the same roughness, shared, immutable
+  //   friction     boundary friction (Coulomb, f_dry)
+  //   parameters   see SkirtLubricationParameters
+  // Throws std::invalid_argument naming the member for bad parameters or a null model.
+  SkirtSideLubrication(const SkirtSideGrid& grid,
+                       std::shared_ptr<const lubrication::FlowFactorModel> flowFactors,
+                       std::shared_ptr<const contact_forces::AsperityContactLaw> contactLaw,
+                       const contact_forces::BoundaryFriction& friction,
+                       const SkirtLubricationParameters& parameters);
+  ~SkirtSideLubrication();
+  SkirtSideLubrication(SkirtSideLubrication&&) noexcept;
+  SkirtSideLubrication& operator=(SkirtSideLubrication&&) noexcept;
+
+  const SkirtSideGrid& getGrid() const;
+  const SkirtLubricationParameters& getParameters() const;
+  // Composite roughness sigma of the pair [m] and the clamp gap h_c in use [m].
+  double getCompositeSigma_m() const;
+  double getClampGap_m() const;
+
+  // One evaluation (see the file comment). `out` is reused between calls (no allocation
+  // at a fixed grid size). The film's warm start is the last call's solution.
+  void solve(const GapFields& gap, const SkirtSideInputs& inputs, SkirtSideResults& out);
+
+  // Forgets the warm start (e.g. before a run restarted from another state).
+  void resetWarmStart();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace pistondyn::skirt

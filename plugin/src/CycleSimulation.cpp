@@ -1,9 +1,15 @@
 #include "pistondyn/plugin/CycleSimulation.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
+#include <sstream>
 #include <stdexcept>
+
+#include "pistondyn/mbd_models/SliderCrank.h"
+#include "pistondyn/plugin/LinearlyImplicitStepper.h"
 
 namespace pistondyn::plugin {
 
@@ -41,6 +47,18 @@ void validate(const SimulationSettings& s) {
   if (!(s.constraintTolerance > 0.0 && s.constraintTolerance < 1.0)) {
     fail("constraintTolerance must be in (0, 1)");
   }
+  if (!(s.poseTolerance_m > 0.0 && s.poseTolerance_m < 1e-3))
+    fail("poseTolerance_m must be in (0, 1e-3) m");
+  if (!(s.maxStep_deg > 0.0 && s.maxStep_deg <= 10.0))
+    fail("maxStep_deg must be in (0, 10] deg");
+  if (s.maxSteps < 1)
+    fail("maxSteps must be at least 1");
+  if (!(s.periodicFmepTolerance > 0.0 && s.periodicFmepTolerance < 1.0))
+    fail("periodicFmepTolerance must be in (0, 1)");
+  if (!(s.periodicPoseTolerance_m > 0.0 && s.periodicPoseTolerance_m < 1e-3))
+    fail("periodicPoseTolerance_m must be in (0, 1e-3) m");
+  if (s.untilPeriodic && s.cycles < 2)
+    fail("untilPeriodic needs cycles >= 2 (two cycles to compare)");
 }
 
 void ResultTableSink::beginRun(const std::vector<std::string>& columns) {
@@ -82,6 +100,164 @@ CycleSimulation::CycleSimulation(PistonAssemblyModel& model, SimulationSettings 
   validate(settings_);
 }
 
+namespace {
+
+std::string formatAngle(double deg) {
+  std::ostringstream os;
+  os.precision(6);
+  os << deg;
+  return os.str();
+}
+
+// One interface over Simbody's integrators and LinearlyImplicitStepper: advance the state to
+// a time, restart from a state, report counts.
+class Advancer {
+ public:
+  virtual ~Advancer() = default;
+  virtual void initialize(const SimTK::State& s) = 0;
+  virtual void advanceTo(double t) = 0;
+  virtual const SimTK::State& getState() const = 0;
+  virtual double getTime() const = 0;
+  virtual long getSteps() const = 0;
+  virtual long getRealizations() const = 0;
+  virtual long getRejectedSteps() const { return 0; }
+  virtual long getFailedEvaluations() const { return 0; }
+};
+
+class SimbodyAdvancer final : public Advancer {
+ public:
+  SimbodyAdvancer(const SimTK::MultibodySystem& system, const SimulationSettings& settings)
+      : maxSteps_(settings.maxSteps) {
+    switch (settings.integrator) {
+      case SimulationSettings::Integrator::RungeKuttaFeldberg:
+        integ_ = std::make_unique<SimTK::RungeKuttaFeldbergIntegrator>(system);
+        break;
+      case SimulationSettings::Integrator::CPodesBDF:
+        integ_ = std::make_unique<SimTK::CPodesIntegrator>(system, SimTK::CPodes::BDF,
+                                                           SimTK::CPodes::Newton);
+        break;
+      case SimulationSettings::Integrator::RungeKuttaMerson:
+      default:
+        integ_ = std::make_unique<SimTK::RungeKuttaMersonIntegrator>(system);
+        break;
+    }
+    integ_->setAccuracy(settings.accuracy);
+    integ_->setConstraintTolerance(settings.constraintTolerance);
+  }
+  void initialize(const SimTK::State& s) override {
+    if (initialized_) {  // a restart (the free crank's landing): keep the counts
+      stepsBefore_ += integ_->getNumStepsTaken();
+      realizationsBefore_ += integ_->getNumRealizations();
+    }
+    integ_->initialize(s);
+    initialized_ = true;
+  }
+  void advanceTo(double tOut) override {
+    while (integ_->getTime() < tOut) {
+      if (getSteps() >= maxSteps_) {
+        throw std::runtime_error("the step budget of " + std::to_string(maxSteps_) +
+                                 " integrator steps is used up");
+      }
+      if (integ_->stepTo(tOut) == SimTK::Integrator::EndOfSimulation) {
+        throw std::runtime_error("integrator stopped: " + integ_->getTerminationReasonString(
+                                                              integ_->getTerminationReason()));
+      }
+    }
+  }
+  const SimTK::State& getState() const override { return integ_->getState(); }
+  double getTime() const override { return integ_->getTime(); }
+  long getSteps() const override { return stepsBefore_ + integ_->getNumStepsTaken(); }
+  long getRealizations() const override {
+    return realizationsBefore_ + integ_->getNumRealizations();
+  }
+
+ private:
+  std::unique_ptr<SimTK::Integrator> integ_;
+  long maxSteps_;
+  long stepsBefore_ = 0, realizationsBefore_ = 0;
+  bool initialized_ = false;
+};
+
+class StepperAdvancer final : public Advancer {
+ public:
+  StepperAdvancer(const PistonAssemblyModel& model, const SimulationSettings& settings)
+      : model_(model) {
+    const double degree_s = (M_PI / 180.0) / model.getCrankTrain().getEngine().drive.speed_radps;
+    LinearlyImplicitStepperOptions o;
+    o.positionTolerance_m = settings.poseTolerance_m;
+    o.velocityTolerance_mps = settings.poseTolerance_m / degree_s;
+    o.maxStep_s = settings.maxStep_deg * degree_s;
+    o.initialStep_s = std::min(1e-3 * degree_s, o.maxStep_s);
+    o.minStep_s = std::min(1e-9 * degree_s, o.initialStep_s);
+    o.maxSteps = settings.maxSteps;
+    options_ = o;
+  }
+  void initialize(const SimTK::State& s) override {
+    // A restart (the free crank's landing) begins a new BDF history from s.
+    if (stepper_)
+      accumulate();
+    stepper_ = std::make_unique<LinearlyImplicitStepper>(model_, options_);
+    stepper_->initialize(s);
+  }
+  void advanceTo(double t) override { stepper_->stepTo(t); }
+  const SimTK::State& getState() const override { return stepper_->getState(); }
+  double getTime() const override { return stepper_->getTime(); }
+  long getSteps() const override { return before_.steps + stepper_->getStats().steps; }
+  long getRealizations() const override {
+    return before_.forceEvaluations + stepper_->getStats().forceEvaluations;
+  }
+  long getRejectedSteps() const override {
+    return before_.rejectedSteps + stepper_->getStats().rejectedSteps;
+  }
+  long getFailedEvaluations() const override {
+    return before_.failedEvaluations + stepper_->getStats().failedEvaluations;
+  }
+
+ private:
+  void accumulate() {
+    const auto& s = stepper_->getStats();
+    before_.steps += s.steps;
+    before_.forceEvaluations += s.forceEvaluations;
+    before_.rejectedSteps += s.rejectedSteps;
+    before_.failedEvaluations += s.failedEvaluations;
+  }
+  const PistonAssemblyModel& model_;
+  LinearlyImplicitStepperOptions options_;
+  std::unique_ptr<LinearlyImplicitStepper> stepper_;
+  LinearlyImplicitStepperStats before_;
+};
+
+// Free crank: advance until the crank angle equals thetaTarget (to 1e-12 rad), by a
+// secant/Newton iteration on the time using the crank speed. An overshoot restarts
+// the integrator from the previous row's state.
+void landOnCrankAngle(Advancer& integ, const mbd::CrankTrain& ct, double thetaTarget) {
+  const SimTK::State start = integ.getState();
+  const double tol = 1e-12 * std::max(1.0, std::abs(thetaTarget));
+  double t =
+      start.getTime() + (thetaTarget - ct.getCrankAngle_rad(start)) / ct.getCrankSpeed_radps(start);
+  for (int iter = 0; iter < 50; ++iter) {
+    if (t < integ.getTime())
+      integ.initialize(start);
+    integ.advanceTo(t);
+    const SimTK::State& s = integ.getState();
+    const double err = thetaTarget - ct.getCrankAngle_rad(s);
+    if (std::abs(err) <= tol)
+      return;
+    const double speed = ct.getCrankSpeed_radps(s);
+    if (!(speed > 0.0)) {
+      throw std::runtime_error("the free crank stopped or reversed (speed " +
+                               std::to_string(speed) +
+                               " rad/s at t = " + std::to_string(s.getTime()) +
+                               " s); raise the speed or lower the load");
+    }
+    t = s.getTime() + err / speed;
+  }
+  throw std::runtime_error("could not land on crank angle " +
+                           std::to_string(thetaTarget * 180.0 / M_PI) + " deg");
+}
+
+}  // namespace
+
 std::vector<std::string> CycleSimulation::getColumns() const {
   std::vector<std::string> columns = crankTrainColumns();
   model_.buildSystem();
@@ -113,70 +289,12 @@ void CycleSimulation::calcCrankTrainRow(const mbd::CrankTrain& ct, const SimTK::
   v.push_back(ct.getDriveTorque_Nm(s));
 }
 
-namespace {
-
-std::unique_ptr<SimTK::Integrator> makeIntegrator(const SimTK::MultibodySystem& system,
-                                                  SimulationSettings::Integrator kind) {
-  switch (kind) {
-    case SimulationSettings::Integrator::RungeKuttaFeldberg:
-      return std::make_unique<SimTK::RungeKuttaFeldbergIntegrator>(system);
-    case SimulationSettings::Integrator::CPodesBDF:
-      return std::make_unique<SimTK::CPodesIntegrator>(system, SimTK::CPodes::BDF,
-                                                       SimTK::CPodes::Newton);
-    case SimulationSettings::Integrator::RungeKuttaMerson:
-    default:
-      return std::make_unique<SimTK::RungeKuttaMersonIntegrator>(system);
-  }
-}
-
-void advanceTo(SimTK::Integrator& integ, double tOut) {
-  while (integ.getTime() < tOut) {
-    if (integ.stepTo(tOut) == SimTK::Integrator::EndOfSimulation) {
-      throw std::runtime_error("CycleSimulation: integrator stopped: " +
-                               integ.getTerminationReasonString(integ.getTerminationReason()));
-    }
-  }
-}
-
-// Free crank: advance until the crank angle equals thetaTarget (to 1e-12 rad), by a
-// secant/Newton iteration on the time using the crank speed. An overshoot restarts
-// the integrator from the previous row's state. Returns the steps of abandoned runs.
-long landOnCrankAngle(SimTK::Integrator& integ, const mbd::CrankTrain& ct, double thetaTarget) {
-  const SimTK::State start = integ.getState();
-  const double tol = 1e-12 * std::max(1.0, std::abs(thetaTarget));
-  long abandonedSteps = 0;
-  double t =
-      start.getTime() + (thetaTarget - ct.getCrankAngle_rad(start)) / ct.getCrankSpeed_radps(start);
-  for (int iter = 0; iter < 50; ++iter) {
-    if (t < integ.getTime()) {
-      abandonedSteps += integ.getNumStepsTaken();
-      integ.initialize(start);
-    }
-    advanceTo(integ, t);
-    const SimTK::State& s = integ.getState();
-    const double err = thetaTarget - ct.getCrankAngle_rad(s);
-    if (std::abs(err) <= tol)
-      return abandonedSteps;
-    const double speed = ct.getCrankSpeed_radps(s);
-    if (!(speed > 0.0)) {
-      throw std::runtime_error("CycleSimulation: the free crank stopped or reversed (speed " +
-                               std::to_string(speed) +
-                               " rad/s at t = " + std::to_string(s.getTime()) +
-                               " s); raise the speed or lower the load");
-    }
-    t = s.getTime() + err / speed;
-  }
-  throw std::runtime_error("CycleSimulation: could not land on crank angle " +
-                           std::to_string(thetaTarget * 180.0 / M_PI) + " deg");
-}
-
-}  // namespace
-
 ResultTable CycleSimulation::run(const Progress& progress, const RowObserver& observer) {
   // The observer sees each row's state before the row is stored, as a sink placed first.
   struct ObserverSink final : RowSink {
     explicit ObserverSink(const RowObserver& o) : observe(o) {}
     void consumeRow(const SimTK::State& s, const std::vector<double>&) override { observe(s); }
+    void discardRows() override {}
     const RowObserver& observe;
   } observerSink(observer);
   ResultTableSink tableSink;
@@ -190,13 +308,16 @@ ResultTable CycleSimulation::run(const Progress& progress, const RowObserver& ob
 
 void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& progress) {
   const auto wallStart = std::chrono::steady_clock::now();
+  stats_ = SimulationStats();
   model_.buildSystem();
   const SimTK::MultibodySystem& system = model_.getSystem();
   SimTK::State state = model_.getDefaultState();
   const mbd::CrankTrain& ct = model_.getCrankTrain();
-  const mbd::CrankDrive& drive = ct.getEngine().drive;
+  const mbd::EngineDescription& engine = ct.getEngine();
+  const mbd::CrankDrive& drive = engine.drive;
   const double omega = drive.speed_radps;
   const double theta0 = settings_.startAngle_deg * M_PI / 180.0;
+  const LinerElement* liner = model_.findLinerElement();
 
   // Constant speed: the Motion prescribes theta = omega t, so setPose puts the state at
   // t0 = theta0 / omega; a free crank starts at t = 0.
@@ -205,9 +326,12 @@ void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& pr
   const double t0 = state.getTime();
   ct.setRates(state, omega);
 
-  std::unique_ptr<SimTK::Integrator> integ = makeIntegrator(system, settings_.integrator);
-  integ->setAccuracy(settings_.accuracy);
-  integ->setConstraintTolerance(settings_.constraintTolerance);
+  std::unique_ptr<Advancer> integ;
+  if (settings_.integrator == SimulationSettings::Integrator::LinearlyImplicitBDF2) {
+    integ = std::make_unique<StepperAdvancer>(model_, settings_);
+  } else {
+    integ = std::make_unique<SimbodyAdvancer>(system, settings_);
+  }
   integ->initialize(state);
 
   const std::vector<std::string> columns = getColumns();
@@ -217,42 +341,99 @@ void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& pr
   const long perCycle = settings_.stepsPerCycle();
   const long nRows = perCycle * settings_.cycles + 1;
   const double dTheta = settings_.outputStep_deg * M_PI / 180.0;
-  long stepsBeforeRestarts = 0;
+  const mbd::SliderCrank kinematics(engine.geometry);
+  const double displacement_m3 =
+      mbd::CylinderVolume(kinematics, engine.piston.bore_m, engine.geometry.compressionRatio)
+          .displacement_m3();
+  const double skirt_m = engine.piston.skirtLength_m;
+  // Pose of the previous and the current cycle at every output angle, and friction work.
+  std::vector<double> previousPose(2 * perCycle), currentPose(2 * perCycle);
+  double workAtCycleStart = 0.0;
   std::vector<double> row;
   row.reserve(columns.size());
-  for (long k = 0; k < nRows; ++k) {
-    const double thetaTarget = theta0 + static_cast<double>(k) * dTheta;
-    if (k > 0) {
-      if (prescribed) {
-        // theta = omega t exactly: step to the row's time.
-        advanceTo(*integ, t0 + static_cast<double>(k) * dTheta / omega);
-      } else {
-        stepsBeforeRestarts += landOnCrankAngle(*integ, ct, thetaTarget);
+  long k = 0;
+  try {
+    for (k = 0; k < nRows; ++k) {
+      const double thetaTarget = theta0 + static_cast<double>(k) * dTheta;
+      if (k > 0) {
+        if (prescribed) {
+          // theta = omega t exactly: step to the row's time.
+          integ->advanceTo(t0 + static_cast<double>(k) * dTheta / omega);
+        } else {
+          landOnCrankAngle(*integ, ct, thetaTarget);
+        }
       }
-    }
-    const SimTK::State& s = integ->getState();
-    system.realize(s, SimTK::Stage::Acceleration);
-    row.clear();
-    calcCrankTrainRow(ct, s, row);
-    row[1] = thetaTarget * 180.0 / M_PI;  // the nominal angle the row was taken at
-    model_.calcElementOutputs(s, row);
-    for (double v : row) {
-      if (!std::isfinite(v)) {
-        throw std::runtime_error("CycleSimulation: non-finite result at crank angle " +
-                                 std::to_string(row[1]) + " deg");
+      const SimTK::State& s = integ->getState();
+      system.realize(s, SimTK::Stage::Acceleration);
+      row.clear();
+      calcCrankTrainRow(ct, s, row);
+      row[1] = thetaTarget * 180.0 / M_PI;  // the nominal angle the row was taken at
+      model_.calcElementOutputs(s, row);
+      for (std::size_t j = 0; j < row.size(); ++j) {
+        if (!std::isfinite(row[j])) {
+          throw std::runtime_error("non-finite value of " + columns[j]);
+        }
       }
-    }
-    if (k % perCycle == 0 && k < nRows - 1) {
+      const long inCycle = k % perCycle;
+      const std::optional<double> work = liner ? liner->getFrictionWork_J(s) : std::nullopt;
+      bool stop = false;
+      if (inCycle == 0 && k > 0) {
+        // A cycle closes at this row.
+        const int cycle = static_cast<int>(k / perCycle);
+        stats_.cyclesRun = cycle;
+        if (work)
+          stats_.cycleFmep_Pa.push_back((*work - workAtCycleStart) / displacement_m3);
+        if (settings_.untilPeriodic && cycle >= 2) {
+          double poseChange = 0.0;
+          for (std::size_t i = 0; i < currentPose.size(); ++i)
+            poseChange = std::max(poseChange, std::abs(currentPose[i] - previousPose[i]));
+          bool fmepSettled = true;
+          if (stats_.cycleFmep_Pa.size() >= 2) {
+            const double a = stats_.cycleFmep_Pa.back(), b = stats_.cycleFmep_Pa.rbegin()[1];
+            fmepSettled = std::abs(a - b) <= settings_.periodicFmepTolerance * std::abs(a);
+          }
+          if (fmepSettled && poseChange <= settings_.periodicPoseTolerance_m) {
+            stats_.converged = true;
+            stats_.cyclesToConverge = cycle;
+          }
+        }
+        stop = stats_.converged || k == nRows - 1;
+        std::swap(previousPose, currentPose);
+      }
+      if (inCycle == 0 && !stop) {
+        if (k > 0 && settings_.untilPeriodic) {
+          // The cycle just closed is not the result: keep only the next one.
+          for (RowSink* sink : sinks)
+            sink->discardRows();
+        }
+        for (RowSink* sink : sinks)
+          sink->beginCycle(static_cast<int>(k / perCycle));
+        if (work)
+          workAtCycleStart = *work;
+      }
+      if (!stop) {
+        currentPose[2 * inCycle] = ct.getLateralDisplacement_m(s);
+        currentPose[2 * inCycle + 1] = ct.getTilt_rad(s) * skirt_m;
+      }
       for (RowSink* sink : sinks)
-        sink->beginCycle(static_cast<int>(k / perCycle));
+        sink->consumeRow(s, row);
+      if (progress)
+        progress(static_cast<double>(k) / static_cast<double>(nRows - 1));
+      if (stop)
+        break;
     }
-    for (RowSink* sink : sinks)
-      sink->consumeRow(s, row);
-    if (progress)
-      progress(static_cast<double>(k) / static_cast<double>(nRows - 1));
+  } catch (const std::exception& e) {
+    const double reached = settings_.startAngle_deg +
+                           static_cast<double>(std::max(k - 1, 0L)) * settings_.outputStep_deg;
+    throw std::runtime_error(
+        "CycleSimulation: stopped before crank angle " +
+        formatAngle(settings_.startAngle_deg + static_cast<double>(k) * settings_.outputStep_deg) +
+        " deg (last row written at " + formatAngle(reached) + " deg): " + e.what());
   }
-  stats_.integratorSteps = stepsBeforeRestarts + integ->getNumStepsTaken();
-  stats_.realizations = integ->getNumRealizations();
+  stats_.integratorSteps = integ->getSteps();
+  stats_.realizations = integ->getRealizations();
+  stats_.rejectedSteps = integ->getRejectedSteps();
+  stats_.failedEvaluations = integ->getFailedEvaluations();
   stats_.wallTime_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
   for (RowSink* sink : sinks)

@@ -16,6 +16,14 @@
 // the matching times, with a free crank by iterating the time until the crank angle
 // is reached to 1e-12 rad. crank_angle_deg holds that nominal angle, unwrapped (it
 // keeps growing past 720 deg over several cycles).
+//
+// Periodic steady state (SimulationSettings::untilPeriodic): cycles are run until two
+// consecutive cycles agree - fmep (from the liner element's friction work, LinerElement.h)
+// within periodicFmepTolerance relative, and the lateral displacement and the tilt times
+// the skirt length at every output angle within periodicPoseTolerance_m - or until
+// `cycles` cycles are done; only the last cycle's rows are kept (the sinks are told to
+// discard the earlier ones), and the stats say whether and after how many cycles the run
+// converged.
 
 #include <functional>
 #include <string>
@@ -32,12 +40,29 @@ struct SimulationSettings {
   static constexpr double kMaxRows = 1e7;  // rows are kept in memory
 
   double startAngle_deg = 0.0;  // crank angle of the first row [deg]
-  int cycles = 1;               // number of 720 deg cycles, >= 1
+  int cycles = 1;               // number of 720 deg cycles (the maximum if untilPeriodic), >= 1
   double outputStep_deg = 1.0;  // output interval [deg], > 0, must divide 720
-  enum class Integrator { RungeKuttaMerson, RungeKuttaFeldberg, CPodesBDF };
+  enum class Integrator {
+    RungeKuttaMerson,      // Simbody's, explicit (for the ideal guide, smooth elements)
+    RungeKuttaFeldberg,    // Simbody's, explicit
+    CPodesBDF,             // Simbody's CPodes BDF with Newton iterations (numerical Jacobian)
+    LinearlyImplicitBDF2,  // LinearlyImplicitStepper.h: for the stiff squeeze film
+  };
   Integrator integrator = Integrator::RungeKuttaMerson;
-  double accuracy = 1e-9;              // integrator relative accuracy [-]
+  double accuracy = 1e-9;              // Simbody integrators' relative accuracy [-]
   double constraintTolerance = 1e-11;  // constraint projection tolerance [-]
+  // LinearlyImplicitBDF2 only: per-step tolerance on the piston pose (lateral, tertiary,
+  // tilt x skirt length) [m], > 0, default 10 nm; the rates get poseTolerance_m per time of
+  // one crank degree.
+  double poseTolerance_m = 1e-8;
+  double maxStep_deg = 0.5;  // LinearlyImplicitBDF2: largest step [deg of crank], > 0
+  // Step budget of the whole run (every integrator): a run that needs more steps stops with
+  // an error naming the crank angle reached, never hangs. Default 2e7.
+  long maxSteps = 20000000;
+
+  bool untilPeriodic = false;               // run to periodic steady state (see the top)
+  double periodicFmepTolerance = 0.005;     // relative change of fmep between cycles [-]
+  double periodicPoseTolerance_m = 0.2e-6;  // change of the pose at equal crank angles [m]
 
   // 720 / outputStep_deg, not rounded [-].
   double outputStepsPerCycle() const { return 720.0 / outputStep_deg; }
@@ -53,9 +78,11 @@ void validate(const SimulationSettings& settings);
 // Where a simulation puts its rows. The simulation calls beginRun() once with the column
 // names, beginCycle() at the first row of every 720 deg cycle, consumeRow() for every
 // row (the state is realized through Stage::Acceleration, so a sink may also evaluate
-// outputs or role interfaces of its own), and endRun() after the last row. If the run
-// fails, the exception leaves the simulation before endRun(): a file-writing sink then
-// discards what it wrote (all-or-nothing).
+// outputs or role interfaces of its own), and endRun() after the last row. In a run to
+// periodic steady state, discardRows() says that every row consumed so far is not part of
+// the result (an earlier cycle), just before beginCycle() of the next cycle, whose first
+// row is the one that closed the discarded cycle. If the run fails, the exception leaves the
+// simulation before endRun(): a file-writing sink then discards what it wrote (all-or-nothing).
 class RowSink {
  public:
   virtual ~RowSink() = default;
@@ -63,6 +90,8 @@ class RowSink {
   // cycle = 0, 1, ...; the row of crank angle start + 720 * cycle.
   virtual void beginCycle(int /*cycle*/) {}
   virtual void consumeRow(const SimTK::State& state, const std::vector<double>& values) = 0;
+  // Forget the rows consumed so far (pure: every sink must decide what that means).
+  virtual void discardRows() = 0;
   virtual void endRun() {}
 };
 
@@ -71,6 +100,7 @@ class ResultTableSink final : public RowSink {
  public:
   void beginRun(const std::vector<std::string>& columns) override;
   void consumeRow(const SimTK::State& state, const std::vector<double>& values) override;
+  void discardRows() override { table_.rows.clear(); }
   const ResultTable& getTable() const { return table_; }
   ResultTable releaseTable() { return std::move(table_); }
 
@@ -81,7 +111,13 @@ class ResultTableSink final : public RowSink {
 struct SimulationStats {
   double wallTime_s = 0.0;
   long integratorSteps = 0;
-  long realizations = 0;  // number of Stage::Dynamics realizations taken by the integrator
+  long realizations = 0;       // number of Stage::Dynamics realizations taken by the integrator
+  long rejectedSteps = 0;      // LinearlyImplicitBDF2: steps rejected by the error test
+  long failedEvaluations = 0;  // LinearlyImplicitBDF2: steps retried after an element threw
+  int cyclesRun = 0;           // whole cycles simulated
+  bool converged = false;      // untilPeriodic: the last two cycles agreed
+  int cyclesToConverge = 0;    // untilPeriodic: cycles run when they did (0 if not)
+  std::vector<double> cycleFmep_Pa;  // fmep of every cycle run, if the liner integrates it
 };
 
 class CycleSimulation {

@@ -1,6 +1,7 @@
 #include "pistondyn/mbd_models/CrankTrain.h"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace pistondyn::mbd {
 namespace {
@@ -85,18 +86,26 @@ CrankTrain::CrankTrain(SimTK::SimbodyMatterSubsystem& matter, SimTK::GeneralForc
   const Transform smallEnd(Vec3(0, L, 0));
   const Transform pistonOnPin(uprightFrame, Vec3(0));
   const Transform pinInPiston(getPinAxisInPiston());
+  // Without tertiary motion the slider is a plain Pin (same rotation coordinate first).
+  const bool tertiary = engine_.tertiaryMotion;
+  auto slider = [tertiary](MobilizedBody& parent, const Transform& inParent,
+                           const SimTK::Body::Rigid& body,
+                           const Transform& inBody) -> MobilizedBody {
+    if (tertiary) return MobilizedBody::Cylinder(parent, inParent, body, inBody);
+    return MobilizedBody::Pin(parent, inParent, body, inBody);
+  };
   switch (engine_.pinJoint) {
     case PinJoint::FixedInRod:
       pin_ = MobilizedBody::Weld(conrod_, smallEnd, pinBody, Transform());
-      piston_ = MobilizedBody::Cylinder(pin_, pistonOnPin, pistonBody, pinInPiston);
+      piston_ = slider(pin_, pistonOnPin, pistonBody, pinInPiston);
       break;
     case PinJoint::FixedInPiston:
-      pin_ = MobilizedBody::Cylinder(conrod_, smallEnd, pinBody, Transform());
+      pin_ = slider(conrod_, smallEnd, pinBody, Transform());
       piston_ = MobilizedBody::Weld(pin_, pistonOnPin, pistonBody, pinInPiston);
       break;
     case PinJoint::Floating:
     default:
-      pin_ = MobilizedBody::Cylinder(conrod_, smallEnd, pinBody, Transform());
+      pin_ = slider(conrod_, smallEnd, pinBody, Transform());
       piston_ = MobilizedBody::Pin(pin_, pistonOnPin, pistonBody, pinInPiston);
       break;
   }
@@ -182,7 +191,12 @@ void CrankTrain::setPose(SimTK::State& s, double theta, double uLat, double tilt
       piston_.setOneQ(s, SimTK::MobilizerQIndex(0), a - psiPin + phiTdc);
       break;
   }
-  slider.setOneQ(s, SimTK::MobilizerQIndex(1), uTran);
+  if (engine_.tertiaryMotion) {
+    slider.setOneQ(s, SimTK::MobilizerQIndex(1), uTran);
+  } else if (uTran != 0.0) {
+    throw std::invalid_argument(
+        "CrankTrain::setPose: a tertiary displacement needs EngineDescription::tertiaryMotion");
+  }
 }
 
 void CrankTrain::setRates(SimTK::State& s, double omega, double uLatDot, double tiltDot,
@@ -224,7 +238,12 @@ void CrankTrain::setRates(SimTK::State& s, double omega, double uLatDot, double 
       piston_.setOneU(s, SimTK::MobilizerUIndex(0), aDot);
       break;
   }
-  slider.setOneU(s, SimTK::MobilizerUIndex(1), uTranDot);
+  if (engine_.tertiaryMotion) {
+    slider.setOneU(s, SimTK::MobilizerUIndex(1), uTranDot);
+  } else if (uTranDot != 0.0) {
+    throw std::invalid_argument(
+        "CrankTrain::setRates: a tertiary velocity needs EngineDescription::tertiaryMotion");
+  }
 }
 
 double CrankTrain::getDriveTorque_Nm(const SimTK::State& s) const {

@@ -14,15 +14,19 @@ void IdealLinerGuide::addToModel(const ModelBuildContext& context) {
   // Piston y axis stays perpendicular to ground x: no tilt.
   tilt_ = SimTK::Constraint::ConstantAngle(ground, SimTK::UnitVec3(SimTK::XAxis), piston,
                                            SimTK::UnitVec3(SimTK::YAxis));
-  // Piston-frame origin stays on the plane z = 0: no tertiary motion.
-  transverse_ = SimTK::Constraint::PointInPlane(ground, SimTK::UnitVec3(SimTK::ZAxis), 0.0, piston,
-                                                SimTK::Vec3(0));
+  // Piston-frame origin stays on the plane z = 0: no tertiary motion (a train built without
+  // the tertiary mobility needs no constraint for it).
+  if (crankTrain_->getEngine().tertiaryMotion) {
+    transverse_ = SimTK::Constraint::PointInPlane(ground, SimTK::UnitVec3(SimTK::ZAxis), 0.0,
+                                                  piston, SimTK::Vec3(0));
+  }
 }
 
 SimTK::SpatialVec IdealLinerGuide::calcForceOnLiner(const SimTK::State& s) const {
   const SimTK::MobilizedBody& piston = crankTrain_->getPiston();
   SimTK::SpatialVec total(SimTK::Vec3(0), SimTK::Vec3(0));
   for (const SimTK::Constraint* c : {&lateral_, &tilt_, &transverse_}) {
+    if (c->isEmptyHandle()) continue;
     // Simbody reports constraint forces with the opposite sign of applied forces
     // (they sit on the left-hand side of its equations of motion), so these are
     // already the forces the piston exerts on the constraint, i.e. on the liner.

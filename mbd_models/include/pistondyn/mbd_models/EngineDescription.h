@@ -73,6 +73,11 @@ struct EngineDescription {
   PistonGeometry piston;
   CrankTrainMassProperties mass;
   PinJoint pinJoint = PinJoint::Floating;
+  // Whether the piston may move along the pin axis (tertiary motion). On (default): the
+  // small-end slider is a Cylinder joint (rotation + translation along the pin axis), and
+  // the liner element must hold the piston along z. Off: a Pin joint, no such mobility
+  // (the thesis' parameter study).
+  bool tertiaryMotion = true;
   CrankDrive drive;
   double gravity_mps2 = 9.80665;  // acts along -y (cylinder vertical, head up) [m/s^2], >= 0
 };

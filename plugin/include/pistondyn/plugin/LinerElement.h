@@ -33,6 +33,21 @@ class LinerElement : public ForceElement {
                                                       SkirtSide /*side*/) const {
     return std::nullopt;
   }
+  // Smallest ratio of the nominal gap to the composite roughness on one side [-].
+  virtual std::optional<double> getMinGapOverSigma(const SimTK::State& /*s*/,
+                                                   SkirtSide /*side*/) const {
+    return std::nullopt;
+  }
+  // Impact kinetic energy of the last completed slap event [J] (the element's definition).
+  virtual std::optional<double> getLastSlapEnergy_J(const SimTK::State& /*s*/) const {
+    return std::nullopt;
+  }
+  // Radial clearance between skirt and liner at operating temperature [m].
+  virtual std::optional<double> getHotRunningClearance_m() const { return std::nullopt; }
+  // Film solves done by the element so far, and how many of them needed the film solver's
+  // fallback to the reference solver (diagnostics; counted over the element's life).
+  virtual std::optional<long> getFilmSolveCount() const { return std::nullopt; }
+  virtual std::optional<long> getFilmFallbackCount() const { return std::nullopt; }
 };
 
 }  // namespace pistondyn::plugin

@@ -1,0 +1,170 @@
+#pragma once
+// The lubricated skirt-liner force element: the piston held in the bore by the oil film and
+// the asperity contact between its skirt and the liner, on a thrust-side and an
+// anti-thrust-side sector of the skirt (DESIGN.md §4, thesis §2).
+//
+// At every force evaluation it reads the piston's pose and rates from the State
+// (PistonPose.h), builds the gap and its rate on both sides (skirt::GapAssembly: the seven
+// terms), solves film and contact there (skirt::SkirtSideLubrication: one film solve per
+// side), integrates pressure and shear to the force and moment on the piston (radial
+// pressure components in x and z, so the same film carries the secondary and the tertiary
+// motion; axial and circumferential friction) and applies them; the reaction acts on the
+// liner, which is ground. The element supplies the stiff part of its force Jacobian (the
+// film's exact squeeze damping, the asperity stiffness) for LinearlyImplicitStepper.
+//
+// State it keeps (ElementState.h):
+//   z:            friction work (total, hydrodynamic, asperity) [J], Archard wear volume
+//                 per side [m^3] - cycle integrals, integrated with the motion
+//   auto-update:  the mass-conserving model's fill fraction per side (advanced once per
+//                 accepted step; the film's transient step is t - last update time), and
+//                 the slap tracker (approach direction, peak secondary kinetic energy of
+//                 the approach, energy of the last completed slap event, event count)
+//   cache:        the per-state results (loads, their derivatives, figures of both sides)
+// Mutable workspace: the two sides' film solvers and their warm starts (results depend on
+// them only within the film solver's tolerance; one model per thread, ForceElement.h). The
+// nodal fields of the last evaluation are kept there too (getLastSideResults(): valid
+// right after realizing a state, e.g. at an output row, for field dumps).
+//
+// Slap events. The secondary kinetic energy K = 1/2 (m_piston + m_pin) v_G^2 +
+// 1/2 I_piston (dalpha/dt)^2, v_G the lateral velocity of the piston's centre of mass
+// relative to the cylinder axis, grows while the piston crosses the clearance and is
+// absorbed by the film and the asperities when it arrives. An approach towards one side
+// begins when v_G changes sign and ends (the event completes) at the next sign change; its
+// impact kinetic energy is the peak of K over the approach, tracked at every accepted step.
+// Events below kMinSlapEnergy_J are not counted (the film's small oscillations).
+//
+// Tertiary motion (along the pin axis) is a switch. Off (the thesis' study): the crank
+// train must be built without the tertiary mobility (EngineDescription::tertiaryMotion =
+// false). On: the film's z pressure components and a pin-retainer contact (a stiff spring
+// outside the axial play, the circlips or the skirt end against the liner's wall) hold it.
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "pistondyn/contact_forces/BoundaryFriction.h"
+#include "pistondyn/contact_forces/GreenwoodTrippLaw.h"
+#include "pistondyn/lubrication/Oil.h"
+#include "pistondyn/lubrication/PatirChengFlowFactors.h"
+#include "pistondyn/plugin/ElementCache.h"
+#include "pistondyn/plugin/LinerElement.h"
+#include "pistondyn/skirt/GapAssembly.h"
+#include "pistondyn/skirt/SkirtSideLubrication.h"
+
+namespace pistondyn::plugin {
+
+// Oil on the liner ahead of the skirt, as a function of the crank angle: a constant, or a
+// periodic table over the 720 deg cycle (linear between points). +inf = fully flooded.
+struct SupplyFilm {
+  double constant_m = std::numeric_limits<double>::infinity();  // [m], > 0
+  std::vector<double> crankAngle_deg;  // optional table: strictly increasing, within [0, 720)
+  std::vector<double> thickness_m;     // [m], > 0, same size
+  // Thickness at a crank angle [m] (any angle; wrapped into [0, 720)).
+  double calcThickness_m(double angle_deg) const;
+};
+
+struct LubricatedSkirtParameters {
+  // Both sides' grids: arc width, node counts, clustering (side, radius and the skirt's
+  // height range are filled in from the engine).
+  skirt::SkirtSideGridParameters grid;
+  skirt::GapAssemblyParameters gap;  // gap terms (travel and radius from the engine if unset)
+  lubrication::OilSpec oil;          // oil data (grade)
+  double oilTemperature_degC = 105.0;  // film temperature [degC]
+  lubrication::PatirChengParameters roughness;         // rq1 = liner, rq2 = skirt
+  contact::GreenwoodTrippParameters asperity;   // its roughness is set from `roughness`
+  contact::BoundaryFrictionParameters boundaryFriction;  // f_dry = 0.1
+  skirt::SkirtLubricationParameters lubrication;       // cavitation model, solver, wear
+  SupplyFilm supplyFilm;                               // inlet oil film
+  bool tertiaryMotion = false;  // must match EngineDescription::tertiaryMotion
+  double pinRetainerPlay_m = 0.5e-3;        // tertiary: free axial play each way [m], > 0
+  double pinRetainerStiffness_Npm = 2e7;    // tertiary: spring outside the play [N/m], > 0
+};
+
+// The per-state results the element caches (small: no nodal fields).
+struct LubricatedSkirtResults {
+  struct Side {
+    skirt::PistonLoads hydrodynamic, asperity;  // piston frame, about the piston origin
+    double hydrodynamicNormalForce_N = 0, asperityNormalForce_N = 0;
+    double hydrodynamicFrictionAxial_N = 0, asperityFrictionAxial_N = 0;
+    double frictionPower_W = 0;
+    double minFilmThickness_m = 0, minGapOverSigma = 0;
+    double hydrodynamicShare = 0, mixedShare = 0, boundaryShare = 0, wettedShare = 0;
+    double wearRate_m3ps = 0;
+    int filmIterations = 0;
+    bool filmUsedFallback = false;
+  };
+  std::array<Side, 2> sides;  // [0] thrust, [1] anti-thrust
+  Eigen::Vector3d forceOnPiston_N = Eigen::Vector3d::Zero();    // ground, at the origin
+  Eigen::Vector3d momentOnPiston_Nm = Eigen::Vector3d::Zero();  // ground, about the origin
+  Eigen::Matrix3d dQ_dPose = Eigen::Matrix3d::Zero();      // PistonPose.h generalised forces
+  Eigen::Matrix3d dQ_dPoseRate = Eigen::Matrix3d::Zero();
+  double frictionPower_W = 0;      // both sides, >= 0 typical
+  double hydrodynamicFrictionPower_W = 0, asperityFrictionPower_W = 0;
+  double secondaryKineticEnergy_J = 0;
+  double supplyFilm_m = 0;
+  double retainerForce_N = 0;      // tertiary: force of the pin retainer on the piston (+z)
+};
+
+class LubricatedSkirtElement final : public LinerElement {
+ public:
+  static constexpr double kMinSlapEnergy_J = 1e-6;
+
+  // Checks the parameters that do not need the engine (the rest in addToModel()).
+  explicit LubricatedSkirtElement(const LubricatedSkirtParameters& parameters);
+  ~LubricatedSkirtElement() override;
+
+  std::string getName() const override { return "lubricated_skirt"; }
+  void addToModel(const ModelBuildContext& context) override;
+  void realizeTopology(SimTK::State& s, ElementStateAllocator& alloc) const override;
+  void calcForces(const SimTK::State& s, AppliedForces& forces) const override;
+  void realizeAcceleration(const SimTK::State& s) const override;
+  bool addForceJacobian(const SimTK::State& s, ForceJacobian& jacobian) const override;
+  ElementOutputs getOutputs() const override;
+
+  // ---- LinerElement role ------------------------------------------------------------
+  double getSideForce_N(const SimTK::State& s) const override;
+  double getFrictionForce_N(const SimTK::State& s) const override;
+  double getFrictionPower_W(const SimTK::State& s) const override;
+  std::optional<double> getFrictionWork_J(const SimTK::State& s) const override;
+  std::optional<double> getMinFilmThickness_m(const SimTK::State& s,
+                                              SkirtSide side) const override;
+  std::optional<double> getMinGapOverSigma(const SimTK::State& s, SkirtSide side) const override;
+  std::optional<double> getLastSlapEnergy_J(const SimTK::State& s) const override;
+  std::optional<double> getHotRunningClearance_m() const override;
+  std::optional<long> getFilmSolveCount() const override { return filmSolves_; }
+  std::optional<long> getFilmFallbackCount() const override { return filmFallbacks_; }
+
+  // ---- for tests, dumps and studies -------------------------------------------------
+  const LubricatedSkirtParameters& getParameters() const { return parameters_; }
+  const LubricatedSkirtResults& getResults(const SimTK::State& s) const;
+  const skirt::GapAssembly& getGapAssembly(SkirtSide side) const;
+  double getViscosity_Pas() const { return viscosity_Pas_; }
+  // Gap fields and film/contact fields of the last evaluation (see the top).
+  const skirt::GapFields& getLastGapFields(SkirtSide side) const;
+  const skirt::SkirtSideResults& getLastSideResults(SkirtSide side) const;
+  double getWearVolume_m3(const SimTK::State& s, SkirtSide side) const;
+  long getSlapEventCount(const SimTK::State& s) const;
+
+ private:
+  struct SlapTracker {
+    int direction = 0;           // sign of v_G in the current approach (0: none yet)
+    double peak_J = 0.0;         // peak K of the current approach
+    double lastEvent_J = 0.0;    // impact energy of the last completed event
+    long events = 0;             // completed events
+  };
+  struct Workspace;  // per-side solvers, gap fields, results (mutable)
+
+  void calcResults(const SimTK::State& s, LubricatedSkirtResults& r) const;
+
+  LubricatedSkirtParameters parameters_;
+  const mbd::CrankTrain* crankTrain_ = nullptr;  // non-owning; the model owns both
+  double viscosity_Pas_ = 0.0;
+  std::unique_ptr<Workspace> workspace_;
+  mutable long filmSolves_ = 0, filmFallbacks_ = 0;
+  ElementCache<LubricatedSkirtResults> cache_;
+  ElementZ work_;  // [0] friction work, [1] hydrodynamic, [2] asperity, [3..4] wear volume
+  ElementAutoUpdateVariable<Eigen::ArrayXd> fillThrust_, fillAntiThrust_;
+  ElementAutoUpdateVariable<SlapTracker> slap_;
+};
+
+}  // namespace pistondyn::plugin

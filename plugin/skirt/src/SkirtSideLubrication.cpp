@@ -1,0 +1,347 @@
+#include "pistondyn/skirt/SkirtSideLubrication.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace pistondyn::skirt {
+namespace {
+
+const char* sideName(SkirtSide s) { return s == SkirtSide::Thrust ? "thrust" : "anti-thrust"; }
+
+[[noreturn]] void bad(const std::string& what) {
+  throw std::invalid_argument("SkirtSideLubrication: " + what);
+}
+
+// Gauss-Legendre nodes and weights on [0, 1], 6 points (exact for degree 11).
+constexpr int kGauss = 6;
+constexpr double kGaussX[kGauss] = {0.033765242898423975, 0.16939530676686776,
+                                    0.38069040695840156,  0.61930959304159845,
+                                    0.83060469323313224,  0.96623475710157603};
+constexpr double kGaussW[kGauss] = {0.085662246189585178, 0.18038078652406930,
+                                    0.23395696728634552,  0.23395696728634552,
+                                    0.18038078652406930,  0.085662246189585178};
+
+// Cells whose smallest corner gap is below this many sigma get the asperity pressure
+// integrated at Gauss points (F_{5/2}(4.5) is ~2e-6 of F_{5/2}(0): beyond it the nodal
+// interpolant's error is negligible).
+constexpr double kContactQuadratureFilmRatio = 4.5;
+
+// (force; moment) of one PistonLoads as a 6-vector.
+Eigen::Matrix<double, 6, 1> stack(const PistonLoads& l) {
+  Eigen::Matrix<double, 6, 1> v;
+  v << l.force_N, l.moment_Nm;
+  return v;
+}
+
+}  // namespace
+
+struct SkirtSideLubrication::Impl {
+  SkirtSideGrid grid;
+  std::shared_ptr<const lubrication::FlowFactorModel> flowFactors;
+  std::shared_ptr<const contact::AsperityContactLaw> contactLaw;
+  contact::BoundaryFriction friction;
+  SkirtLubricationParameters parameters;
+  double sigma_m = 0.0, clamp_m = 0.0;
+  lubrication::FilmSolver solver;
+  lubrication::FilmProblem problem;
+  lubrication::FilmState warmStart;
+  bool haveWarmStart = false;
+  Eigen::ArrayXd clampSlope, pressureColumn, zero;
+  Eigen::ArrayXd couetteY, couetteX;  // film shear on the skirt (Couette + Poiseuille)
+  Eigen::ArrayXXd boundaryX, boundaryY;  // boundary shear as grid-shaped scratch
+  // Outward normal of the side's centre line (cos phi_c, sin phi_c) in (x, z).
+  double normalX = 1.0;
+  // Contact quadrature results (integrateContact).
+  PistonLoads contactCorrection;                  // exact minus nodal-interpolant loads
+  Eigen::Matrix<double, 6, 3> contactStiffnessCorrection = Eigen::Matrix<double, 6, 3>::Zero();
+  double contactPressureIntegralCorrection_N = 0.0;  // of int p_c dA
+  Eigen::Vector2d shearPerPressure = Eigen::Vector2d::Zero();  // boundary (x, y) shear per Pa
+
+  // The asperity pressure p_c(h) is steep (Greenwood-Tripp: F_{5/2}), and a contact at a
+  // skirt edge is often narrower than a cell: the integral of the nodal interpolant then
+  // misses most of it (at 32 x 24 vs 64 x 48 nodes it halved). In every cell whose
+  // smallest corner gap is below kContactQuadratureFilmRatio sigma, the loads are therefore
+  // integrated at 6 x 6 Gauss points of p_c(h_bilinear) itself, and the difference to the
+  // nodal interpolant's integral is added (elsewhere the interpolant is exact enough).
+  void integrateContact(const GapFields& gap, const Eigen::Vector2d& skirtVelocity,
+                        SkirtSideResults& out) {
+    contactCorrection = PistonLoads();
+    contactStiffnessCorrection.setZero();
+    contactPressureIntegralCorrection_N = 0.0;
+    shearPerPressure = friction.calcShearStress_Pa(1.0, skirtVelocity);
+    const int nPhi = grid.nPhi(), nY = grid.nY();
+    const Eigen::VectorXd& phiN = grid.getPhiNodes_rad();
+    const Eigen::VectorXd& yN = grid.getYNodes_m();
+    const double R = grid.getRadius_m();
+    const double limit = kContactQuadratureFilmRatio * contactLaw->compositeSigma_m();
+    const double* h = gap.gap_m.data();
+    const double* pNode = out.contact.pressure_Pa.data();
+    const double* sNode = out.contact.dPressure_dGap_PaPerM.data();
+    const double tx = shearPerPressure[0], ty = shearPerPressure[1];
+    for (int j = 0; j + 1 < nY; ++j) {
+      for (int i = 0; i + 1 < nPhi; ++i) {
+        const int k00 = i + nPhi * j, k10 = k00 + 1, k01 = k00 + nPhi, k11 = k01 + 1;
+        if (std::min({h[k00], h[k10], h[k01], h[k11]}) >= limit) continue;
+        const double dphi = phiN[i + 1] - phiN[i], dy = yN[j + 1] - yN[j];
+        const double area = R * dphi * dy;
+        for (int a = 0; a < kGauss; ++a) {
+          const double t = kGaussX[a], phi = phiN[i] + t * dphi;
+          const double c = std::cos(phi), sn = std::sin(phi);
+          for (int b = 0; b < kGauss; ++b) {
+            const double u = kGaussX[b], y = yN[j] + u * dy;
+            const double n00 = (1 - t) * (1 - u), n10 = t * (1 - u), n01 = (1 - t) * u,
+                         n11 = t * u;
+            const double hg = n00 * h[k00] + n10 * h[k10] + n01 * h[k01] + n11 * h[k11];
+            const contact::PressureAndSlope ps = contactLaw->calcPressureAndSlope(hg);
+            const double pInterp = n00 * pNode[k00] + n10 * pNode[k10] + n01 * pNode[k01] +
+                                   n11 * pNode[k11];
+            const double sInterp = n00 * sNode[k00] + n10 * sNode[k10] + n01 * sNode[k01] +
+                                   n11 * sNode[k11];
+            const double wgt = kGaussW[a] * kGaussW[b] * area;
+            const double dp = (ps.pressure_Pa - pInterp) * wgt;
+            contactPressureIntegralCorrection_N += dp;
+            // Normal pressure, axial and circumferential boundary shear (SkirtSideGrid.h).
+            Eigen::Matrix<double, 6, 1> kernel;
+            kernel << -c + tx * (-sn), ty, -sn + tx * c,
+                -y * sn - R * sn * ty + tx * y * c, -R * tx, y * c + R * c * ty + tx * y * sn;
+            contactCorrection.force_N += dp * kernel.head<3>();
+            contactCorrection.moment_Nm += dp * kernel.tail<3>();
+            // dh/dpose at the point, exactly: -cos phi, -y cos(alpha) cos phi (~ -y cos phi,
+            // as the nodal basis), -sin phi; interpolated from the nodal basis.
+            const double ds = (ps.dPressure_dGap_PaPerM - sInterp) * wgt;
+            for (int col = 0; col < 3; ++col) {
+              const double dh = n00 * gap.dGap_dPose(k00, col) + n10 * gap.dGap_dPose(k10, col) +
+                                n01 * gap.dGap_dPose(k01, col) + n11 * gap.dGap_dPose(k11, col);
+              // Pressure part only (as for the nodal derivative).
+              Eigen::Matrix<double, 6, 1> kp;
+              kp << -c, 0.0, -sn, -y * sn, 0.0, y * c;
+              contactStiffnessCorrection.col(col) += ds * dh * kp;
+            }
+          }
+        }
+      }
+    }
+  }
+
+  Impl(const SkirtSideGrid& g, std::shared_ptr<const lubrication::FlowFactorModel> ff,
+       std::shared_ptr<const contact::AsperityContactLaw> law,
+       const contact::BoundaryFriction& f, const SkirtLubricationParameters& p)
+      : grid(g),
+        flowFactors(std::move(ff)),
+        contactLaw(std::move(law)),
+        friction(f),
+        parameters(p),
+        solver(p.solver) {
+    if (!flowFactors) bad("flowFactors is null");
+    if (!contactLaw) bad("contactLaw is null");
+    if (!(p.clampFraction > 0.0) || !std::isfinite(p.clampFraction))
+      bad("clampFraction must be positive and finite");
+    if (!(p.minimumClampGap_m > 0.0) || !std::isfinite(p.minimumClampGap_m))
+      bad("minimumClampGap_m must be positive and finite");
+    if (!(p.wearCoefficient_m2pN >= 0.0) || !std::isfinite(p.wearCoefficient_m2pN))
+      bad("wearCoefficient_m2pN must be non-negative and finite");
+    if (!std::isfinite(p.cavitationPressure_Pa) || !std::isfinite(p.edgePressure_Pa))
+      bad("cavitationPressure_Pa and edgePressure_Pa must be finite");
+    sigma_m = flowFactors->compositeSigma_m();
+    const double lawSigma = contactLaw->compositeSigma_m();
+    if (sigma_m > 0.0 && std::abs(lawSigma - sigma_m) > 1e-9 * sigma_m) {
+      std::ostringstream m;
+      m << "the flow factors' roughness sigma = " << sigma_m << " m and the contact law's "
+        << lawSigma << " m differ: enter one roughness pair for both";
+      bad(m.str());
+    }
+    if (sigma_m == 0.0) sigma_m = lawSigma;
+    clamp_m = std::max(p.clampFraction * sigma_m, p.minimumClampGap_m);
+    normalX = grid.getSide() == SkirtSide::Thrust ? 1.0 : -1.0;
+
+    const int n = grid.nodeCount();
+    problem.gap_m.resize(n);
+    problem.gapRate_mps.resize(n);
+    problem.flowFactors = flowFactors.get();
+    problem.cavitation = p.cavitation;
+    problem.cavitationPressure_Pa = p.cavitationPressure_Pa;
+    for (lubrication::FilmEdge* e : {&problem.boundary.xMin, &problem.boundary.xMax,
+                                     &problem.boundary.yMin, &problem.boundary.yMax}) {
+      e->pressure_Pa = p.edgePressure_Pa;
+    }
+    problem.referencePressure_Pa = p.edgePressure_Pa;
+    clampSlope.resize(n);
+    zero = Eigen::ArrayXd::Zero(n);
+  }
+};
+
+SkirtSideLubrication::SkirtSideLubrication(
+    const SkirtSideGrid& grid, std::shared_ptr<const lubrication::FlowFactorModel> flowFactors,
+    std::shared_ptr<const contact::AsperityContactLaw> contactLaw,
+    const contact::BoundaryFriction& friction, const SkirtLubricationParameters& parameters)
+    : impl_(std::make_unique<Impl>(grid, std::move(flowFactors), std::move(contactLaw), friction,
+                                   parameters)) {}
+
+SkirtSideLubrication::~SkirtSideLubrication() = default;
+SkirtSideLubrication::SkirtSideLubrication(SkirtSideLubrication&&) noexcept = default;
+SkirtSideLubrication& SkirtSideLubrication::operator=(SkirtSideLubrication&&) noexcept = default;
+
+const SkirtSideGrid& SkirtSideLubrication::getGrid() const { return impl_->grid; }
+const SkirtLubricationParameters& SkirtSideLubrication::getParameters() const {
+  return impl_->parameters;
+}
+double SkirtSideLubrication::getCompositeSigma_m() const { return impl_->sigma_m; }
+double SkirtSideLubrication::getClampGap_m() const { return impl_->clamp_m; }
+void SkirtSideLubrication::resetWarmStart() { impl_->haveWarmStart = false; }
+
+void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in,
+                                 SkirtSideResults& out) {
+  Impl& m = *impl_;
+  const SkirtSideGrid& grid = m.grid;
+  const int n = grid.nodeCount();
+  if (gap.gap_m.size() != n || gap.gapRate_mps.size() != n || gap.squeezeBasis.rows() != n) {
+    bad(std::string("gap fields of the wrong size for the ") + sideName(grid.getSide()) +
+        " side (" + std::to_string(gap.gap_m.size()) + " nodes, expected " + std::to_string(n) +
+        ")");
+  }
+  if (!(in.viscosity_Pas > 0.0) || !std::isfinite(in.viscosity_Pas))
+    bad("inputs.viscosity_Pas must be positive and finite");
+  if (!std::isfinite(in.slidingVelocityAxial_mps) ||
+      !std::isfinite(in.slidingVelocityCircumferential_mps))
+    bad("inputs' sliding velocities must be finite");
+  if (!(in.supplyFilm_m > 0.0)) bad("inputs.supplyFilm_m must be positive (or +inf)");
+  if (in.squeezeColumns < 0 || in.squeezeColumns > 3)
+    bad("inputs.squeezeColumns must be 0..3");
+  if (!gap.gap_m.allFinite() || !gap.gapRate_mps.allFinite())
+    bad(std::string("the ") + sideName(grid.getSide()) + " side's gap or gap rate is not finite");
+
+  // Film gap: the smooth clamp of the nominal gap, and its slope for the rates.
+  lubrication::FilmProblem& p = m.problem;
+  const double hc = m.clamp_m;
+  for (int k = 0; k < n; ++k) {
+    const double h = gap.gap_m[k];
+    const double root = std::sqrt((h - hc) * (h - hc) + hc * hc);
+    p.gap_m[k] = 0.5 * (h + hc + root);
+    m.clampSlope[k] = 0.5 * (1.0 + (h - hc) / root);
+  }
+  p.gapRate_mps = gap.gapRate_mps * m.clampSlope;
+  p.squeezeBasis.resize(n, in.squeezeColumns);
+  for (int c = 0; c < in.squeezeColumns; ++c)
+    p.squeezeBasis.col(c) = (gap.squeezeBasis.col(c).array() * m.clampSlope).matrix();
+  p.slidingVelocity_mps = Eigen::Vector2d(in.slidingVelocityCircumferential_mps,
+                                          in.slidingVelocityAxial_mps);
+  p.viscosity_Pas = in.viscosity_Pas;
+  p.boundary.yMin.supplyFilm_m = in.supplyFilm_m;
+  p.boundary.yMax.supplyFilm_m = in.supplyFilm_m;
+  if (p.cavitation == lubrication::CavitationModel::MassConserving) {
+    if (in.previousFillFraction != nullptr && in.previousFillFraction->size() > 0) {
+      if (in.previousFillFraction->size() != n) bad("inputs.previousFillFraction has the wrong size");
+      p.previousFillFraction = *in.previousFillFraction;
+    } else {
+      p.previousFillFraction.resize(0);
+    }
+    p.timeStep_s = in.timeStep_s > 0.0 ? in.timeStep_s : std::numeric_limits<double>::infinity();
+  }
+
+  m.solver.solve(grid.getFilmGrid(), p, m.haveWarmStart ? &m.warmStart : nullptr, out.film);
+  const lubrication::FilmResult& film = out.film;
+  if (!film.converged) {
+    std::ostringstream msg;
+    msg << "the " << sideName(grid.getSide()) << " side's film solve did not converge (residual "
+        << film.residual << " after " << film.iterations << " iterations"
+        << (film.usedFallback ? ", reference-solver fallback included" : "") << ")";
+    m.haveWarmStart = false;  // a failed iterate is a poor start
+    throw std::runtime_error(msg.str());
+  }
+  m.warmStart = film.state;
+  m.haveWarmStart = true;
+  out.filmGap_m = p.gap_m;
+
+  // Asperity contact on the nominal gap, boundary friction with the skirt's velocity -U.
+  const Eigen::Map<const Eigen::ArrayXXd> nominal(gap.gap_m.data(), grid.nPhi(), grid.nY());
+  m.contactLaw->calcField(nominal, out.contact);
+  const Eigen::Map<const Eigen::ArrayXd> pc(out.contact.pressure_Pa.data(), n);
+  const Eigen::Vector2d skirtVelocity = -p.slidingVelocity_mps;
+  m.friction.calcShearStressField(out.contact.pressure_Pa, skirtVelocity, m.boundaryX,
+                                  m.boundaryY);
+  out.boundaryShearCircumferential_Pa = Eigen::Map<const Eigen::ArrayXd>(m.boundaryX.data(), n);
+  out.boundaryShearAxial_Pa = Eigen::Map<const Eigen::ArrayXd>(m.boundaryY.data(), n);
+
+  // Asperity pressure: nodal field (for the fields and the nodal interpolant), and the
+  // integrals of p_c(h) itself at Gauss points where the contact is active (below).
+  m.integrateContact(gap, skirtVelocity, out);
+
+  // Tractions and loads.
+  const lubrication::SurfaceShear& shear = film.shearOnSurface2;
+  m.couetteY = shear.couetteY_Pa + shear.poiseuilleY_Pa;
+  m.couetteX = shear.couetteX_Pa + shear.poiseuilleX_Pa;
+  m.pressureColumn = film.pressure_Pa() - p.referencePressure_Pa;
+  out.hydrodynamicLoads = grid.calcLoadsOnPiston(m.pressureColumn, m.couetteY, m.couetteX);
+  out.asperityLoads =
+      grid.calcLoadsOnPiston(pc, out.boundaryShearAxial_Pa, out.boundaryShearCircumferential_Pa);
+  out.asperityLoads.force_N += m.contactCorrection.force_N;
+  out.asperityLoads.moment_Nm += m.contactCorrection.moment_Nm;
+  out.totalLoads.force_N = out.hydrodynamicLoads.force_N + out.asperityLoads.force_N;
+  out.totalLoads.moment_Nm = out.hydrodynamicLoads.moment_Nm + out.asperityLoads.moment_Nm;
+  out.normalPressure_Pa = m.pressureColumn + pc;
+
+  // Derivatives: film squeeze (pressure part), asperity stiffness (pressure part).
+  out.dLoads_dPoseRate.setZero();
+  out.dLoads_dPose.setZero();
+  for (int c = 0; c < in.squeezeColumns; ++c) {
+    m.pressureColumn = film.dPressure_dVelocity.col(c).array();
+    out.dLoads_dPoseRate.col(c) = stack(grid.calcLoadsOnPiston(m.pressureColumn));
+  }
+  const Eigen::Map<const Eigen::ArrayXd> slope(out.contact.dPressure_dGap_PaPerM.data(), n);
+  for (int c = 0; c < 3; ++c) {
+    m.pressureColumn = slope * gap.dGap_dPose.col(c).array();
+    out.dLoads_dPose.col(c) = stack(grid.calcLoadsOnPiston(m.pressureColumn)) +
+                              m.contactStiffnessCorrection.col(c);
+  }
+
+  // Figures.
+  const Eigen::ArrayXd& w = grid.getAreaWeights_m2();
+  const double area = w.sum();
+  // Normal loads: minus the force component along the side's outward normal (x here; the
+  // z components of the two halves of a side cancel for a centred load).
+  out.hydrodynamicNormalForce_N = -m.normalX * out.hydrodynamicLoads.force_N[0];
+  out.asperityNormalForce_N = -m.normalX * out.asperityLoads.force_N[0];
+  out.hydrodynamicFrictionAxial_N = (w * m.couetteY).sum();
+  const double contactLoad_N = (w * pc).sum() + m.contactPressureIntegralCorrection_N;
+  out.asperityFrictionAxial_N = m.shearPerPressure[1] * contactLoad_N;
+  const double hydroCirc = (w * m.couetteX).sum();
+  const double asperityCirc = m.shearPerPressure[0] * contactLoad_N;
+  out.hydrodynamicFrictionPower_W = p.slidingVelocity_mps[1] * out.hydrodynamicFrictionAxial_N +
+                                    p.slidingVelocity_mps[0] * hydroCirc;
+  out.asperityFrictionPower_W = p.slidingVelocity_mps[1] * out.asperityFrictionAxial_N +
+                                p.slidingVelocity_mps[0] * asperityCirc;
+  out.frictionPower_W = out.hydrodynamicFrictionPower_W + out.asperityFrictionPower_W;
+
+  Eigen::Index kMin = 0;
+  out.minFilmThickness_m = gap.gap_m.minCoeff(&kMin);
+  out.minFilmPhi_rad = grid.getNodePhi_rad()[kMin];
+  out.minFilmY_m = grid.getNodeY_m()[kMin];
+  out.minGapOverSigma = m.sigma_m > 0.0 ? out.minFilmThickness_m / m.sigma_m
+                                        : std::numeric_limits<double>::max();
+  double hydro = 0.0, mixed = 0.0, boundary = 0.0, wetted = 0.0, maxPc = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const double ratio = out.contact.filmRatio.data()[k];
+    if (ratio > contact::kMixedRegimeUpperFilmRatio) {
+      hydro += w[k];
+    } else if (ratio > contact::kBoundaryRegimeUpperFilmRatio) {
+      mixed += w[k];
+    } else {
+      boundary += w[k];
+    }
+    if (film.fillFraction()[k] > 0.0) wetted += w[k];
+    maxPc = std::max(maxPc, pc[k]);
+  }
+  out.hydrodynamicShare = hydro / area;
+  out.mixedShare = mixed / area;
+  out.boundaryShare = boundary / area;
+  out.wettedShare = wetted / area;
+  const double speed = p.slidingVelocity_mps.norm();
+  out.wearRate_m3ps = m.parameters.wearCoefficient_m2pN * contactLoad_N * speed;
+  out.maxWearDepthRate_mps = m.parameters.wearCoefficient_m2pN * maxPc * speed;
+}
+
+}  // namespace pistondyn::skirt

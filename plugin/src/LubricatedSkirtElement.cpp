@@ -1,0 +1,441 @@
+#include "pistondyn/plugin/LubricatedSkirtElement.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "pistondyn/mbd_models/SliderCrank.h"
+#include "pistondyn/plugin/PistonPose.h"
+
+namespace pistondyn::plugin {
+namespace {
+
+constexpr int kThrust = 0, kAntiThrust = 1;
+
+int sideIndex(SkirtSide side) { return side == SkirtSide::Thrust ? kThrust : kAntiThrust; }
+
+[[noreturn]] void badParameter(const std::string& what) {
+  throw std::invalid_argument("LubricatedSkirtParameters: " + what);
+}
+
+// Generalised pose forces Q = (F_x, -M_z, F_z) from a (force; moment) column (PistonPose.h).
+Eigen::Vector3d poseForces(const Eigen::Matrix<double, 6, 1>& loads) {
+  return {loads[0], -loads[5], loads[2]};
+}
+
+}  // namespace
+
+double SupplyFilm::calcThickness_m(double angle_deg) const {
+  if (crankAngle_deg.empty()) return constant_m;
+  const std::size_t n = crankAngle_deg.size();
+  double a = std::fmod(angle_deg, 720.0);
+  if (a < 0.0) a += 720.0;
+  // Periodic linear interpolation: the segment after the last point wraps to the first.
+  const auto it = std::upper_bound(crankAngle_deg.begin(), crankAngle_deg.end(), a);
+  const std::size_t hi = static_cast<std::size_t>(it - crankAngle_deg.begin()) % n;
+  const std::size_t lo = (hi + n - 1) % n;
+  const double a0 = crankAngle_deg[lo];
+  double a1 = crankAngle_deg[hi];
+  if (a1 <= a0) a1 += 720.0;
+  if (a < a0) a += 720.0;
+  const double w = (a - a0) / (a1 - a0);
+  return (1.0 - w) * thickness_m[lo] + w * thickness_m[hi];
+}
+
+// Per side: the gap assembly, the film/contact solver and their fields.
+struct LubricatedSkirtElement::Workspace {
+  std::array<std::unique_ptr<skirt::GapAssembly>, 2> gap;
+  std::array<std::unique_ptr<skirt::SkirtSideLubrication>, 2> lubrication;
+  std::array<skirt::GapFields, 2> gapFields;
+  std::array<skirt::SkirtSideResults, 2> results;
+};
+
+LubricatedSkirtElement::LubricatedSkirtElement(const LubricatedSkirtParameters& p)
+    : parameters_(p), workspace_(std::make_unique<Workspace>()) {
+  if (!(p.oilTemperature_degC > -273.15) || !std::isfinite(p.oilTemperature_degC))
+    badParameter("oilTemperature_degC must be finite and above absolute zero");
+  const SupplyFilm& f = p.supplyFilm;
+  if (f.crankAngle_deg.empty()) {
+    if (!(f.constant_m > 0.0)) badParameter("supplyFilm.constant_m must be positive (or +inf)");
+  } else {
+    if (f.crankAngle_deg.size() != f.thickness_m.size() || f.crankAngle_deg.size() < 2)
+      badParameter("supplyFilm table: crank angles and thicknesses need the same size, >= 2");
+    for (std::size_t i = 0; i < f.crankAngle_deg.size(); ++i) {
+      if (!(f.crankAngle_deg[i] >= 0.0 && f.crankAngle_deg[i] < 720.0) ||
+          (i > 0 && !(f.crankAngle_deg[i] > f.crankAngle_deg[i - 1])))
+        badParameter("supplyFilm table: crank angles must increase strictly within [0, 720) deg");
+      if (!(f.thickness_m[i] > 0.0) || !std::isfinite(f.thickness_m[i]))
+        badParameter("supplyFilm table: thicknesses must be positive and finite");
+    }
+  }
+  if (!(p.pinRetainerPlay_m > 0.0) || !std::isfinite(p.pinRetainerPlay_m))
+    badParameter("pinRetainerPlay_m must be positive and finite");
+  if (!(p.pinRetainerStiffness_Npm > 0.0) || !std::isfinite(p.pinRetainerStiffness_Npm))
+    badParameter("pinRetainerStiffness_Npm must be positive and finite");
+}
+
+LubricatedSkirtElement::~LubricatedSkirtElement() = default;
+
+void LubricatedSkirtElement::addToModel(const ModelBuildContext& context) {
+  crankTrain_ = &context.crankTrain;
+  const mbd::EngineDescription& engine = crankTrain_->getEngine();
+  if (engine.tertiaryMotion != parameters_.tertiaryMotion) {
+    throw std::invalid_argument(
+        "LubricatedSkirtElement: the crank train was built with the tertiary motion " +
+        std::string(engine.tertiaryMotion ? "on" : "off") + " but the element has it " +
+        (parameters_.tertiaryMotion ? "on" : "off") + " (set both the same)");
+  }
+  viscosity_Pas_ = lubrication::Oil(parameters_.oil)
+                       .calcDynamicViscosity_Pas(parameters_.oilTemperature_degC);
+
+  // The engine fills in what the deck does not repeat: radius, skirt range, travel, liner top.
+  const mbd::SliderCrank kinematics(engine.geometry);
+  skirt::GapAssemblyParameters gap = parameters_.gap;
+  if (!std::isfinite(gap.travel.lowestPinHeight_m))
+    gap.travel.lowestPinHeight_m = kinematics.pinHeightAtBdc_m();
+  if (!std::isfinite(gap.travel.highestPinHeight_m))
+    gap.travel.highestPinHeight_m = kinematics.pinHeightAtTdc_m();
+  if (!std::isfinite(gap.linerTopHeight_m)) {
+    // Default: the liner top is level with the crown at TDC.
+    gap.linerTopHeight_m = kinematics.pinHeightAtTdc_m() + engine.piston.compressionHeight_m;
+  }
+  parameters_.gap = gap;
+
+  auto flowFactors = std::make_shared<const lubrication::PatirChengFlowFactors>(
+      parameters_.roughness);
+  contact::GreenwoodTrippParameters gt = parameters_.asperity;
+  gt.roughnessSurface1_m = parameters_.roughness.rq1_m;  // roughness entered once (liner)
+  gt.roughnessSurface2_m = parameters_.roughness.rq2_m;  // (skirt)
+  parameters_.asperity = gt;
+  auto contactLaw = std::make_shared<const contact::GreenwoodTrippLaw>(gt);
+  const contact::BoundaryFriction friction(parameters_.boundaryFriction);
+
+  for (int k : {kThrust, kAntiThrust}) {
+    skirt::SkirtSideGridParameters g = parameters_.grid;
+    g.side = k == kThrust ? skirt::SkirtSide::Thrust : skirt::SkirtSide::AntiThrust;
+    g.radius_m = 0.5 * engine.piston.bore_m;
+    g.skirtTopHeight_m = engine.piston.skirtTopAbovePin_m;
+    g.skirtLength_m = engine.piston.skirtLength_m;
+    const skirt::SkirtSideGrid grid(g);
+    workspace_->gap[k] = std::make_unique<skirt::GapAssembly>(grid, gap);
+    workspace_->lubrication[k] = std::make_unique<skirt::SkirtSideLubrication>(
+        grid, flowFactors, contactLaw, friction, parameters_.lubrication);
+    workspace_->gapFields[k] = workspace_->gap[k]->makeFields();
+  }
+}
+
+void LubricatedSkirtElement::realizeTopology(SimTK::State&, ElementStateAllocator& alloc) const {
+  cache_.allocate(alloc);
+  work_.allocate(alloc, SimTK::Vector(5, 0.0));
+  fillThrust_.allocate(alloc, Eigen::ArrayXd());  // empty: full film
+  fillAntiThrust_.allocate(alloc, Eigen::ArrayXd());
+  slap_.allocate(alloc, SlapTracker{});
+}
+
+const LubricatedSkirtResults& LubricatedSkirtElement::getResults(const SimTK::State& s) const {
+  return cache_.getOrCalc(s, [&](LubricatedSkirtResults& r) { calcResults(s, r); });
+}
+
+void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtResults& r) const {
+  const mbd::CrankTrain& ct = *crankTrain_;
+  const mbd::EngineDescription& engine = ct.getEngine();
+  const PistonPose pose = calcPistonPose(ct, s);
+  const skirt::PistonPose skirtPose{pose.lateral_m, pose.tilt_rad, pose.transverse_m};
+  const skirt::PistonPoseRate skirtRate{pose.lateralRate_mps, pose.tiltRate_radps,
+                                        pose.transverseRate_mps};
+  const double crankAngle_deg = ct.getCrankAngle_rad(s) * 180.0 / M_PI;
+  r.supplyFilm_m = parameters_.supplyFilm.calcThickness_m(crankAngle_deg);
+  const bool massConserving =
+      parameters_.lubrication.cavitation == lubrication::CavitationModel::MassConserving;
+
+  skirt::PistonLoads total;
+  Eigen::Matrix<double, 6, 3> dRate = Eigen::Matrix<double, 6, 3>::Zero();
+  Eigen::Matrix<double, 6, 3> dPose = Eigen::Matrix<double, 6, 3>::Zero();
+  r.frictionPower_W = r.hydrodynamicFrictionPower_W = r.asperityFrictionPower_W = 0.0;
+  for (int k : {kThrust, kAntiThrust}) {
+    const auto& fill = k == kThrust ? fillThrust_ : fillAntiThrust_;
+    skirt::GapFields& fields = workspace_->gapFields[k];
+    workspace_->gap[k]->calc(skirtPose, skirtRate, pose.pinHeight_m, pose.axialVelocity_mps,
+                             fields);
+    skirt::SkirtSideInputs in;
+    in.slidingVelocityAxial_mps = -pose.axialVelocity_mps;
+    // The skirt's tangential velocity on the side's centre line is +dz_t/dt on the thrust
+    // side (e_phi = +z at phi = 0) and -dz_t/dt on the anti-thrust side.
+    in.slidingVelocityCircumferential_mps =
+        k == kThrust ? -pose.transverseRate_mps : pose.transverseRate_mps;
+    in.viscosity_Pas = viscosity_Pas_;
+    in.supplyFilm_m = r.supplyFilm_m;
+    in.squeezeColumns = parameters_.tertiaryMotion ? 3 : 2;
+    if (massConserving) {
+      const Eigen::ArrayXd& previous = fill.getValue(s);
+      in.previousFillFraction = previous.size() > 0 ? &previous : nullptr;
+      const double dt = fill.calcTimeSinceLastUpdate(s);
+      in.timeStep_s = dt > 0.0 ? dt : std::numeric_limits<double>::infinity();
+    }
+    skirt::SkirtSideResults& out = workspace_->results[k];
+    try {
+      workspace_->lubrication[k]->solve(fields, in, out);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error("lubricated skirt at crank angle " +
+                               std::to_string(std::fmod(crankAngle_deg, 720.0)) +
+                               " deg: " + e.what());
+    }
+    ++filmSolves_;
+    if (out.film.usedFallback) ++filmFallbacks_;
+    if (massConserving) fill.setUpdateValue(s, out.film.fillFraction());
+
+    LubricatedSkirtResults::Side& side = r.sides[k];
+    side.hydrodynamic = out.hydrodynamicLoads;
+    side.asperity = out.asperityLoads;
+    side.hydrodynamicNormalForce_N = out.hydrodynamicNormalForce_N;
+    side.asperityNormalForce_N = out.asperityNormalForce_N;
+    side.hydrodynamicFrictionAxial_N = out.hydrodynamicFrictionAxial_N;
+    side.asperityFrictionAxial_N = out.asperityFrictionAxial_N;
+    side.frictionPower_W = out.frictionPower_W;
+    side.minFilmThickness_m = out.minFilmThickness_m;
+    side.minGapOverSigma = out.minGapOverSigma;
+    side.hydrodynamicShare = out.hydrodynamicShare;
+    side.mixedShare = out.mixedShare;
+    side.boundaryShare = out.boundaryShare;
+    side.wettedShare = out.wettedShare;
+    side.wearRate_m3ps = out.wearRate_m3ps;
+    side.filmIterations = out.film.iterations;
+    side.filmUsedFallback = out.film.usedFallback;
+    total.force_N += out.totalLoads.force_N;
+    total.moment_Nm += out.totalLoads.moment_Nm;
+    dRate += out.dLoads_dPoseRate;
+    dPose += out.dLoads_dPose;
+    r.frictionPower_W += out.frictionPower_W;
+    r.hydrodynamicFrictionPower_W += out.hydrodynamicFrictionPower_W;
+    r.asperityFrictionPower_W += out.asperityFrictionPower_W;
+  }
+
+  // Pin retainer (tertiary motion): a spring outside the axial play.
+  r.retainerForce_N = 0.0;
+  double retainerStiffness = 0.0;
+  if (parameters_.tertiaryMotion) {
+    const double excess = std::abs(pose.transverse_m) - parameters_.pinRetainerPlay_m;
+    if (excess > 0.0) {
+      r.retainerForce_N = -std::copysign(parameters_.pinRetainerStiffness_Npm * excess,
+                                         pose.transverse_m);
+      retainerStiffness = parameters_.pinRetainerStiffness_Npm;
+    }
+  }
+
+  // Piston frame -> ground (the piston is tilted by alpha).
+  const SimTK::Rotation& R = ct.getPiston().getBodyRotation(s);
+  const SimTK::Vec3 f = R * SimTK::Vec3(total.force_N[0], total.force_N[1], total.force_N[2]);
+  const SimTK::Vec3 m = R * SimTK::Vec3(total.moment_Nm[0], total.moment_Nm[1], total.moment_Nm[2]);
+  r.forceOnPiston_N = Eigen::Vector3d(f[0], f[1], f[2] + r.retainerForce_N);
+  r.momentOnPiston_Nm = Eigen::Vector3d(m[0], m[1], m[2]);
+  // The stiff part of the Jacobian in the pose coordinates (the tilt's rotation of the loads
+  // is left out: it multiplies the loads, not their stiff derivatives).
+  for (int c = 0; c < 3; ++c) {
+    r.dQ_dPoseRate.col(c) = poseForces(dRate.col(c));
+    r.dQ_dPose.col(c) = poseForces(dPose.col(c));
+  }
+  r.dQ_dPose(2, 2) -= retainerStiffness;
+
+  // Secondary kinetic energy (slap tracking).
+  const double mass = engine.mass.piston.mass_kg + engine.mass.pin.mass_kg;
+  const double vG = pose.lateralRate_mps + engine.mass.piston.comY_m * pose.tiltRate_radps;
+  r.secondaryKineticEnergy_J = 0.5 * mass * vG * vG +
+                               0.5 * engine.mass.piston.inertiaZZ_kgm2 * pose.tiltRate_radps *
+                                   pose.tiltRate_radps;
+  SlapTracker next = slap_.getValue(s);
+  const int direction = vG > 0.0 ? 1 : (vG < 0.0 ? -1 : 0);
+  if (next.direction == 0) {
+    next.direction = direction;
+    next.peak_J = r.secondaryKineticEnergy_J;
+  } else if (direction == next.direction || direction == 0) {
+    next.peak_J = std::max(next.peak_J, r.secondaryKineticEnergy_J);
+  } else {
+    if (next.peak_J >= kMinSlapEnergy_J) {
+      next.lastEvent_J = next.peak_J;
+      ++next.events;
+    }
+    next.direction = direction;
+    next.peak_J = r.secondaryKineticEnergy_J;
+  }
+  slap_.setUpdateValue(s, next);
+}
+
+void LubricatedSkirtElement::calcForces(const SimTK::State& s, AppliedForces& forces) const {
+  const LubricatedSkirtResults& r = getResults(s);
+  const SimTK::MobilizedBody& piston = crankTrain_->getPiston();
+  forces.addForceAtStation(
+      s, piston, SimTK::Vec3(0),
+      SimTK::Vec3(r.forceOnPiston_N[0], r.forceOnPiston_N[1], r.forceOnPiston_N[2]));
+  forces.addTorque(
+      s, piston,
+      SimTK::Vec3(r.momentOnPiston_Nm[0], r.momentOnPiston_Nm[1], r.momentOnPiston_Nm[2]));
+}
+
+void LubricatedSkirtElement::realizeAcceleration(const SimTK::State& s) const {
+  const LubricatedSkirtResults& r = getResults(s);
+  work_.setDerivative(s, 0, r.frictionPower_W);
+  work_.setDerivative(s, 1, r.hydrodynamicFrictionPower_W);
+  work_.setDerivative(s, 2, r.asperityFrictionPower_W);
+  work_.setDerivative(s, 3, r.sides[kThrust].wearRate_m3ps);
+  work_.setDerivative(s, 4, r.sides[kAntiThrust].wearRate_m3ps);
+}
+
+bool LubricatedSkirtElement::addForceJacobian(const SimTK::State& s,
+                                              ForceJacobian& jacobian) const {
+  const LubricatedSkirtResults& r = getResults(s);
+  addPoseForceJacobian(*crankTrain_, s, r.dQ_dPose, r.dQ_dPoseRate, jacobian);
+  return true;
+}
+
+double LubricatedSkirtElement::getSideForce_N(const SimTK::State& s) const {
+  return -getResults(s).forceOnPiston_N[0];
+}
+
+double LubricatedSkirtElement::getFrictionForce_N(const SimTK::State& s) const {
+  const LubricatedSkirtResults& r = getResults(s);
+  double f = 0.0;
+  for (const auto& side : r.sides) f += side.hydrodynamicFrictionAxial_N + side.asperityFrictionAxial_N;
+  return f;
+}
+
+double LubricatedSkirtElement::getFrictionPower_W(const SimTK::State& s) const {
+  return getResults(s).frictionPower_W;
+}
+
+std::optional<double> LubricatedSkirtElement::getFrictionWork_J(const SimTK::State& s) const {
+  return work_.getValue(s, 0);
+}
+
+std::optional<double> LubricatedSkirtElement::getMinFilmThickness_m(const SimTK::State& s,
+                                                                    SkirtSide side) const {
+  return getResults(s).sides[sideIndex(side)].minFilmThickness_m;
+}
+
+std::optional<double> LubricatedSkirtElement::getMinGapOverSigma(const SimTK::State& s,
+                                                                 SkirtSide side) const {
+  return getResults(s).sides[sideIndex(side)].minGapOverSigma;
+}
+
+std::optional<double> LubricatedSkirtElement::getLastSlapEnergy_J(const SimTK::State& s) const {
+  return slap_.getValue(s).lastEvent_J;
+}
+
+long LubricatedSkirtElement::getSlapEventCount(const SimTK::State& s) const {
+  return slap_.getValue(s).events;
+}
+
+std::optional<double> LubricatedSkirtElement::getHotRunningClearance_m() const {
+  if (!workspace_->gap[kThrust]) return std::nullopt;
+  return std::min(workspace_->gap[kThrust]->getHotRunningClearance().clearance_m,
+                  workspace_->gap[kAntiThrust]->getHotRunningClearance().clearance_m);
+}
+
+const skirt::GapAssembly& LubricatedSkirtElement::getGapAssembly(SkirtSide side) const {
+  const auto& g = workspace_->gap[sideIndex(side)];
+  if (!g) throw std::logic_error("LubricatedSkirtElement: not added to a model yet");
+  return *g;
+}
+
+const skirt::GapFields& LubricatedSkirtElement::getLastGapFields(SkirtSide side) const {
+  return workspace_->gapFields[sideIndex(side)];
+}
+
+const skirt::SkirtSideResults& LubricatedSkirtElement::getLastSideResults(SkirtSide side) const {
+  return workspace_->results[sideIndex(side)];
+}
+
+double LubricatedSkirtElement::getWearVolume_m3(const SimTK::State& s, SkirtSide side) const {
+  return work_.getValue(s, side == SkirtSide::Thrust ? 3 : 4);
+}
+
+ElementOutputs LubricatedSkirtElement::getOutputs() const {
+  using S = const SimTK::State&;
+  const mbd::PistonGeometry& pg = crankTrain_->getEngine().piston;
+  const double yTop = pg.skirtTopAbovePin_m, yBottom = pg.skirtTopAbovePin_m - pg.skirtLength_m;
+  auto side = [this](S s, int k) -> const LubricatedSkirtResults::Side& {
+    return getResults(s).sides[k];
+  };
+  ElementOutputs o = {
+      {"side_force", "N", "lateral force the piston exerts on the liner, + towards thrust",
+       [this](S s) { return getSideForce_N(s); }},
+      {"liner_moment", "Nm",
+       "moment about +z the piston exerts on the liner, about the piston-frame origin",
+       [this](S s) { return -getResults(s).momentOnPiston_Nm[2]; }},
+      {"u_lat_skirt_top", "um", "lateral displacement of the piston axis at the skirt top",
+       [this, yTop](S s) {
+         return 1e6 * (crankTrain_->getLateralDisplacement_m(s) +
+                       yTop * std::sin(crankTrain_->getTilt_rad(s)));
+       }},
+      {"u_lat_skirt_bottom", "um", "lateral displacement of the piston axis at the skirt bottom",
+       [this, yBottom](S s) {
+         return 1e6 * (crankTrain_->getLateralDisplacement_m(s) +
+                       yBottom * std::sin(crankTrain_->getTilt_rad(s)));
+       }},
+      {"hydrodynamic_normal_force_thrust", "N", "load carried by the film, thrust side",
+       [side](S s) { return side(s, kThrust).hydrodynamicNormalForce_N; }},
+      {"hydrodynamic_normal_force_antithrust", "N", "load carried by the film, anti-thrust side",
+       [side](S s) { return side(s, kAntiThrust).hydrodynamicNormalForce_N; }},
+      {"asperity_normal_force_thrust", "N", "load carried by the asperities, thrust side",
+       [side](S s) { return side(s, kThrust).asperityNormalForce_N; }},
+      {"asperity_normal_force_antithrust", "N", "load carried by the asperities, anti-thrust side",
+       [side](S s) { return side(s, kAntiThrust).asperityNormalForce_N; }},
+      {"hydrodynamic_friction", "N", "film shear force on the piston along +y (both sides)",
+       [side](S s) {
+         return side(s, kThrust).hydrodynamicFrictionAxial_N +
+                side(s, kAntiThrust).hydrodynamicFrictionAxial_N;
+       }},
+      {"asperity_friction", "N", "boundary friction force on the piston along +y (both sides)",
+       [side](S s) {
+         return side(s, kThrust).asperityFrictionAxial_N +
+                side(s, kAntiThrust).asperityFrictionAxial_N;
+       }},
+      {"friction_force", "N", "total skirt friction force on the piston along +y",
+       [this](S s) { return getFrictionForce_N(s); }},
+      {"friction_power", "W", "power dissipated by skirt friction (film and asperities)",
+       [this](S s) { return getFrictionPower_W(s); }},
+      {"friction_work", "J", "friction work since the start of the run (integrated state)",
+       [this](S s) { return *getFrictionWork_J(s); }},
+      {"min_film_thickness_thrust", "um", "smallest nominal gap, thrust side",
+       [side](S s) { return 1e6 * side(s, kThrust).minFilmThickness_m; }},
+      {"min_film_thickness_antithrust", "um", "smallest nominal gap, anti-thrust side",
+       [side](S s) { return 1e6 * side(s, kAntiThrust).minFilmThickness_m; }},
+      {"min_h_over_sigma_thrust", "1", "smallest gap / composite roughness, thrust side",
+       [side](S s) { return side(s, kThrust).minGapOverSigma; }},
+      {"min_h_over_sigma_antithrust", "1", "smallest gap / composite roughness, anti-thrust side",
+       [side](S s) { return side(s, kAntiThrust).minGapOverSigma; }},
+  };
+  const char* names[2] = {"thrust", "antithrust"};
+  for (int k : {kThrust, kAntiThrust}) {
+    const std::string n = names[k];
+    o.push_back({"hydrodynamic_share_" + n, "1", "area share with h/sigma > 3, " + n + " side",
+                 [side, k](S s) { return side(s, k).hydrodynamicShare; }});
+    o.push_back({"mixed_share_" + n, "1", "area share with 1 < h/sigma <= 3, " + n + " side",
+                 [side, k](S s) { return side(s, k).mixedShare; }});
+    o.push_back({"boundary_share_" + n, "1", "area share with h/sigma <= 1, " + n + " side",
+                 [side, k](S s) { return side(s, k).boundaryShare; }});
+    o.push_back({"wetted_share_" + n, "1", "area share with oil (fill fraction > 0), " + n + " side",
+                 [side, k](S s) { return side(s, k).wettedShare; }});
+  }
+  o.push_back({"secondary_kinetic_energy", "mJ",
+               "1/2 m v_G^2 + 1/2 I (dalpha/dt)^2 of the secondary motion (piston + pin)",
+               [this](S s) { return 1e3 * getResults(s).secondaryKineticEnergy_J; }});
+  o.push_back({"slap_energy", "mJ", "impact kinetic energy of the last completed slap event",
+               [this](S s) { return 1e3 * slap_.getValue(s).lastEvent_J; }});
+  o.push_back({"wear_rate", "mm3ph", "Archard wear volume rate of the liner, both sides",
+               [side](S s) {
+                 return 3.6e12 * (side(s, kThrust).wearRate_m3ps + side(s, kAntiThrust).wearRate_m3ps);
+               }});
+  // A fully flooded skirt (infinite supply) has no supply column: outputs are finite.
+  const SupplyFilm& supply = parameters_.supplyFilm;
+  if (!supply.crankAngle_deg.empty() || std::isfinite(supply.constant_m)) {
+    o.push_back({"supply_film", "um", "oil film on the liner ahead of the skirt",
+                 [this](S s) { return 1e6 * getResults(s).supplyFilm_m; }});
+  }
+  if (parameters_.tertiaryMotion) {
+    o.push_back({"retainer_force", "N", "pin-retainer force on the piston along +z",
+                 [this](S s) { return getResults(s).retainerForce_N; }});
+  }
+  return o;
+}
+
+}  // namespace pistondyn::plugin

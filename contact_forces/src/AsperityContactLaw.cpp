@@ -6,7 +6,7 @@
 
 #include "Validation.h"
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 namespace {
 
 // A gap is usable unless it is NaN or −inf (+inf means "far apart").
@@ -126,4 +126,4 @@ ContactNodeState AsperityContactLaw::evalNode(double gap_m) const {
   return node;
 }
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

@@ -7,7 +7,7 @@
 
 #include "Validation.h"
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 namespace {
 
 constexpr const char* kWhere = "BoundaryFriction";
@@ -239,4 +239,4 @@ void BoundaryFriction::calcShearStressField(
   shearStressY_Pa = (magnitude * v.unitY) * contactPressure_Pa;
 }
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

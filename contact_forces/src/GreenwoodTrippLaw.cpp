@@ -7,7 +7,7 @@
 #include "GreenwoodTrippTails.h"
 #include "Validation.h"
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 namespace {
 
 constexpr const char* kWhere = "GreenwoodTrippLaw";
@@ -71,7 +71,7 @@ GreenwoodTrippLaw::GreenwoodTrippLaw(const GreenwoodTrippParameters& parameters)
                          "at least 1e-12 m (no engineering surface is smoother than a "
                          "picometre; a length converted to metres twice?)");
   }
-  effectiveModulus_Pa_ = contact::effectiveModulus_Pa(p.surface1, p.surface2);
+  effectiveModulus_Pa_ = contact_forces::effectiveModulus_Pa(p.surface1, p.surface2);
   coefficientK_ = greenwoodTrippCoefficient(p.roughnessParameter, p.sigmaOverBeta);
   pressureScale_Pa_ = coefficientK_ * effectiveModulus_Pa_;
   areaScale_ = kPi * kPi * p.roughnessParameter * p.roughnessParameter;
@@ -149,4 +149,4 @@ ContactNodeState GreenwoodTrippLaw::evalNode(double gap_m) const {
   return node;
 }
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

@@ -4,7 +4,7 @@
 
 #include "Validation.h"
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 namespace {
 
 constexpr const char* kWhere = "PenaltyContactLaw";
@@ -70,4 +70,4 @@ double PenaltyContactLaw::evalAreaFraction(double gap_m) const {
   return cubicStep((parameters_.onsetGap_m - gap_m) / parameters_.transitionDepth_m).value;
 }
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

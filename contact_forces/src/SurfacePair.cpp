@@ -5,7 +5,7 @@
 
 #include "Validation.h"
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 
 void validateMaterial(const ElasticMaterial& material, const char* where, const char* argName) {
   const std::string name(argName);
@@ -45,4 +45,4 @@ double effectiveModulus_Pa(const ElasticMaterial& surface1, const ElasticMateria
   return 2.0 / complianceSum(surface1, surface2, "effectiveModulus_Pa");
 }
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-namespace pistondyn::contact::detail {
+namespace pistondyn::contact_forces::detail {
 
 inline std::string formatNumber(double value) {
   char buffer[32];
@@ -74,4 +74,4 @@ inline void requireFinite(double value, std::string_view where, std::string_view
   }
 }
 
-}  // namespace pistondyn::contact::detail
+}  // namespace pistondyn::contact_forces::detail

@@ -45,7 +45,7 @@
 
 #include <Eigen/Core>
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 
 enum class FrictionRegularisation {
   Algebraic,  // v/√(v² + v_ε²) (default)
@@ -121,4 +121,4 @@ class BoundaryFriction {
   double fastPathSpeed_mps_ = 0.0;  // components up to this use |v|² directly
 };
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

@@ -38,7 +38,7 @@
 #include "pistondyn/contact_forces/GaussianTailIntegrals.h"
 #include "pistondyn/contact_forces/SurfacePair.h"
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 
 // How F_{5/2} and F_2 are evaluated.
 enum class TailIntegralModel {
@@ -106,4 +106,4 @@ class GreenwoodTrippLaw final : public AsperityContactLaw {
   double areaScale_ = 0.0;  // π²(ηβσ)²
 };
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

@@ -19,7 +19,7 @@
 
 #include "pistondyn/contact_forces/AsperityContactLaw.h"
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 
 struct PenaltyContactParameters {
   double referencePressure_Pa = 10.0e6;    // p_ref > 0 [Pa]; default 10 MPa ...
@@ -48,4 +48,4 @@ class PenaltyContactLaw final : public AsperityContactLaw {
   PenaltyContactParameters parameters_;
 };
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

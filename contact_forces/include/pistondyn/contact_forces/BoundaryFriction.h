@@ -63,7 +63,7 @@ class BoundaryFriction {
   // Checks the parameters; throws std::invalid_argument naming the bad one.
   explicit BoundaryFriction(const BoundaryFrictionParameters& parameters = {});
 
-  const BoundaryFrictionParameters& parameters() const { return parameters_; }
+  const BoundaryFrictionParameters& getParameters() const { return parameters_; }
 
   // Effective coefficient f·g(|v|) ∈ [0, f) at sliding speed |v| [m/s] ≥ 0 [-].
   double calcEffectiveCoefficient(double slidingSpeed_mps) const;

@@ -80,7 +80,7 @@ class GreenwoodTrippLaw final : public AsperityContactLaw {
   const char* name() const override { return "GreenwoodTripp"; }
   double compositeSigma_m() const override { return sigma_m_; }
 
-  const GreenwoodTrippParameters& parameters() const { return parameters_; }
+  const GreenwoodTrippParameters& getParameters() const { return parameters_; }
   double effectiveModulus_Pa() const { return effectiveModulus_Pa_; }  // E′ [Pa]
   double coefficientK() const { return coefficientK_; }                // K [-]
   // K·E′ [Pa]: pressure per unit F_{5/2}.

@@ -37,7 +37,7 @@ class PenaltyContactLaw final : public AsperityContactLaw {
 
   const char* name() const override { return "Penalty"; }
   double compositeSigma_m() const override { return parameters_.compositeRoughness_m; }
-  const PenaltyContactParameters& parameters() const { return parameters_; }
+  const PenaltyContactParameters& getParameters() const { return parameters_; }
 
  protected:
   double evalPressure(double gap_m) const override;

@@ -1,8 +1,9 @@
 #include "pistondyn/lubrication/PatirChengFlowFactors.h"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
+
+#include "pistondyn/common/Validation.h"
 
 namespace pistondyn::lubrication {
 
@@ -10,22 +11,17 @@ namespace {
 
 using patir_cheng::detail::blend;
 
+constexpr const char* kWhere = "PatirChengFlowFactors";
+
 void checkRoughness(const char* name, double rq_m) {
-  if (!std::isfinite(rq_m) || rq_m < 0.0) {
-    std::ostringstream msg;
-    msg << "PatirChengFlowFactors: roughness " << name << " = " << rq_m
-        << " m must be finite and >= 0";
-    throw std::invalid_argument(msg.str());
-  }
+  if (!std::isfinite(rq_m) || rq_m < 0.0)
+    common::throwInvalidValue(kWhere, common::message("roughness ", name), rq_m, "m",
+                              "finite and >= 0");
 }
 
 void checkPeklenik(const char* name, double gamma) {
-  if (!std::isfinite(gamma) || !(gamma > 0.0)) {
-    std::ostringstream msg;
-    msg << "PatirChengFlowFactors: Peklenik number " << name << " = " << gamma
-        << " must be positive and finite";
-    throw std::invalid_argument(msg.str());
-  }
+  if (common::notPositiveFinite(gamma))
+    common::throwNotPositiveFinite(gamma, kWhere, common::message("Peklenik number ", name), "");
 }
 
 // Equal brackets give bit-identical blends (same rows, same weight), so calcFactors
@@ -44,20 +40,19 @@ PatirChengFlowFactors::PatirChengFlowFactors(const PatirChengParameters& paramet
   checkPeklenik("peklenik1", parameters.peklenik1);
   checkPeklenik("peklenik2", parameters.peklenik2);
   if (!(parameters.phiFCutoff > 0.0 && parameters.phiFCutoff <= patir_cheng::kMaxPhiFCutoff)) {
-    std::ostringstream msg;
-    msg << "PatirChengFlowFactors: phiFCutoff = " << parameters.phiFCutoff << " must be in (0, "
-        << patir_cheng::kMaxPhiFCutoff << "] (default 1/300)";
-    throw std::invalid_argument(msg.str());
+    common::throwInvalidValue(
+        kWhere, "phiFCutoff", parameters.phiFCutoff, "",
+        common::message("in (0, ", patir_cheng::kMaxPhiFCutoff, "] (default 1/300)"));
   }
   if (parameters.peklenikComposite.has_value()) {
     checkPeklenik("peklenikComposite", *parameters.peklenikComposite);
     gammaComposite_ = *parameters.peklenikComposite;
   } else {
     if (parameters.peklenik1 != parameters.peklenik2) {
-      std::ostringstream msg;
-      msg << "PatirChengFlowFactors: peklenikComposite must be given when peklenik1 ("
-          << parameters.peklenik1 << ") and peklenik2 (" << parameters.peklenik2 << ") differ";
-      throw std::invalid_argument(msg.str());
+      common::throwInvalidArgument(
+          kWhere,
+          common::message("peklenikComposite must be given when peklenik1 (", parameters.peklenik1,
+                          ") and peklenik2 (", parameters.peklenik2, ") differ"));
     }
     gammaComposite_ = parameters.peklenik1;
   }
@@ -81,12 +76,8 @@ PatirChengFlowFactors::PatirChengFlowFactors(const PatirChengParameters& paramet
 }
 
 NodeFlowFactors PatirChengFlowFactors::calcFactors(double h_m) const {
-  if (!std::isfinite(h_m) || !(h_m > 0.0)) {
-    std::ostringstream msg;
-    msg << "PatirChengFlowFactors::calcFactors: gap h_m = " << h_m
-        << " m must be positive and finite";
-    throw std::invalid_argument(msg.str());
-  }
+  if (common::notPositiveFinite(h_m))
+    common::throwNotPositiveFinite(h_m, "PatirChengFlowFactors::calcFactors", "gap h_m", "m");
   NodeFlowFactors f;
   if (sigma_m_ == 0.0) {
     f.expectedGap_m = h_m;  // smooth surfaces: plain Reynolds

@@ -31,8 +31,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "PatirChengRows.h"
 #include "pistondyn/common/Validation.h"
-#include "pistondyn/lubrication/PatirChengRows.h"
 
 namespace pistondyn::lubrication::patir_cheng {
 

@@ -67,6 +67,26 @@ TEST(NodalField, ViewsShareTheFieldsMemory) {
   EXPECT_EQ(pc::asColumnVector(field, nA, nB).data(), field.data());
 }
 
+// A field handed on as an Eigen::Ref (an output argument, or a segment of a longer array) views
+// the memory the Ref refers to, not a copy.
+TEST(NodalField, GridViewOfARefIsAViewOfTheReferredMemory) {
+  const int nA = 3, nB = 2;
+  Eigen::ArrayXd storage = Eigen::ArrayXd::Zero(10);
+  auto fill = [&](Eigen::Ref<Eigen::ArrayXd> field) {
+    auto grid = pc::asGrid(field, nA, nB);
+    EXPECT_EQ(grid.data(), field.data());
+    grid(2, 1) = 5.0;
+  };
+  fill(storage.segment(4, nA * nB));
+  EXPECT_EQ(storage[4 + 2 + nA * 1], 5.0);
+  EXPECT_EQ(storage.sum(), 5.0);  // nothing else written
+  const Eigen::Ref<const Eigen::ArrayXd> constRef = storage.segment(4, nA * nB);
+  EXPECT_EQ(pc::asGrid(constRef, nA, nB).data(), storage.data() + 4);
+  EXPECT_EQ(pc::asGrid(constRef, nA, nB)(2, 1), 5.0);
+  pistondyn::test::expectInvalidArgument([&] { fill(storage.segment(0, 5)); },
+                                         {"asGrid", "field has 5 entries", "3 * 2 = 6"});
+}
+
 // A column-major 2-D field (contact_forces) flattens to the same k = i + nA*j, in place.
 TEST(NodalField, TwoDimensionalArrayFlattensInPlaceWithTheSameIndex) {
   const int nA = 3, nB = 7;

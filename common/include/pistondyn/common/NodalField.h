@@ -9,6 +9,7 @@
 // copy. In pistondyn:
 //   lubrication::FilmGrid     nA = nx (x, circumferential), nB = ny (y, axial), k = i + nx*j
 //   mapping::CylinderGrid     nA = nPhi, nB = nY, k = i + nPhi*j
+//   skirt::SkirtSideGrid      nA = nPhi, nB = nY, k = i + nPhi*j
 //   contact_forces            Eigen::ArrayXXd fields, rows i and columns j of the same grid
 //
 // Header-only (target pistondyn::common). The views do not own memory: they stay valid as long
@@ -57,6 +58,19 @@ inline Eigen::Map<const Eigen::ArrayXXd> asGrid(const Eigen::ArrayXd& field, int
 
 // Writable form of asGrid: writing entry (i, j) writes field[i + nA*j].
 inline Eigen::Map<Eigen::ArrayXXd> asGrid(Eigen::ArrayXd& field, int nA, int nB) {
+  detail::requireGridShape("pistondyn::common::asGrid", field.size(), nA, nB);
+  return Eigen::Map<Eigen::ArrayXXd>(field.data(), nA, nB);
+}
+
+// The same for a field passed on as an Eigen::Ref (contiguous, as every Ref<ArrayXd> is), e.g.
+// an output argument Eigen::Ref<Eigen::ArrayXd> gap_m: a view of the memory the Ref refers to.
+inline Eigen::Map<const Eigen::ArrayXXd> asGrid(const Eigen::Ref<const Eigen::ArrayXd>& field,
+                                                int nA, int nB) {
+  detail::requireGridShape("pistondyn::common::asGrid", field.size(), nA, nB);
+  return Eigen::Map<const Eigen::ArrayXXd>(field.data(), nA, nB);
+}
+
+inline Eigen::Map<Eigen::ArrayXXd> asGrid(Eigen::Ref<Eigen::ArrayXd> field, int nA, int nB) {
   detail::requireGridShape("pistondyn::common::asGrid", field.size(), nA, nB);
   return Eigen::Map<Eigen::ArrayXXd>(field.data(), nA, nB);
 }

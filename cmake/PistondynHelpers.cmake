@@ -6,22 +6,39 @@ set(PISTONDYN_WARNINGS -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wov
 #     SOURCES <files...>
 #     [PUBLIC_DEPS <targets...>] [PRIVATE_DEPS <targets...>]
 #     [USES_SIMBODY])
+# pistondyn_add_library(<module> INTERFACE [PUBLIC_DEPS <targets...>])
 # Creates target pistondyn_<module> (alias and exported name pistondyn::<module>)
 # with public include folder <module>/include (headers under include/pistondyn/<module>/),
 # installs it and its headers. USES_SIMBODY adds -UNDEBUG to the target and to its
-# consumers (DESIGN.md §5).
+# consumers (DESIGN.md §5). INTERFACE makes a header-only library: no sources, its
+# PUBLIC_DEPS become interface dependencies of every consumer.
 function(pistondyn_add_library module)
-  cmake_parse_arguments(ARG "USES_SIMBODY" "" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
+  cmake_parse_arguments(ARG "USES_SIMBODY;INTERFACE" "" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
   set(tgt pistondyn_${module})
-  add_library(${tgt} ${ARG_SOURCES})
+  if(ARG_INTERFACE)
+    if(ARG_SOURCES OR ARG_PRIVATE_DEPS OR ARG_USES_SIMBODY)
+      message(FATAL_ERROR "pistondyn_add_library(${module} INTERFACE): no SOURCES, "
+                          "PRIVATE_DEPS or USES_SIMBODY for a header-only library")
+    endif()
+    add_library(${tgt} INTERFACE)
+    set(scope INTERFACE)
+  else()
+    add_library(${tgt} ${ARG_SOURCES})
+    set(scope PUBLIC)
+  endif()
   add_library(pistondyn::${module} ALIAS ${tgt})
-  set_target_properties(${tgt} PROPERTIES EXPORT_NAME ${module} POSITION_INDEPENDENT_CODE ON)
-  target_include_directories(${tgt} PUBLIC
+  set_target_properties(${tgt} PROPERTIES EXPORT_NAME ${module})
+  target_include_directories(${tgt} ${scope}
     $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
-  target_compile_features(${tgt} PUBLIC cxx_std_17)
-  target_compile_options(${tgt} PRIVATE ${PISTONDYN_WARNINGS})
-  target_link_libraries(${tgt} PUBLIC ${ARG_PUBLIC_DEPS} PRIVATE ${ARG_PRIVATE_DEPS})
+  target_compile_features(${tgt} ${scope} cxx_std_17)
+  if(ARG_INTERFACE)
+    target_link_libraries(${tgt} INTERFACE ${ARG_PUBLIC_DEPS})
+  else()
+    set_target_properties(${tgt} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+    target_compile_options(${tgt} PRIVATE ${PISTONDYN_WARNINGS})
+    target_link_libraries(${tgt} PUBLIC ${ARG_PUBLIC_DEPS} PRIVATE ${ARG_PRIVATE_DEPS})
+  endif()
   if(ARG_USES_SIMBODY)
     target_compile_options(${tgt} PUBLIC -UNDEBUG)
   endif()

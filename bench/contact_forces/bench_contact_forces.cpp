@@ -10,7 +10,7 @@
 #include "pistondyn/contact_forces/GaussianTailIntegrals.h"
 #include "pistondyn/contact_forces/GreenwoodTrippLaw.h"
 
-namespace pc = pistondyn::contact;
+namespace pc = pistondyn::contact_forces;
 
 namespace {
 

@@ -4,9 +4,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "Validation.h"
+#include "pistondyn/common/Validation.h"
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 namespace {
 
 // A gap is usable unless it is NaN or −inf (+inf means "far apart").
@@ -16,18 +16,18 @@ inline bool isUsableGap(double gap_m) {
 
 [[noreturn]] void throwBadGap(const AsperityContactLaw& law, const char* function,
                               const std::string& argument, double gap_m) {
-  detail::throwInvalid(std::string(law.name()) + "::" + function, argument, gap_m, "m",
-                       "a number and not -inf");
+  common::throwInvalidValue(std::string(law.name()) + "::" + function, argument, gap_m, "m",
+                            "a number and not -inf");
 }
 
 // A finite gap whose pressure or slope is not finite: an overlap far beyond anything
 // physical (the power of the penetration overflowed). Reported, never returned.
 [[noreturn]] void throwOverflow(const AsperityContactLaw& law, const char* function,
                                 const std::string& argument, double gap_m) {
-  detail::throwInvalid(std::string(law.name()) + "::" + function, argument, gap_m, "m",
-                       "an overlap whose contact pressure and slope are finite (they overflow "
-                       "the double range here; h/sigma = " +
-                           detail::formatNumber(gap_m / law.compositeSigma_m()) + ")");
+  common::throwInvalidValue(std::string(law.name()) + "::" + function, argument, gap_m, "m",
+                            "an overlap whose contact pressure and slope are finite (they overflow "
+                            "the double range here; h/sigma = " +
+                                common::formatNumber(gap_m / law.compositeSigma_m()) + ")");
 }
 
 inline bool isFinite(const PressureAndSlope& ps) {
@@ -126,4 +126,4 @@ ContactNodeState AsperityContactLaw::evalNode(double gap_m) const {
   return node;
 }
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

@@ -5,24 +5,24 @@
 #include <stdexcept>
 #include <string>
 
-#include "Validation.h"
+#include "pistondyn/common/Validation.h"
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 namespace {
 
 constexpr const char* kWhere = "BoundaryFriction";
 
 void requireFiniteVelocity(const Eigen::Vector2d& v, const char* function) {
   if (!std::isfinite(v.x()) || !std::isfinite(v.y())) {
-    detail::throwNotFinite(std::isfinite(v.x()) ? v.y() : v.x(),
+    common::throwNotFinite(std::isfinite(v.x()) ? v.y() : v.x(),
                            std::string(kWhere) + "::" + function, "slidingVelocity_mps component",
                            "m/s");
   }
 }
 
 void requirePressure(double p, const char* function) {
-  if (detail::notNonNegativeFinite(p)) {
-    detail::throwNotNonNegativeFinite(p, std::string(kWhere) + "::" + function,
+  if (common::notNonNegativeFinite(p)) {
+    common::throwNotNonNegativeFinite(p, std::string(kWhere) + "::" + function,
                                       "contactPressure_Pa", "Pa");
   }
 }
@@ -45,9 +45,9 @@ std::string nodeIndex(Eigen::Index i, Eigen::Index j) {
 
 BoundaryFriction::BoundaryFriction(const BoundaryFrictionParameters& parameters)
     : parameters_(parameters) {
-  detail::requireNonNegativeFinite(parameters_.frictionCoefficient, kWhere, "frictionCoefficient",
+  common::requireNonNegativeFinite(parameters_.frictionCoefficient, kWhere, "frictionCoefficient",
                                    "");
-  detail::requirePositiveFinite(parameters_.regularisationSpeed_mps, kWhere,
+  common::requirePositiveFinite(parameters_.regularisationSpeed_mps, kWhere,
                                 "regularisationSpeed_mps", "m/s");
   if (parameters_.regularisation != FrictionRegularisation::Algebraic &&
       parameters_.regularisation != FrictionRegularisation::Tanh) {
@@ -140,7 +140,7 @@ void BoundaryFriction::weightedDirection(double vx, double vy, double& tx, doubl
 }
 
 double BoundaryFriction::calcEffectiveCoefficient(double slidingSpeed_mps) const {
-  detail::requireNonNegativeFinite(slidingSpeed_mps, "BoundaryFriction::calcEffectiveCoefficient",
+  common::requireNonNegativeFinite(slidingSpeed_mps, "BoundaryFriction::calcEffectiveCoefficient",
                                    "slidingSpeed_mps", "m/s");
   return parameters_.frictionCoefficient * fraction(slidingSpeed_mps);
 }
@@ -192,11 +192,11 @@ void BoundaryFriction::calcShearStressField(
       const double p = contactPressure_Pa(i, j);
       const double vx = slidingVelocityX_mps(i, j);
       const double vy = slidingVelocityY_mps(i, j);
-      if (detail::notNonNegativeFinite(p) || !std::isfinite(vx) || !std::isfinite(vy)) {
+      if (common::notNonNegativeFinite(p) || !std::isfinite(vx) || !std::isfinite(vy)) {
         const std::string at = nodeIndex(i, j);
-        detail::requireNonNegativeFinite(p, fn, "contactPressure_Pa" + at, "Pa");
-        detail::requireFinite(vx, fn, "slidingVelocityX_mps" + at, "m/s");
-        detail::throwNotFinite(vy, fn, "slidingVelocityY_mps" + at, "m/s");
+        common::requireNonNegativeFinite(p, fn, "contactPressure_Pa" + at, "Pa");
+        common::requireFinite(vx, fn, "slidingVelocityX_mps" + at, "m/s");
+        common::throwNotFinite(vy, fn, "slidingVelocityY_mps" + at, "m/s");
       }
     }
   }
@@ -225,8 +225,8 @@ void BoundaryFriction::calcShearStressField(
   for (Eigen::Index j = 0; j < cols; ++j) {
     for (Eigen::Index i = 0; i < rows; ++i) {
       const double p = contactPressure_Pa(i, j);
-      if (detail::notNonNegativeFinite(p)) {
-        detail::throwNotNonNegativeFinite(p, fn, "contactPressure_Pa" + nodeIndex(i, j), "Pa");
+      if (common::notNonNegativeFinite(p)) {
+        common::throwNotNonNegativeFinite(p, fn, "contactPressure_Pa" + nodeIndex(i, j), "Pa");
       }
     }
   }
@@ -239,4 +239,4 @@ void BoundaryFriction::calcShearStressField(
   shearStressY_Pa = (magnitude * v.unitY) * contactPressure_Pa;
 }
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

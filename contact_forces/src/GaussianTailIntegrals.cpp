@@ -6,7 +6,7 @@
 
 #include "GreenwoodTrippTails.h"
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 namespace {
 
 // kTailOrders, kTableLambdaMin, kTableLambdaZero, kTablePieces, kChebCoeffs,
@@ -163,4 +163,4 @@ double PolynomialTailFit::slope(double lambda) const {
   return sum;
 }
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

@@ -5,9 +5,9 @@
 #include <stdexcept>
 
 #include "GreenwoodTrippTails.h"
-#include "Validation.h"
+#include "pistondyn/common/Validation.h"
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 namespace {
 
 constexpr const char* kWhere = "GreenwoodTrippLaw";
@@ -15,26 +15,26 @@ constexpr double kPi = 3.14159265358979323846;
 
 void validatePowerLaw(const PowerLawTailFit& fit, const char* name) {
   const std::string n(name);
-  detail::requirePositiveFinite(fit.coefficient, kWhere, n + ".coefficient", "");
-  detail::requirePositiveFinite(fit.exponent, kWhere, n + ".exponent", "");
-  detail::requireFinite(fit.lambdaMax, kWhere, n + ".lambdaMax", "");
+  common::requirePositiveFinite(fit.coefficient, kWhere, n + ".coefficient", "");
+  common::requirePositiveFinite(fit.exponent, kWhere, n + ".exponent", "");
+  common::requireFinite(fit.lambdaMax, kWhere, n + ".lambdaMax", "");
 }
 
 void validatePolynomial(const PolynomialTailFit& fit, const char* name) {
   const std::string n(name);
   for (std::size_t k = 0; k < fit.coefficients.size(); ++k) {
-    detail::requireFinite(fit.coefficients[k], kWhere,
+    common::requireFinite(fit.coefficients[k], kWhere,
                           n + ".coefficients[" + std::to_string(k) + "]", "");
   }
-  detail::requireFinite(fit.lambdaEnd, kWhere, n + ".lambdaEnd", "");
+  common::requireFinite(fit.lambdaEnd, kWhere, n + ".lambdaEnd", "");
 }
 
 }  // namespace
 
 double greenwoodTrippCoefficient(double roughnessParameter, double sigmaOverBeta) {
-  detail::requirePositiveFinite(roughnessParameter, "greenwoodTrippCoefficient",
+  common::requirePositiveFinite(roughnessParameter, "greenwoodTrippCoefficient",
                                 "roughnessParameter (eta*beta*sigma)", "");
-  detail::requirePositiveFinite(sigmaOverBeta, "greenwoodTrippCoefficient",
+  common::requirePositiveFinite(sigmaOverBeta, "greenwoodTrippCoefficient",
                                 "sigmaOverBeta (sigma/beta)", "");
   return 8.0 * std::sqrt(2.0) / 15.0 * kPi * roughnessParameter * roughnessParameter *
          std::sqrt(sigmaOverBeta);
@@ -43,13 +43,13 @@ double greenwoodTrippCoefficient(double roughnessParameter, double sigmaOverBeta
 GreenwoodTrippLaw::GreenwoodTrippLaw(const GreenwoodTrippParameters& parameters)
     : parameters_(parameters) {
   const GreenwoodTrippParameters& p = parameters_;
-  detail::requireNonNegativeFinite(p.roughnessSurface1_m, kWhere, "roughnessSurface1_m", "m");
-  detail::requireNonNegativeFinite(p.roughnessSurface2_m, kWhere, "roughnessSurface2_m", "m");
+  common::requireNonNegativeFinite(p.roughnessSurface1_m, kWhere, "roughnessSurface1_m", "m");
+  common::requireNonNegativeFinite(p.roughnessSurface2_m, kWhere, "roughnessSurface2_m", "m");
   validateMaterial(p.surface1, kWhere, "surface1");
   validateMaterial(p.surface2, kWhere, "surface2");
-  detail::requirePositiveFinite(p.roughnessParameter, kWhere, "roughnessParameter (eta*beta*sigma)",
+  common::requirePositiveFinite(p.roughnessParameter, kWhere, "roughnessParameter (eta*beta*sigma)",
                                 "");
-  detail::requirePositiveFinite(p.sigmaOverBeta, kWhere, "sigmaOverBeta (sigma/beta)", "");
+  common::requirePositiveFinite(p.sigmaOverBeta, kWhere, "sigmaOverBeta (sigma/beta)", "");
   switch (p.tailModel) {
     case TailIntegralModel::Exact:
       break;
@@ -66,12 +66,12 @@ GreenwoodTrippLaw::GreenwoodTrippLaw(const GreenwoodTrippParameters& parameters)
   }
   sigma_m_ = compositeRoughness_m(p.roughnessSurface1_m, p.roughnessSurface2_m);
   if (!(sigma_m_ >= kMinCompositeRoughness_m)) {
-    detail::throwInvalid(kWhere, "sqrt(roughnessSurface1_m^2 + roughnessSurface2_m^2)", sigma_m_,
-                         "m",
-                         "at least 1e-12 m (no engineering surface is smoother than a "
-                         "picometre; a length converted to metres twice?)");
+    common::throwInvalidValue(kWhere, "sqrt(roughnessSurface1_m^2 + roughnessSurface2_m^2)",
+                              sigma_m_, "m",
+                              "at least 1e-12 m (no engineering surface is smoother than a "
+                              "picometre; a length converted to metres twice?)");
   }
-  effectiveModulus_Pa_ = contact::effectiveModulus_Pa(p.surface1, p.surface2);
+  effectiveModulus_Pa_ = contact_forces::effectiveModulus_Pa(p.surface1, p.surface2);
   coefficientK_ = greenwoodTrippCoefficient(p.roughnessParameter, p.sigmaOverBeta);
   pressureScale_Pa_ = coefficientK_ * effectiveModulus_Pa_;
   areaScale_ = kPi * kPi * p.roughnessParameter * p.roughnessParameter;
@@ -149,4 +149,4 @@ ContactNodeState GreenwoodTrippLaw::evalNode(double gap_m) const {
   return node;
 }
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

@@ -2,7 +2,7 @@
 // Everything a Greenwood–Tripp node needs from the tail integrals, with one table lookup
 // (private header; used by GreenwoodTrippLaw::evalNode for the exact model).
 
-namespace pistondyn::contact::detail {
+namespace pistondyn::contact_forces::detail {
 
 struct GreenwoodTrippTails {
   double f52 = 0.0;       // F_{5/2}(λ) [-]
@@ -13,4 +13,4 @@ struct GreenwoodTrippTails {
 // Same values, bit for bit, as greenwoodTrippF52WithSlope(λ) and greenwoodTrippF2(λ).
 GreenwoodTrippTails greenwoodTrippTails(double lambda);
 
-}  // namespace pistondyn::contact::detail
+}  // namespace pistondyn::contact_forces::detail

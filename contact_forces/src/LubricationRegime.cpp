@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 
 LubricationRegime classifyRegime(double filmRatio) {
   if (std::isnan(filmRatio)) {
@@ -30,4 +30,4 @@ const char* toString(LubricationRegime regime) {
   return "unknown";
 }
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-#include "Validation.h"
+#include "pistondyn/common/Validation.h"
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 namespace {
 
 constexpr const char* kWhere = "PenaltyContactLaw";
@@ -29,15 +29,15 @@ inline Step cubicStep(double x) {
 PenaltyContactLaw::PenaltyContactLaw(const PenaltyContactParameters& parameters)
     : parameters_(parameters) {
   const PenaltyContactParameters& p = parameters_;
-  detail::requirePositiveFinite(p.referencePressure_Pa, kWhere, "referencePressure_Pa", "Pa");
-  detail::requirePositiveFinite(p.referencePenetration_m, kWhere, "referencePenetration_m", "m");
+  common::requirePositiveFinite(p.referencePressure_Pa, kWhere, "referencePressure_Pa", "Pa");
+  common::requirePositiveFinite(p.referencePenetration_m, kWhere, "referencePenetration_m", "m");
   if (!(p.exponent >= 1.0) || !std::isfinite(p.exponent)) {
-    detail::throwInvalid(kWhere, "exponent", p.exponent, "",
-                         ">= 1 and finite (pressure and slope continuous at the onset)");
+    common::throwInvalidValue(kWhere, "exponent", p.exponent, "",
+                              ">= 1 and finite (pressure and slope continuous at the onset)");
   }
-  detail::requireFinite(p.onsetGap_m, kWhere, "onsetGap_m", "m");
-  detail::requirePositiveFinite(p.transitionDepth_m, kWhere, "transitionDepth_m", "m");
-  detail::requirePositiveFinite(p.compositeRoughness_m, kWhere, "compositeRoughness_m", "m");
+  common::requireFinite(p.onsetGap_m, kWhere, "onsetGap_m", "m");
+  common::requirePositiveFinite(p.transitionDepth_m, kWhere, "transitionDepth_m", "m");
+  common::requirePositiveFinite(p.compositeRoughness_m, kWhere, "compositeRoughness_m", "m");
 }
 
 double PenaltyContactLaw::evalPressure(double gap_m) const {
@@ -70,4 +70,4 @@ double PenaltyContactLaw::evalAreaFraction(double gap_m) const {
   return cubicStep((parameters_.onsetGap_m - gap_m) / parameters_.transitionDepth_m).value;
 }
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

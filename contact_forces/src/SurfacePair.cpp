@@ -3,26 +3,26 @@
 #include <cmath>
 #include <string>
 
-#include "Validation.h"
+#include "pistondyn/common/Validation.h"
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 
 void validateMaterial(const ElasticMaterial& material, const char* where, const char* argName) {
   const std::string name(argName);
-  detail::requirePositiveFinite(material.youngsModulus_Pa, where, name + ".youngsModulus_Pa", "Pa");
+  common::requirePositiveFinite(material.youngsModulus_Pa, where, name + ".youngsModulus_Pa", "Pa");
   if (!(material.poissonRatio > -1.0 && material.poissonRatio < 0.5)) {
-    detail::throwInvalid(where, name + ".poissonRatio", material.poissonRatio, "",
-                         "in the open interval (-1, 0.5)");
+    common::throwInvalidValue(where, name + ".poissonRatio", material.poissonRatio, "",
+                              "in the open interval (-1, 0.5)");
   }
 }
 
 double compositeRoughness_m(double rq1_m, double rq2_m) {
-  detail::requireNonNegativeFinite(rq1_m, "compositeRoughness_m", "rq1_m", "m");
-  detail::requireNonNegativeFinite(rq2_m, "compositeRoughness_m", "rq2_m", "m");
+  common::requireNonNegativeFinite(rq1_m, "compositeRoughness_m", "rq1_m", "m");
+  common::requireNonNegativeFinite(rq2_m, "compositeRoughness_m", "rq2_m", "m");
   const double sigma = std::hypot(rq1_m, rq2_m);
   if (!(sigma > 0.0)) {
-    detail::throwInvalid("compositeRoughness_m", "sqrt(rq1_m^2 + rq2_m^2)", sigma, "m",
-                         "positive (at least one surface must be rough)");
+    common::throwInvalidValue("compositeRoughness_m", "sqrt(rq1_m^2 + rq2_m^2)", sigma, "m",
+                              "positive (at least one surface must be rough)");
   }
   return sigma;
 }
@@ -45,4 +45,4 @@ double effectiveModulus_Pa(const ElasticMaterial& surface1, const ElasticMateria
   return 2.0 / complianceSum(surface1, surface2, "effectiveModulus_Pa");
 }
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

@@ -1,35 +1,27 @@
 #include "pistondyn/lubrication/FilmGrid.h"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
+
+#include "pistondyn/common/Validation.h"
 
 namespace pistondyn::lubrication {
 
 namespace {
 
-void require(bool ok, const std::string& message) {
-  if (!ok)
-    throw std::invalid_argument(message);
-}
-
 void checkCoordinates(const Eigen::VectorXd& c, const char* what) {
-  std::ostringstream os;
-  if (c.size() < 3) {
-    os << "FilmGrid: " << what << " has " << c.size() << " nodes; at least 3 are needed";
-    throw std::invalid_argument(os.str());
-  }
+  constexpr const char* kWhere = "FilmGrid";
+  if (c.size() < 3)
+    common::throwInvalidArgument(
+        kWhere, common::message(what, " has ", c.size(), " nodes; at least 3 are needed"));
   for (Eigen::Index k = 0; k < c.size(); ++k) {
-    if (!std::isfinite(c[k])) {
-      os << "FilmGrid: " << what << "[" << k << "] = " << c[k] << " m is not finite";
-      throw std::invalid_argument(os.str());
-    }
-    if (k > 0 && !(c[k] > c[k - 1])) {
-      os << "FilmGrid: " << what << " must be strictly increasing, but " << what << "[" << k
-         << "] = " << c[k] << " m <= " << what << "[" << k - 1 << "] = " << c[k - 1] << " m";
-      throw std::invalid_argument(os.str());
-    }
+    if (!std::isfinite(c[k]))
+      common::throwNotFinite(c[k], kWhere, common::message(what, "[", k, "]"), "m");
+    if (k > 0 && !(c[k] > c[k - 1]))
+      common::throwInvalidArgument(
+          kWhere, common::message(what, " must be strictly increasing, but ", what, "[", k, "] = ",
+                                  c[k], " m <= ", what, "[", k - 1, "] = ", c[k - 1], " m"));
   }
 }
 
@@ -58,14 +50,15 @@ void oneDimensionalWeights(const Eigen::VectorXd& c, bool periodic, double perio
 
 FilmGrid FilmGrid::uniform(int nx, double lengthX_m, int ny, double lengthY_m, bool periodicX,
                            double x0_m, double y0_m) {
-  require(nx >= 3, "FilmGrid::uniform: nx = " + std::to_string(nx) + " must be >= 3");
-  require(ny >= 3, "FilmGrid::uniform: ny = " + std::to_string(ny) + " must be >= 3");
-  require(std::isfinite(lengthX_m) && lengthX_m > 0.0,
-          "FilmGrid::uniform: lengthX_m must be positive and finite");
-  require(std::isfinite(lengthY_m) && lengthY_m > 0.0,
-          "FilmGrid::uniform: lengthY_m must be positive and finite");
-  require(std::isfinite(x0_m) && std::isfinite(y0_m),
-          "FilmGrid::uniform: origin x0_m, y0_m must be finite");
+  constexpr const char* kWhere = "FilmGrid::uniform";
+  if (nx < 3)
+    common::throwInvalidArgument(kWhere, common::message("nx = ", nx, " must be >= 3"));
+  if (ny < 3)
+    common::throwInvalidArgument(kWhere, common::message("ny = ", ny, " must be >= 3"));
+  common::requirePositiveFinite(lengthX_m, kWhere, "lengthX_m", "m");
+  common::requirePositiveFinite(lengthY_m, kWhere, "lengthY_m", "m");
+  common::requireFinite(x0_m, kWhere, "origin x0_m", "m");
+  common::requireFinite(y0_m, kWhere, "origin y0_m", "m");
   Eigen::VectorXd x(nx), y(ny);
   const double dx = periodicX ? lengthX_m / nx : lengthX_m / (nx - 1);
   for (int i = 0; i < nx; ++i)
@@ -81,9 +74,10 @@ FilmGrid FilmGrid::fromCoordinates(Eigen::VectorXd x_m, Eigen::VectorXd y_m, boo
   checkCoordinates(y_m, "y_m");
   if (periodicX) {
     const double span = x_m[x_m.size() - 1] - x_m[0];
-    require(std::isfinite(periodX_m) && periodX_m > span,
-            "FilmGrid::fromCoordinates: periodX_m must be finite and larger than the x span of "
-            "the nodes");
+    if (!(std::isfinite(periodX_m) && periodX_m > span))
+      common::throwInvalidValue(
+          "FilmGrid::fromCoordinates", "periodX_m", periodX_m, "m",
+          common::message("finite and larger than the x span of the nodes, ", span, " m"));
   }
   FilmGrid g;
   g.x_ = std::move(x_m);
@@ -95,11 +89,13 @@ FilmGrid FilmGrid::fromCoordinates(Eigen::VectorXd x_m, Eigen::VectorXd y_m, boo
 }
 
 Eigen::VectorXd FilmGrid::clusteredCoordinates(int n, double a, double b, double clustering) {
-  require(n >= 2, "FilmGrid::clusteredCoordinates: n must be >= 2");
-  require(std::isfinite(a) && std::isfinite(b) && b > a,
-          "FilmGrid::clusteredCoordinates: need finite a < b");
-  require(std::isfinite(clustering) && clustering >= 0.0,
-          "FilmGrid::clusteredCoordinates: clustering must be >= 0 and finite");
+  constexpr const char* kWhere = "FilmGrid::clusteredCoordinates";
+  if (n < 2)
+    common::throwInvalidArgument(kWhere, common::message("n = ", n, " must be >= 2"));
+  if (!(std::isfinite(a) && std::isfinite(b) && b > a))
+    common::throwInvalidArgument(kWhere,
+                                 common::message("need finite a < b, got a = ", a, ", b = ", b));
+  common::requireNonNegativeFinite(clustering, kWhere, "clustering", "");
   Eigen::VectorXd c(n);
   for (int k = 0; k < n; ++k) {
     const double s = static_cast<double>(k) / (n - 1);  // 0..1

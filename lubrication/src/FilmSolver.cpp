@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -11,50 +10,46 @@
 #include "FilmPostprocess.h"
 #include "FilmSystem.h"
 #include "ReferenceSolver.h"
+#include "pistondyn/common/Validation.h"
 
 namespace pistondyn::lubrication {
 
 namespace {
 
-constexpr const char* kWhere = "FilmSolver::solve: ";
+constexpr const char* kWhere = "FilmSolver::solve";
 
-[[noreturn]] void fail(const std::string& what) {
-  throw std::invalid_argument(std::string(kWhere) + what);
-}
-
-std::string num(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
+// "FilmSolver::solve: " followed by the parts of the message (common::message).
+template <class... Parts>
+[[noreturn]] void fail(const Parts&... parts) {
+  common::throwInvalidArgument(kWhere, common::message(parts...));
 }
 
 void checkSize(Eigen::Index size, Eigen::Index expected, const char* name, bool allowEmpty) {
   if (allowEmpty && size == 0)
     return;
   if (size != expected)
-    fail(std::string(name) + " has " + std::to_string(size) + " entries, expected " +
-         std::to_string(expected) + (allowEmpty ? " (or 0)" : "") + " for this grid");
+    fail(name, " has ", size, " entries, expected ", expected, allowEmpty ? " (or 0)" : "",
+         " for this grid");
 }
 
+// unit may be empty (dimensionless entries).
 void checkFinite(const Eigen::ArrayXd& a, const char* name, const char* unit) {
   for (Eigen::Index k = 0; k < a.size(); ++k)
     if (!std::isfinite(a[k]))
-      fail(std::string(name) + "[" + std::to_string(k) + "] = " + num(a[k]) + " " + unit +
-           " must be finite");
+      common::throwNotFinite(a[k], kWhere, common::message(name, "[", k, "]"), unit);
 }
 
 // minPressure_Pa: the lowest admissible edge pressure (-inf where any finite one will do).
 void checkEdge(const FilmEdge& e, const char* name, Eigen::Index along, double minPressure_Pa) {
   if (!std::isfinite(e.pressure_Pa))
-    fail(std::string("problem.boundary.") + name + ".pressure_Pa = " + num(e.pressure_Pa) +
-         " Pa must be finite");
+    fail("problem.boundary.", name, ".pressure_Pa = ", e.pressure_Pa, " Pa must be finite");
   if (e.pressure_Pa < minPressure_Pa)
-    fail(std::string("problem.boundary.") + name + ".pressure_Pa = " + num(e.pressure_Pa) +
-         " Pa is below problem.cavitationPressure_Pa = " + num(minPressure_Pa) +
+    fail("problem.boundary.", name, ".pressure_Pa = ", e.pressure_Pa,
+         " Pa is below problem.cavitationPressure_Pa = ", minPressure_Pa,
          " Pa; the mass-conserving model needs open edges at or above the cavitation "
          "pressure (use the same gauge or absolute datum for both)");
   if (std::isnan(e.supplyFilm_m) || e.supplyFilm_m < 0.0)
-    fail(std::string("problem.boundary.") + name + ".supplyFilm_m = " + num(e.supplyFilm_m) +
+    fail("problem.boundary.", name, ".supplyFilm_m = ", e.supplyFilm_m,
          " m must be >= 0 (or +inf for a flooded edge)");
   // Names are built only on failure: validation runs on every call and must not allocate.
   const Eigen::Index size = e.supplyFilmPerNode_m.size();
@@ -65,21 +60,18 @@ void checkEdge(const FilmEdge& e, const char* name, Eigen::Index along, double m
   for (Eigen::Index k = 0; k < size; ++k) {
     const double s = e.supplyFilmPerNode_m[k];
     if (std::isnan(s) || s < 0.0)
-      fail(std::string("problem.boundary.") + name + ".supplyFilmPerNode_m[" + std::to_string(k) +
-           "] = " + num(s) + " m must be >= 0");
+      fail("problem.boundary.", name, ".supplyFilmPerNode_m[", k, "] = ", s, " m must be >= 0");
   }
 }
 
 void validate(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm) {
   if (grid.nx() < 3 || grid.ny() < 3)
-    fail("grid has " + std::to_string(grid.nx()) + " x " + std::to_string(grid.ny()) +
-         " nodes; at least 3 x 3 are needed");
+    fail("grid has ", grid.nx(), " x ", grid.ny(), " nodes; at least 3 x 3 are needed");
   const Eigen::Index n = grid.nodeCount();
   checkSize(pr.gap_m.size(), n, "problem.gap_m", false);
   for (Eigen::Index k = 0; k < n; ++k)
     if (!(std::isfinite(pr.gap_m[k]) && pr.gap_m[k] > 0.0))
-      fail("gap h[" + std::to_string(k) + "] = " + num(pr.gap_m[k]) +
-           " m must be positive and finite (problem.gap_m)");
+      fail("gap h[", k, "] = ", pr.gap_m[k], " m must be positive and finite (problem.gap_m)");
   checkSize(pr.gapRate_mps.size(), n, "problem.gapRate_mps", true);
   checkFinite(pr.gapRate_mps, "problem.gapRate_mps", "m/s");
   if (!pr.slidingVelocity_mps.allFinite())
@@ -88,11 +80,12 @@ void validate(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm
     checkSize(pr.viscosityPerNode_Pas.size(), n, "problem.viscosityPerNode_Pas", true);
     for (Eigen::Index k = 0; k < n; ++k)
       if (!(std::isfinite(pr.viscosityPerNode_Pas[k]) && pr.viscosityPerNode_Pas[k] > 0.0))
-        fail("viscosity problem.viscosityPerNode_Pas[" + std::to_string(k) +
-             "] = " + num(pr.viscosityPerNode_Pas[k]) + " Pa s must be positive and finite");
+        common::throwNotPositiveFinite(
+            pr.viscosityPerNode_Pas[k], kWhere,
+            common::message("viscosity problem.viscosityPerNode_Pas[", k, "]"), "Pa s");
   } else if (!(std::isfinite(pr.viscosity_Pas) && pr.viscosity_Pas > 0.0)) {
-    fail("viscosity problem.viscosity_Pas = " + num(pr.viscosity_Pas) +
-         " Pa s must be positive and finite");
+    common::throwNotPositiveFinite(pr.viscosity_Pas, kWhere, "viscosity problem.viscosity_Pas",
+                                   "Pa s");
   }
   if (!std::isfinite(pr.cavitationPressure_Pa))
     fail("problem.cavitationPressure_Pa must be finite");
@@ -109,18 +102,17 @@ void validate(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm
   checkEdge(pr.boundary.xMin, "xMin", grid.ny(), minEdgeX);
   checkEdge(pr.boundary.xMax, "xMax", grid.ny(), minEdgeX);
   if (std::isnan(pr.timeStep_s) || !(pr.timeStep_s > 0.0))
-    fail("problem.timeStep_s = " + num(pr.timeStep_s) + " s must be > 0 (+inf: steady)");
+    fail("problem.timeStep_s = ", pr.timeStep_s, " s must be > 0 (+inf: steady)");
   checkSize(pr.previousFillFraction.size(), n, "problem.previousFillFraction", true);
   for (Eigen::Index k = 0; k < pr.previousFillFraction.size(); ++k) {
     const double t = pr.previousFillFraction[k];
     if (!(t >= 0.0 && t <= 1.0))
-      fail("problem.previousFillFraction[" + std::to_string(k) + "] = " + num(t) +
-           " must lie in [0, 1]");
+      fail("problem.previousFillFraction[", k, "] = ", t, " must lie in [0, 1]");
   }
   if (pr.squeezeBasis.cols() > 0) {
     if (pr.squeezeBasis.rows() != n)
-      fail("problem.squeezeBasis has " + std::to_string(pr.squeezeBasis.rows()) +
-           " rows, expected " + std::to_string(n) + " (one per node)");
+      fail("problem.squeezeBasis has ", pr.squeezeBasis.rows(), " rows, expected ", n,
+           " (one per node)");
     if (!pr.squeezeBasis.allFinite())
       fail("problem.squeezeBasis must be finite");
   }
@@ -138,19 +130,18 @@ void validate(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm
 }
 
 void validateOptions(const FilmSolverOptions& o) {
-  auto bad = [](const std::string& what) {
-    throw std::invalid_argument("FilmSolver::setOptions: " + what);
-  };
-  if (!(std::isfinite(o.tolerance) && o.tolerance > 0.0))
-    bad("tolerance = " + num(o.tolerance) + " must be positive and finite");
+  constexpr const char* kSetOptions = "FilmSolver::setOptions";
+  common::requirePositiveFinite(o.tolerance, kSetOptions, "tolerance", "");
   if (!(o.overRelaxation > 0.0 && o.overRelaxation < 2.0))
-    bad("overRelaxation = " + num(o.overRelaxation) + " must lie in (0, 2)");
+    common::throwInvalidArgument(
+        kSetOptions, common::message("overRelaxation = ", o.overRelaxation, " must lie in (0, 2)"));
   if (!(o.fillRelaxation > 0.0 && o.fillRelaxation <= 1.0))
-    bad("fillRelaxation = " + num(o.fillRelaxation) + " must lie in (0, 1]");
+    common::throwInvalidArgument(
+        kSetOptions, common::message("fillRelaxation = ", o.fillRelaxation, " must lie in (0, 1]"));
   if (o.maxSweeps < 1)
-    bad("maxSweeps must be >= 1");
+    common::throwInvalidArgument(kSetOptions, "maxSweeps must be >= 1");
   if (o.maxActiveSetIterations < 1)
-    bad("maxActiveSetIterations must be >= 1");
+    common::throwInvalidArgument(kSetOptions, "maxActiveSetIterations must be >= 1");
 }
 
 // Flow-factor models are external code: check what they return before it enters the matrices.
@@ -165,8 +156,8 @@ void checkFactors(const detail::FilmSystem& s) {
     if (!ok)
       fail(
           "problem.flowFactors returned factors that give a non-positive or non-finite "
-          "coefficient at node " +
-          std::to_string(k) + " (pressure flow factors must be > 0, expected gap > 0)");
+          "coefficient at node ",
+          k, " (pressure flow factors must be > 0, expected gap > 0)");
   }
 }
 

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "OilUnits.h"
+#include "pistondyn/common/Validation.h"
 
 namespace pistondyn::lubrication {
 
@@ -18,8 +18,10 @@ constexpr double kWaltherMinViscosity_cSt = 2.0;  // lower limit of the simple f
 using detail::kM2psPerCSt;
 constexpr double kMaxThermalExpansion_perK = 2e-3;
 
-[[noreturn]] void fail(const std::string& what) {
-  throw std::invalid_argument("Oil: " + what);
+// "Oil: " followed by the parts of the message (common::message).
+template <class... Parts>
+[[noreturn]] void fail(const Parts&... parts) {
+  common::throwInvalidArgument("Oil", common::message(parts...));
 }
 
 // Plausibility bounds of the data (unit mistakes, not physics):
@@ -39,45 +41,33 @@ constexpr double kMaxDataTemperature_degC = 250.0;
 void checkDataTemperature(const char* name, double temperature_degC) {
   if (!(temperature_degC > kMinDataTemperature_degC &&
         temperature_degC < kMaxDataTemperature_degC)) {
-    std::ostringstream msg;
-    msg << name << " = " << temperature_degC << " degC is implausible for oil data (expected "
-        << kMinDataTemperature_degC << " .. " << kMaxDataTemperature_degC
-        << " degC); was it given in kelvin? Subtract 273.15";
-    fail(msg.str());
+    fail(name, " = ", temperature_degC, " degC is implausible for oil data (expected ",
+         kMinDataTemperature_degC, " .. ", kMaxDataTemperature_degC,
+         " degC); was it given in kelvin? Subtract 273.15");
   }
 }
 
 void checkDataViscosity(const char* name, double nu_m2ps) {
   if (!(nu_m2ps <= kMaxDataViscosity_m2ps)) {
-    std::ostringstream msg;
-    msg << name << " = " << nu_m2ps << " m^2/s is implausible for an oil (expected at most "
-        << kMaxDataViscosity_m2ps
-        << " m^2/s = 10000 mm^2/s); was it given in mm^2/s (cSt)? Multiply by 1e-6";
-    fail(msg.str());
+    fail(name, " = ", nu_m2ps, " m^2/s is implausible for an oil (expected at most ",
+         kMaxDataViscosity_m2ps,
+         " m^2/s = 10000 mm^2/s); was it given in mm^2/s (cSt)? Multiply by 1e-6");
   }
 }
 
 void checkFinite(const char* name, double value) {
-  if (!std::isfinite(value)) {
-    std::ostringstream msg;
-    msg << name << " = " << value << " must be finite";
-    fail(msg.str());
-  }
+  common::requireFinite(value, "Oil", name, "");
 }
 
 void checkPositive(const char* name, double value) {
   if (!(value > 0.0)) {
-    std::ostringstream msg;
-    msg << name << " = " << value << " must be > 0";
-    fail(msg.str());
+    fail(name, " = ", value, " must be > 0");
   }
 }
 
 void checkAboveAbsoluteZero(const char* name, double temperature_degC) {
   if (!(temperature_degC > -kZeroCelsius_K)) {
-    std::ostringstream msg;
-    msg << name << " = " << temperature_degC << " degC is not above absolute zero";
-    fail(msg.str());
+    fail(name, " = ", temperature_degC, " degC is not above absolute zero");
   }
 }
 
@@ -105,11 +95,9 @@ Oil::Oil(const OilSpec& spec) : spec_(spec) {
   checkDataTemperature("densityReferenceTemperature_degC", spec.densityReferenceTemperature_degC);
 
   if (!(spec.temperature2_degC > spec.temperature1_degC)) {
-    std::ostringstream msg;
-    msg << "temperature2_degC = " << spec.temperature2_degC
-        << " must be greater than temperature1_degC = " << spec.temperature1_degC
-        << " (give the (T, nu) points in order of increasing temperature)";
-    fail(msg.str());
+    fail("temperature2_degC = ", spec.temperature2_degC,
+         " must be greater than temperature1_degC = ", spec.temperature1_degC,
+         " (give the (T, nu) points in order of increasing temperature)");
   }
   const double nu1_cSt = spec.kinematicViscosity1_m2ps / kM2psPerCSt;
   const double nu2_cSt = spec.kinematicViscosity2_m2ps / kM2psPerCSt;
@@ -118,38 +106,28 @@ Oil::Oil(const OilSpec& spec) : spec_(spec) {
   checkDataViscosity("kinematicViscosity1_m2ps", spec.kinematicViscosity1_m2ps);
   checkDataViscosity("kinematicViscosity2_m2ps", spec.kinematicViscosity2_m2ps);
   if (!(nu2_cSt < nu1_cSt)) {
-    std::ostringstream msg;
-    msg << "kinematicViscosity2_m2ps = " << spec.kinematicViscosity2_m2ps
-        << " at the higher temperature must be below kinematicViscosity1_m2ps = "
-        << spec.kinematicViscosity1_m2ps << " (viscosity must decrease with temperature)";
-    fail(msg.str());
+    fail("kinematicViscosity2_m2ps = ", spec.kinematicViscosity2_m2ps,
+         " at the higher temperature must be below kinematicViscosity1_m2ps = ",
+         spec.kinematicViscosity1_m2ps, " (viscosity must decrease with temperature)");
   }
   if (nu2_cSt < kWaltherMinViscosity_cSt) {
-    std::ostringstream msg;
-    msg << "kinematicViscosity2_m2ps = " << spec.kinematicViscosity2_m2ps
-        << " is below 2e-6 m^2/s, the lower limit of the ASTM D341 Walther form";
-    fail(msg.str());
+    fail("kinematicViscosity2_m2ps = ", spec.kinematicViscosity2_m2ps,
+         " is below 2e-6 m^2/s, the lower limit of the ASTM D341 Walther form");
   }
   checkPositive("density_kgpm3", spec.density_kgpm3);
   if (!(spec.density_kgpm3 > kMinDensity_kgpm3 && spec.density_kgpm3 < kMaxDensity_kgpm3)) {
-    std::ostringstream msg;
-    msg << "density_kgpm3 = " << spec.density_kgpm3
-        << " kg/m^3 is implausible for an oil (expected " << kMinDensity_kgpm3 << " .. "
-        << kMaxDensity_kgpm3 << " kg/m^3); was it given in g/ml? Multiply by 1000";
-    fail(msg.str());
+    fail("density_kgpm3 = ", spec.density_kgpm3, " kg/m^3 is implausible for an oil (expected ",
+         kMinDensity_kgpm3, " .. ", kMaxDensity_kgpm3,
+         " kg/m^3); was it given in g/ml? Multiply by 1000");
   }
   if (!(spec.thermalExpansion_perK >= 0.0 &&
         spec.thermalExpansion_perK < kMaxThermalExpansion_perK)) {
-    std::ostringstream msg;
-    msg << "thermalExpansion_perK = " << spec.thermalExpansion_perK << " must be in [0, "
-        << kMaxThermalExpansion_perK << ")";
-    fail(msg.str());
+    fail("thermalExpansion_perK = ", spec.thermalExpansion_perK, " must be in [0, ",
+         kMaxThermalExpansion_perK, ")");
   }
   if (!(spec.maxTemperature_degC > spec.minTemperature_degC)) {
-    std::ostringstream msg;
-    msg << "maxTemperature_degC = " << spec.maxTemperature_degC
-        << " must be greater than minTemperature_degC = " << spec.minTemperature_degC;
-    fail(msg.str());
+    fail("maxTemperature_degC = ", spec.maxTemperature_degC,
+         " must be greater than minTemperature_degC = ", spec.minTemperature_degC);
   }
 
   // Walther line through both points.
@@ -164,10 +142,8 @@ Oil::Oil(const OilSpec& spec) : spec_(spec) {
   if (spec.thermalExpansion_perK > 0.0) {
     const double lowest = spec.densityReferenceTemperature_degC - 1.0 / spec.thermalExpansion_perK;
     if (!(spec.minTemperature_degC > lowest)) {
-      std::ostringstream msg;
-      msg << "minTemperature_degC = " << spec.minTemperature_degC
-          << " is outside the range of the linear specific-volume density model";
-      fail(msg.str());
+      fail("minTemperature_degC = ", spec.minTemperature_degC,
+           " is outside the range of the linear specific-volume density model");
     }
   }
 
@@ -178,25 +154,20 @@ Oil::Oil(const OilSpec& spec) : spec_(spec) {
   const double tAtLimit_degC = std::pow(10.0, logTAtLimit) - kZeroCelsius_K;
   maxTemperature_degC_ = std::min(maxTemperature_degC_, tAtLimit_degC);
   if (!(maxTemperature_degC_ > minTemperature_degC_)) {
-    std::ostringstream msg;
-    msg << "minTemperature_degC = " << spec.minTemperature_degC << " is not below the temperature "
-        << tAtLimit_degC << " degC where the oil thins to 2e-6 m^2/s";
-    fail(msg.str());
+    fail("minTemperature_degC = ", spec.minTemperature_degC, " is not below the temperature ",
+         tAtLimit_degC, " degC where the oil thins to 2e-6 m^2/s");
   }
 }
 
 void Oil::checkTemperature(const char* function, double temperature_degC,
                            Eigen::Index index) const {
   if (!(temperature_degC >= minTemperature_degC_ && temperature_degC <= maxTemperature_degC_)) {
-    std::ostringstream msg;
-    msg << "Oil::" << function << ": ";
-    if (index >= 0)
-      msg << "temperature_degC[" << index << "] = " << temperature_degC;
-    else
-      msg << "temperature " << temperature_degC;
-    msg << " degC is outside the valid range [" << minTemperature_degC_ << ", "
-        << maxTemperature_degC_ << "] degC of oil '" << spec_.name << "'";
-    throw std::invalid_argument(msg.str());
+    const std::string value =
+        index >= 0 ? common::message("temperature_degC[", index, "] = ", temperature_degC)
+                   : common::message("temperature ", temperature_degC);
+    throw std::invalid_argument(common::message(
+        "Oil::", function, ": ", value, " degC is outside the valid range [", minTemperature_degC_,
+        ", ", maxTemperature_degC_, "] degC of oil '", spec_.name, "'"));
   }
 }
 
@@ -234,10 +205,9 @@ double Oil::calcDynamicViscosity_Pas(double temperature_degC) const {
 void Oil::calcDynamicViscosity_Pas(const Eigen::Ref<const Eigen::ArrayXd>& temperature_degC,
                                    Eigen::Ref<Eigen::ArrayXd> viscosity_Pas) const {
   if (viscosity_Pas.size() != temperature_degC.size()) {
-    std::ostringstream msg;
-    msg << "Oil::calcDynamicViscosity_Pas: viscosity_Pas has " << viscosity_Pas.size()
-        << " entries, expected " << temperature_degC.size() << " (temperature_degC.size())";
-    throw std::invalid_argument(msg.str());
+    throw std::invalid_argument(common::message(
+        "Oil::calcDynamicViscosity_Pas: viscosity_Pas has ", viscosity_Pas.size(),
+        " entries, expected ", temperature_degC.size(), " (temperature_degC.size())"));
   }
   // Check everything first, so that a bad entry leaves the output untouched.
   for (Eigen::Index k = 0; k < temperature_degC.size(); ++k)
@@ -247,12 +217,8 @@ void Oil::calcDynamicViscosity_Pas(const Eigen::Ref<const Eigen::ArrayXd>& tempe
 }
 
 double Oil::calcDynamicViscosityAtKelvin_Pas(double temperature_K) const {
-  if (!std::isfinite(temperature_K)) {
-    std::ostringstream msg;
-    msg << "Oil::calcDynamicViscosityAtKelvin_Pas: temperature_K = " << temperature_K
-        << " must be finite";
-    throw std::invalid_argument(msg.str());
-  }
+  common::requireFinite(temperature_K, "Oil::calcDynamicViscosityAtKelvin_Pas", "temperature_K",
+                        "K");
   return calcDynamicViscosity_Pas(temperature_K - kZeroCelsius_K);
 }
 

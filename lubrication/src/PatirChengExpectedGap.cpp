@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
+
+#include "pistondyn/common/Validation.h"
 
 namespace pistondyn::lubrication {
 
@@ -49,17 +50,10 @@ ExpectedGap polynomial(double h, double sigma) {
 }  // namespace
 
 ExpectedGap calcExpectedGap(double h_m, double sigma_m, ExpectedGapForm form) {
-  if (!std::isfinite(h_m)) {
-    std::ostringstream msg;
-    msg << "calcExpectedGap: gap h_m = " << h_m << " m must be finite";
-    throw std::invalid_argument(msg.str());
-  }
-  if (!std::isfinite(sigma_m) || sigma_m < 0.0) {
-    std::ostringstream msg;
-    msg << "calcExpectedGap: composite roughness sigma_m = " << sigma_m
-        << " m must be finite and >= 0";
-    throw std::invalid_argument(msg.str());
-  }
+  common::requireFinite(h_m, "calcExpectedGap", "gap h_m", "m");
+  if (!std::isfinite(sigma_m) || sigma_m < 0.0)
+    common::throwInvalidValue("calcExpectedGap", "composite roughness sigma_m", sigma_m, "m",
+                              "finite and >= 0");
   if (sigma_m > 0.0) {
     switch (form) {
       case ExpectedGapForm::kGaussian:

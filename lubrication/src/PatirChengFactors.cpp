@@ -28,11 +28,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
-#include "pistondyn/lubrication/PatirChengRows.h"
+#include "PatirChengRows.h"
+#include "pistondyn/common/Validation.h"
 
 namespace pistondyn::lubrication::patir_cheng {
 
@@ -169,12 +169,8 @@ double powerFitHeld(double C, double r, double Hmin, double H) {
 
 // Throws std::invalid_argument unless value is positive and finite.
 void checkPositiveFinite(const char* function, const char* what, double value) {
-  if (!std::isfinite(value) || !(value > 0.0)) {
-    std::ostringstream msg;
-    msg << "patir_cheng::" << function << ": " << what << " = " << value
-        << " must be positive and finite";
-    throw std::invalid_argument(msg.str());
-  }
+  if (common::notPositiveFinite(value))
+    common::throwNotPositiveFinite(value, common::message("patir_cheng::", function), what, "");
 }
 
 void checkH(const char* function, double H) {
@@ -301,10 +297,8 @@ double calcShearStressFactorFp(double H, double gamma) {
 double calcShearStressFactorF(double H, double epsStar) {
   checkH("calcShearStressFactorF", H);
   if (!(epsStar > 0.0 && epsStar <= kMaxPhiFCutoff)) {
-    std::ostringstream msg;
-    msg << "patir_cheng::calcShearStressFactorF: cut-off epsStar = " << epsStar
-        << " must be in (0, " << kMaxPhiFCutoff << "] (default 1/300)";
-    throw std::invalid_argument(msg.str());
+    common::throwInvalidValue("patir_cheng::calcShearStressFactorF", "cut-off epsStar", epsStar, "",
+                              common::message("in (0, ", kMaxPhiFCutoff, "] (default 1/300)"));
   }
   const double z = H / 3.0;
   if (z <= 1.0) {

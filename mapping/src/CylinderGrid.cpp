@@ -13,8 +13,7 @@ namespace {
 using detail::kTwoPi;
 
 void checkRadius(const char* function, double radius_m) {
-  if (!(std::isfinite(radius_m) && radius_m > 0.0))
-    detail::fail(function, "radius_m = " + detail::str(radius_m) + " must be positive and finite");
+  common::requirePositiveFinite(radius_m, function, "radius_m", "");
 }
 
 // Trapezoid weights: integral of each 1-D hat function over its support.
@@ -43,7 +42,8 @@ void checkNodes(const char* fn, double radius_m, const Eigen::VectorXd& phi_rad,
   detail::requireAngle(fn, "phi_rad[last]", phi_rad[phi_rad.size() - 1]);
   const double span = phi_rad[phi_rad.size() - 1] - phi_rad[0];
   if (!(span < kTwoPi))
-    detail::fail(fn, "phi_rad spans " + detail::str(span) + " rad" + whyNotFullTurn);
+    common::throwInvalidArgument(fn,
+                                 common::message("phi_rad spans ", span, " rad", whyNotFullTurn));
 }
 }  // namespace
 
@@ -80,12 +80,12 @@ Eigen::VectorXd CylinderGrid::nodeArea_m2() const {
 Eigen::VectorXd uniformNodes(double first, double last, int count) {
   const char* fn = "uniformNodes";
   if (count < 2)
-    detail::fail(fn, "count = " + std::to_string(count) + " must be at least 2");
+    common::throwInvalidArgument(fn, "count = " + std::to_string(count) + " must be at least 2");
   detail::requireFiniteScalar(fn, "first", first);
   detail::requireFiniteScalar(fn, "last", last);
   if (!(last > first))
-    detail::fail(
-        fn, "last = " + detail::str(last) + " must be greater than first = " + detail::str(first));
+    common::throwInvalidArgument(
+        fn, common::message("last = ", last, " must be greater than first = ", first));
   Eigen::VectorXd x(count);
   for (int k = 0; k < count; ++k)
     x[k] = first + (last - first) * k / (count - 1);
@@ -96,7 +96,7 @@ Eigen::VectorXd uniformNodes(double first, double last, int count) {
 Eigen::VectorXd fullCircleNodes_rad(int count, double phi0_rad) {
   const char* fn = "fullCircleNodes_rad";
   if (count < 3)
-    detail::fail(fn, "count = " + std::to_string(count) + " must be at least 3");
+    common::throwInvalidArgument(fn, "count = " + std::to_string(count) + " must be at least 3");
   detail::requireFiniteScalar(fn, "phi0_rad", phi0_rad);
   Eigen::VectorXd x(count);
   for (int k = 0; k < count; ++k)

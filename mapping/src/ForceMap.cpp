@@ -111,9 +111,9 @@ std::uint64_t axialFingerprint(const Eigen::VectorXd& sourceY, const Eigen::Vect
 
 void checkOutput(const char* fn, const char* argument, Eigen::Index size, int expected) {
   if (size != expected)
-    detail::fail(fn, std::string(argument) + " has " + std::to_string(size) +
-                         " entries, expected " + std::to_string(expected) +
-                         " (target.nodeCount())");
+    common::throwInvalidArgument(fn, std::string(argument) + " has " + std::to_string(size) +
+                                         " entries, expected " + std::to_string(expected) +
+                                         " (target.nodeCount())");
 }
 
 }  // namespace
@@ -183,12 +183,14 @@ void TensorForceMap::setAxialOffset(double yOffset_m, Workspace& ws) const {
 
 void TensorForceMap::checkWorkspace(const char* fn, const Workspace& ws) const {
   if (!ws.ready)
-    detail::fail(fn, "ws has no axial factor (call setAxialOffset with this workspace first)");
+    common::throwInvalidArgument(
+        fn, "ws has no axial factor (call setAxialOffset with this workspace first)");
   if (ws.axialKey != axialKey_ || ws.axial.sourceCount != source_.nY() ||
       ws.axial.targetCount != target_.nY())
-    detail::fail(fn,
-                 "ws holds the axial factor of another map (different source or target axial "
-                 "nodes or load rule); call setAxialOffset of this map with it first");
+    common::throwInvalidArgument(
+        fn,
+        "ws holds the axial factor of another map (different source or target axial "
+        "nodes or load rule); call setAxialOffset of this map with it first");
 }
 
 LoadBalance TensorForceMap::apply(Workspace& ws,

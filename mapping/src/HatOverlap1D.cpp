@@ -115,19 +115,19 @@ void calcHatOverlap1D(const Eigen::VectorXd& sourceNodes, bool sourceClosed,
   detail::requireFiniteScalar(fn, "offset", offset);
   detail::requireFiniteScalar(fn, "period", period);
   if ((sourceClosed || targetClosed) && !(period > 0.0))
-    detail::fail(fn, "period = " + detail::str(period) + " must be positive for a closed grid");
+    common::throwInvalidValue(fn, "period", period, "", "positive for a closed grid");
   // With a period the overlaps are found by counting periods from the offset: keep it
   // within kMaxAbsAngle_rad's number of turns (the counts stay exact integers).
   constexpr double kMaxTurns = kMaxAbsAngle_rad / detail::kTwoPi;
   if (period > 0.0 && !(std::abs(offset) <= kMaxTurns * period))
-    detail::fail(fn, "offset = " + detail::str(offset) + " must be within +-" +
-                         detail::str(kMaxTurns) + " periods");
+    common::throwInvalidArgument(
+        fn, common::message("offset = ", offset, " must be within +-", kMaxTurns, " periods"));
   detail::requireIncreasingNodes(fn, "sourceNodes", sourceNodes, sourceClosed ? 3 : 2);
   detail::requireIncreasingNodes(fn, "targetNodes", targetNodes, targetClosed ? 3 : 2);
   auto requireSpan = [&](const char* argument, const Eigen::VectorXd& x) {
     if (period > 0.0 && !(x[x.size() - 1] - x[0] < period))
-      detail::fail(fn, std::string(argument) + " spans " + detail::str(x[x.size() - 1] - x[0]) +
-                           ", must be less than period = " + detail::str(period));
+      common::throwInvalidArgument(fn, common::message(argument, " spans ", x[x.size() - 1] - x[0],
+                                                       ", must be less than period = ", period));
   };
   requireSpan("sourceNodes", sourceNodes);
   requireSpan("targetNodes", targetNodes);

@@ -134,10 +134,10 @@ void HermiteSurface::calcCellCoefficients() {
 
 Eigen::Matrix4d HermiteSurface::cellCoefficients(int i, int j) const {
   if (i < 0 || i >= grid_.phiCellCount() || j < 0 || j >= grid_.yCellCount())
-    detail::fail("HermiteSurface::cellCoefficients",
-                 "cell (" + std::to_string(i) + ", " + std::to_string(j) + ") outside [0, " +
-                     std::to_string(grid_.phiCellCount()) + ") x [0, " +
-                     std::to_string(grid_.yCellCount()) + ")");
+    common::throwInvalidArgument("HermiteSurface::cellCoefficients",
+                                 "cell (" + std::to_string(i) + ", " + std::to_string(j) +
+                                     ") outside [0, " + std::to_string(grid_.phiCellCount()) +
+                                     ") x [0, " + std::to_string(grid_.yCellCount()) + ")");
   return Eigen::Map<const Eigen::Matrix4d>(coeff_.data() +
                                            16 * static_cast<size_t>(i + grid_.phiCellCount() * j));
 }
@@ -178,9 +178,9 @@ void HermiteSurface::locatePhi(const char* fn, double phi_rad, OutsidePolicy out
     return;
   }
   if (outside == OutsidePolicy::Throw)
-    detail::fail(fn, "phi_rad = " + detail::str(phi_rad) + " lies outside the sector [" +
-                         detail::str(phi0) + ", " + detail::str(end) + "] rad (by " +
-                         detail::str(distance) + " rad)");
+    common::throwInvalidArgument(
+        fn, common::message("phi_rad = ", phi_rad, " lies outside the sector [", phi0, ", ", end,
+                            "] rad (by ", distance, " rad)"));
   t = nearEnd ? (p - x[cell]) / phiCellWidth_[cell] : -before / phiCellWidth_[0];
 }
 
@@ -202,8 +202,8 @@ void HermiteSurface::locateY(const char* fn, double y_m, OutsidePolicy outside, 
     return;
   }
   if (outside == OutsidePolicy::Throw)
-    detail::fail(fn, "y_m = " + detail::str(y_m) + " lies outside the grid [" + detail::str(y0) +
-                         ", " + detail::str(y1) + "] m (by " + detail::str(distance) + " m)");
+    common::throwInvalidArgument(fn, common::message("y_m = ", y_m, " lies outside the grid [", y0,
+                                                     ", ", y1, "] m (by ", distance, " m)"));
 }
 
 HermiteSample HermiteSurface::evaluate(double phi_rad, double y_m, OutsidePolicy outside) const {
@@ -223,8 +223,9 @@ void HermiteSurface::prepareGrid(const char* fn, const CylinderGrid& points, Gri
   detail::requireAngle(fn, "offset.phi_rad", offset.phi_rad);
   detail::requireFiniteScalar(fn, "offset.y_m", offset.y_m);
   if (outputSize != points.nodeCount())
-    detail::fail(fn, "output has " + std::to_string(outputSize) + " entries, expected " +
-                         std::to_string(points.nodeCount()) + " (points.nodeCount())");
+    common::throwInvalidArgument(
+        fn, "output has " + std::to_string(outputSize) + " entries, expected " +
+                std::to_string(points.nodeCount()) + " (points.nodeCount())");
   const int nP = points.nPhi(), nY = points.nY();
   ws.phiCell.resize(nP);
   ws.yCell.resize(nY);
@@ -269,7 +270,8 @@ void HermiteSurface::evaluateOnGrid(const CylinderGrid& points, GridOffset offse
   const char* fn = "HermiteSurface::evaluateOnGrid";
   prepareGrid(fn, points, offset, values.size(), ws, outside);
   if (dPhi.size() != values.size() || dY.size() != values.size())
-    detail::fail(fn, "dPhi and dY must have " + std::to_string(values.size()) + " entries");
+    common::throwInvalidArgument(
+        fn, "dPhi and dY must have " + std::to_string(values.size()) + " entries");
   const int nP = points.nPhi(), nY = points.nY(), cellsPhi = grid_.phiCellCount();
   for (int j = 0; j < nY; ++j) {
     const Eigen::Vector4d up = ws.yBasis.col(j), udp = ws.yDBasis.col(j);

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
+
+#include "pistondyn/common/Validation.h"
 
 namespace pistondyn::mbd {
 namespace {
@@ -13,9 +14,7 @@ namespace {
 }
 
 std::string rowText(std::size_t i, double angle, double p) {
-  std::ostringstream s;
-  s << "row " << i << " (angle " << angle << " deg, pressure " << p << " Pa)";
-  return s.str();
+  return common::message("row ", i, " (angle ", angle, " deg, pressure ", p, " Pa)");
 }
 
 // Second derivatives of the periodic cubic spline through (x_i, y_i), i = 0..n-1,
@@ -71,8 +70,8 @@ std::vector<double> periodicSplineSecondDerivatives(const std::vector<double>& x
 
 CylinderPressureCurve::CylinderPressureCurve(std::vector<double> angle, std::vector<double> p) {
   if (angle.size() != p.size()) {
-    fail("angle and pressure columns differ in length (" + std::to_string(angle.size()) + " vs " +
-         std::to_string(p.size()) + ")");
+    fail(common::message("angle and pressure columns differ in length (", angle.size(), " vs ",
+                         p.size(), ")"));
   }
   for (std::size_t i = 0; i < angle.size(); ++i) {
     if (!std::isfinite(angle[i]))
@@ -81,30 +80,27 @@ CylinderPressureCurve::CylinderPressureCurve(std::vector<double> angle, std::vec
       fail(rowText(i, angle[i], p[i]) + ": absolute pressure must be positive and finite", i);
     }
     if (i > 0 && !(angle[i] > angle[i - 1])) {
-      fail(rowText(i, angle[i], p[i]) + ": crank angle is not increasing (previous row has " +
-               std::to_string(angle[i - 1]) + " deg)",
+      fail(common::message(rowText(i, angle[i], p[i]),
+                           ": crank angle is not increasing (previous row has ", angle[i - 1],
+                           " deg)"),
            i);
     }
   }
   if (angle.size() < 4)
-    fail("needs at least 4 rows, has " + std::to_string(angle.size()));
+    fail(common::message("needs at least 4 rows, has ", angle.size()));
 
   const double peak = *std::max_element(p.begin(), p.end());
   const double span = angle.back() - angle.front();
   const double closureTol = 1e-9 * kCycle_deg;
   if (span > kCycle_deg + closureTol) {
-    std::ostringstream s;
-    s << "the table spans " << span << " deg (" << angle.front() << " to " << angle.back()
-      << "), more than one 720 deg cycle";
-    fail(s.str());
+    fail(common::message("the table spans ", span, " deg (", angle.front(), " to ", angle.back(),
+                         "), more than one 720 deg cycle"));
   }
   if (std::abs(span - kCycle_deg) <= closureTol) {
     if (std::abs(p.back() - p.front()) > 0.005 * peak) {
-      std::ostringstream s;
-      s << "the table is not periodic: pressure at " << angle.back() << " deg (" << p.back()
-        << " Pa) differs from the pressure at " << angle.front() << " deg (" << p.front()
-        << " Pa) by more than 0.5 % of the peak";
-      fail(s.str());
+      fail(common::message("the table is not periodic: pressure at ", angle.back(), " deg (",
+                           p.back(), " Pa) differs from the pressure at ", angle.front(), " deg (",
+                           p.front(), " Pa) by more than 0.5 % of the peak"));
     }
     angle.pop_back();
     p.pop_back();
@@ -114,11 +110,10 @@ CylinderPressureCurve::CylinderPressureCurve(std::vector<double> angle, std::vec
       maxStep = std::max(maxStep, angle[i] - angle[i - 1]);
     const double gap = angle.front() + kCycle_deg - angle.back();
     if (gap > maxStep * (1.0 + 1e-9)) {
-      std::ostringstream s;
-      s << "the table does not cover the 720 deg cycle: it spans " << angle.front() << " to "
-        << angle.back() << " deg, leaving a gap of " << gap
-        << " deg before the cycle repeats (larger than its largest step, " << maxStep << " deg)";
-      fail(s.str());
+      fail(common::message("the table does not cover the 720 deg cycle: it spans ", angle.front(),
+                           " to ", angle.back(), " deg, leaving a gap of ", gap,
+                           " deg before the cycle repeats (larger than its largest step, ", maxStep,
+                           " deg)"));
     }
   }
   angle_ = std::move(angle);
@@ -163,12 +158,12 @@ void CylinderPressureCurve::requirePositiveBetweenKnots() const {
         }
         const double pMin = calcPressure_Pa(0.5 * (lo + hi));
         if (!(pMin > 0.0)) {
-          std::ostringstream msg;
-          msg << "the interpolated pressure falls to " << pMin << " Pa at "
-              << std::fmod(0.5 * (lo + hi), kCycle_deg) << " deg, between row " << i << " ("
-              << angle_[i] << " deg) and the next; the table is too coarse around a steep "
-              << "change - give more points there";
-          fail(msg.str(), i);
+          fail(common::message("the interpolated pressure falls to ", pMin, " Pa at ",
+                               std::fmod(0.5 * (lo + hi), kCycle_deg), " deg, between row ", i,
+                               " (", angle_[i],
+                               " deg) and the next; the table is too coarse around a steep "
+                               "change - give more points there"),
+               i);
         }
       }
       prevX = x;

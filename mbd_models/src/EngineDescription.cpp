@@ -1,8 +1,9 @@
 #include "pistondyn/mbd_models/EngineDescription.h"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
+
+#include "pistondyn/common/Validation.h"
 
 namespace pistondyn::mbd {
 namespace {
@@ -10,10 +11,8 @@ namespace {
 void require(bool ok, const std::string& member, double value, const char* expected) {
   if (ok)
     return;
-  std::ostringstream msg;
-  msg.precision(17);
-  msg << "EngineDescription: " << member << " = " << value << " " << expected;
-  throw std::invalid_argument(msg.str());
+  common::throwInvalidArgument("EngineDescription",
+                               common::message(member, " = ", value, " ", expected));
 }
 
 void requirePositive(double v, const std::string& member) {

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 
+#include "pistondyn/common/Validation.h"
 #include "pistondyn/mbd_models/SliderCrank.h"
 #include "pistondyn/plugin/LinearlyImplicitStepper.h"
 
@@ -28,19 +28,19 @@ void validate(const SimulationSettings& s) {
     fail("startAngle_deg must be within [-720, 720] deg");
   }
   if (s.cycles < 1 || s.cycles > SimulationSettings::kMaxCycles) {
-    fail("cycles must be between 1 and " + std::to_string(SimulationSettings::kMaxCycles));
+    fail(common::message("cycles must be between 1 and ", SimulationSettings::kMaxCycles));
   }
   if (!(s.outputStep_deg >= SimulationSettings::kMinOutputStep_deg) ||
       !std::isfinite(s.outputStep_deg) || s.outputStep_deg > 720.0) {
-    fail("outputStep_deg must be between " +
-         std::to_string(SimulationSettings::kMinOutputStep_deg) + " and 720 deg");
+    fail(common::message("outputStep_deg must be between ", SimulationSettings::kMinOutputStep_deg,
+                         " and 720 deg"));
   }
   if (!s.outputStepDividesCycle()) {
     fail("outputStep_deg must divide 720 deg into a whole number of steps");
   }
   if (s.outputStepsPerCycle() * s.cycles > SimulationSettings::kMaxRows) {
-    fail("cycles x 720 / outputStep_deg exceeds " +
-         std::to_string(static_cast<long>(SimulationSettings::kMaxRows)) + " output rows");
+    fail(common::message("cycles x 720 / outputStep_deg exceeds ",
+                         static_cast<long>(SimulationSettings::kMaxRows), " output rows"));
   }
   if (!(s.accuracy > 0.0 && s.accuracy < 1.0))
     fail("accuracy must be in (0, 1)");
@@ -102,11 +102,9 @@ CycleSimulation::CycleSimulation(PistonAssemblyModel& model, SimulationSettings 
 
 namespace {
 
+// Crank angles in messages: the shortest text that reads back to the same double.
 std::string formatAngle(double deg) {
-  std::ostringstream os;
-  os.precision(6);
-  os << deg;
-  return os.str();
+  return common::formatNumber(deg);
 }
 
 // One interface over Simbody's integrators and LinearlyImplicitStepper: advance the state to
@@ -245,15 +243,14 @@ void landOnCrankAngle(Advancer& integ, const mbd::CrankTrain& ct, double thetaTa
       return;
     const double speed = ct.getCrankSpeed_radps(s);
     if (!(speed > 0.0)) {
-      throw std::runtime_error("the free crank stopped or reversed (speed " +
-                               std::to_string(speed) +
-                               " rad/s at t = " + std::to_string(s.getTime()) +
-                               " s); raise the speed or lower the load");
+      throw std::runtime_error(common::message("the free crank stopped or reversed (speed ", speed,
+                                               " rad/s at t = ", s.getTime(),
+                                               " s); raise the speed or lower the load"));
     }
     t = s.getTime() + err / speed;
   }
-  throw std::runtime_error("could not land on crank angle " +
-                           std::to_string(thetaTarget * 180.0 / M_PI) + " deg");
+  throw std::runtime_error(
+      common::message("could not land on crank angle ", thetaTarget * 180.0 / M_PI, " deg"));
 }
 
 }  // namespace

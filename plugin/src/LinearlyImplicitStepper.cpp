@@ -5,8 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
+
+#include "pistondyn/common/Validation.h"
 
 namespace pistondyn::plugin {
 namespace {
@@ -17,11 +18,9 @@ struct Point {
   Eigen::VectorXd y;
 };
 
+// Times and step sizes in messages: the shortest text that reads back to the same double.
 std::string formatTime(double t) {
-  std::ostringstream os;
-  os.precision(10);
-  os << t;
-  return os.str();
+  return common::formatNumber(t);
 }
 
 }  // namespace

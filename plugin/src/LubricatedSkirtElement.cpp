@@ -103,12 +103,12 @@ void LubricatedSkirtElement::addToModel(const ModelBuildContext& context) {
 
   auto flowFactors = std::make_shared<const lubrication::PatirChengFlowFactors>(
       parameters_.roughness);
-  contact::GreenwoodTrippParameters gt = parameters_.asperity;
+  contact_forces::GreenwoodTrippParameters gt = parameters_.asperity;
   gt.roughnessSurface1_m = parameters_.roughness.rq1_m;  // roughness entered once (liner)
   gt.roughnessSurface2_m = parameters_.roughness.rq2_m;  // (skirt)
   parameters_.asperity = gt;
-  auto contactLaw = std::make_shared<const contact::GreenwoodTrippLaw>(gt);
-  const contact::BoundaryFriction friction(parameters_.boundaryFriction);
+  auto contactLaw = std::make_shared<const contact_forces::GreenwoodTrippLaw>(gt);
+  const contact_forces::BoundaryFriction friction(parameters_.boundaryFriction);
 
   for (int k : {kThrust, kAntiThrust}) {
     skirt::SkirtSideGridParameters g = parameters_.grid;

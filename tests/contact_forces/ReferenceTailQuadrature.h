@@ -12,7 +12,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace pistondyn::contact::test {
+namespace pistondyn::contact_forces::test {
 
 // n-point Gauss–Legendre rule on [−1, 1], nodes by Newton's method on P_n in long double.
 struct GaussLegendreRule {
@@ -124,4 +124,4 @@ class ReferenceTailQuadrature {
   GaussLegendreRule rule_;
 };
 
-}  // namespace pistondyn::contact::test
+}  // namespace pistondyn::contact_forces::test

@@ -9,7 +9,7 @@
 
 #include "pistondyn/contact_forces/BoundaryFriction.h"
 
-namespace pc = pistondyn::contact;
+namespace pc = pistondyn::contact_forces;
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;

@@ -15,7 +15,7 @@
 #include "ReferenceTailQuadrature.h"
 #include "pistondyn/contact_forces/GaussianTailIntegrals.h"
 
-namespace pc = pistondyn::contact;
+namespace pc = pistondyn::contact_forces;
 using pc::TailOrder;
 
 namespace {

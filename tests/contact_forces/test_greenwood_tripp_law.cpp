@@ -11,7 +11,7 @@
 #include "pistondyn/contact_forces/GreenwoodTrippLaw.h"
 #include "pistondyn/contact_forces/PenaltyContactLaw.h"
 
-namespace pc = pistondyn::contact;
+namespace pc = pistondyn::contact_forces;
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;

@@ -12,7 +12,7 @@
 #include "ExpectInvalidArgument.h"
 #include "pistondyn/contact_forces/PenaltyContactLaw.h"
 
-namespace pc = pistondyn::contact;
+namespace pc = pistondyn::contact_forces;
 
 // Past the onset ramp the law is p_ref·(δ/δ_ref)^e (hand calculation):
 //   linear, p_ref = 10 MPa at 1 µm, onset 0.1 µm, gap −0.9 µm: δ = 1.0 µm → 10 MPa

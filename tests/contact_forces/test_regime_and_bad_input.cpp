@@ -14,7 +14,7 @@
 #include "pistondyn/contact_forces/GreenwoodTrippLaw.h"
 #include "pistondyn/contact_forces/PenaltyContactLaw.h"
 
-namespace pc = pistondyn::contact;
+namespace pc = pistondyn::contact_forces;
 using pc::LubricationRegime;
 
 namespace {

@@ -18,7 +18,7 @@
 #include "pistondyn/lubrication/FilmSolver.h"
 #include "pistondyn/lubrication/PatirChengFlowFactors.h"
 
-namespace pc = pistondyn::contact;
+namespace pc = pistondyn::contact_forces;
 namespace pl = pistondyn::lubrication;
 
 namespace {

@@ -1,62 +1,54 @@
 #pragma once
-// Argument checks shared by the pistondyn::skirt sources (private header). Every failure throws
-// std::invalid_argument whose message names the function or parameter struct, the member and
-// what was expected (docs/CONVENTIONS.md).
+// Argument checks shared by the pistondyn::skirt sources (private header), a thin layer over
+// pistondyn::common (one message shape and number format for every module). Every failure
+// throws std::invalid_argument whose message names the function or parameter struct, the
+// member and what was expected (docs/CONVENTIONS.md).
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 
 #include <Eigen/Core>
 
+#include "pistondyn/common/Validation.h"
+
 namespace pistondyn::skirt::detail {
 
 // Names and units are std::string_view so that a passing check builds no string (the per-call
 // checks must not allocate); the message is built only to throw.
 [[noreturn]] inline void fail(std::string_view where, const std::string& what) {
-  throw std::invalid_argument(std::string(where) + ": " + what);
+  common::throwInvalidArgument(where, what);
 }
 
-// Shortest text (15 to 17 significant digits) that reads back to the same double, so that
-// 0.015 prints as 0.015 and not 0.014999999999999999.
+// The shortest text that reads back to the same double (common::formatNumber), so that 0.015
+// prints as 0.015 and not 0.014999999999999999.
 inline std::string str(double v) {
-  char buffer[32];
-  for (int digits = 15; digits <= 17; ++digits) {
-    std::snprintf(buffer, sizeof buffer, "%.*g", digits, v);
-    if (std::strtod(buffer, nullptr) == v || !std::isfinite(v))
-      break;
-  }
-  return buffer;
+  return common::formatNumber(v);
 }
 
 // "name = value unit"
 inline std::string named(std::string_view name, double value, std::string_view unit) {
-  return std::string(name) + " = " + str(value) + (unit.empty() ? "" : " " + std::string(unit));
+  return common::message(name, " = ", value, unit.empty() ? "" : " ", unit);
 }
 
 inline std::string indexed(std::string_view name, Eigen::Index k) {
-  return std::string(name) + "[" + std::to_string(k) + "]";
+  return common::message(name, "[", k, "]");
 }
 
 inline void requireFinite(std::string_view where, std::string_view name, double v,
                           std::string_view unit) {
-  if (!std::isfinite(v))
-    fail(where, named(name, v, unit) + " must be finite");
+  common::requireFinite(v, where, name, unit);
 }
 
 inline void requirePositive(std::string_view where, std::string_view name, double v,
                             std::string_view unit) {
-  if (!(std::isfinite(v) && v > 0.0))
-    fail(where, named(name, v, unit) + " must be positive and finite");
+  common::requirePositiveFinite(v, where, name, unit);
 }
 
 inline void requireNonNegative(std::string_view where, std::string_view name, double v,
                                std::string_view unit) {
-  if (!(std::isfinite(v) && v >= 0.0))
-    fail(where, named(name, v, unit) + " must be non-negative and finite");
+  common::requireNonNegativeFinite(v, where, name, unit);
 }
 
 // Every entry finite; the first offending row is named.

@@ -5,8 +5,8 @@
 #include <string>
 
 #include "Checks.h"
-#include "NodalView.h"
 #include "OutputChecks.h"
+#include "pistondyn/common/NodalField.h"
 
 namespace pistondyn::skirt {
 
@@ -92,8 +92,8 @@ void LinerShape::calcField(double pinHeight_m, double axialVelocity_mps,
   const Eigen::Index nO = static_cast<Eigen::Index>(orders_.size());
   // Per-row coefficients on the stack (at most 13 orders): no allocation per call.
   std::array<double, kMaxBoreDistortionOrder + 1> a{}, b{}, aRate{}, bRate{};
-  auto gapRows = detail::asNodeMatrix(gap_m, nPhi_, nY_);
-  auto rateRows = detail::asNodeMatrix(gapRate_mps, nPhi_, nY_);
+  auto gapRows = common::asGrid(gap_m, nPhi_, nY_);
+  auto rateRows = common::asGrid(gapRate_mps, nPhi_, nY_);
   for (int j = 0; j < nY_; ++j) {
     const double depth = linerTop_m_ - (pinHeight_m + y_m_[j]);
     for (Eigen::Index o = 0; o < nO; ++o) {

@@ -1,7 +1,7 @@
 #include "pistondyn/skirt/SkirtProfile.h"
 
-#include "NodalView.h"
 #include "OutputChecks.h"
+#include "pistondyn/common/NodalField.h"
 
 namespace pistondyn::skirt {
 
@@ -14,7 +14,7 @@ void SkirtProfile::calcField(const SkirtSideGrid& grid, Eigen::Ref<Eigen::ArrayX
   const Eigen::VectorXd& phi = grid.getPhiNodes_rad();
   const Eigen::VectorXd& y = grid.getYNodes_m();
   const Eigen::ArrayXd ovality = phi.unaryExpr([this](double p) { return ovality_.calcDrop_m(p); });
-  auto rows = detail::asNodeMatrix(gap_m, grid.nPhi(), grid.nY());
+  auto rows = common::asGrid(gap_m, grid.nPhi(), grid.nY());
   for (int j = 0; j < grid.nY(); ++j)
     rows.col(j) = ovality + axial_.calcDrop_m(y[j]);
 }

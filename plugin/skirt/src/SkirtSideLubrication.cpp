@@ -42,8 +42,8 @@ Eigen::Matrix<double, 6, 1> stack(const PistonLoads& l) {
 struct SkirtSideLubrication::Impl {
   SkirtSideGrid grid;
   std::shared_ptr<const lubrication::FlowFactorModel> flowFactors;
-  std::shared_ptr<const contact::AsperityContactLaw> contactLaw;
-  contact::BoundaryFriction friction;
+  std::shared_ptr<const contact_forces::AsperityContactLaw> contactLaw;
+  contact_forces::BoundaryFriction friction;
   SkirtLubricationParameters parameters;
   double sigma_m = 0.0, clamp_m = 0.0;
   lubrication::FilmSolver solver;
@@ -96,7 +96,7 @@ struct SkirtSideLubrication::Impl {
             const double n00 = (1 - t) * (1 - u), n10 = t * (1 - u), n01 = (1 - t) * u,
                          n11 = t * u;
             const double hg = n00 * h[k00] + n10 * h[k10] + n01 * h[k01] + n11 * h[k11];
-            const contact::PressureAndSlope ps = contactLaw->calcPressureAndSlope(hg);
+            const contact_forces::PressureAndSlope ps = contactLaw->calcPressureAndSlope(hg);
             const double pInterp = n00 * pNode[k00] + n10 * pNode[k10] + n01 * pNode[k01] +
                                    n11 * pNode[k11];
             const double sInterp = n00 * sNode[k00] + n10 * sNode[k10] + n01 * sNode[k01] +
@@ -128,8 +128,8 @@ struct SkirtSideLubrication::Impl {
   }
 
   Impl(const SkirtSideGrid& g, std::shared_ptr<const lubrication::FlowFactorModel> ff,
-       std::shared_ptr<const contact::AsperityContactLaw> law,
-       const contact::BoundaryFriction& f, const SkirtLubricationParameters& p)
+       std::shared_ptr<const contact_forces::AsperityContactLaw> law,
+       const contact_forces::BoundaryFriction& f, const SkirtLubricationParameters& p)
       : grid(g),
         flowFactors(std::move(ff)),
         contactLaw(std::move(law)),
@@ -176,8 +176,8 @@ struct SkirtSideLubrication::Impl {
 
 SkirtSideLubrication::SkirtSideLubrication(
     const SkirtSideGrid& grid, std::shared_ptr<const lubrication::FlowFactorModel> flowFactors,
-    std::shared_ptr<const contact::AsperityContactLaw> contactLaw,
-    const contact::BoundaryFriction& friction, const SkirtLubricationParameters& parameters)
+    std::shared_ptr<const contact_forces::AsperityContactLaw> contactLaw,
+    const contact_forces::BoundaryFriction& friction, const SkirtLubricationParameters& parameters)
     : impl_(std::make_unique<Impl>(grid, std::move(flowFactors), std::move(contactLaw), friction,
                                    parameters)) {}
 
@@ -325,9 +325,9 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   double hydro = 0.0, mixed = 0.0, boundary = 0.0, wetted = 0.0, maxPc = 0.0;
   for (int k = 0; k < n; ++k) {
     const double ratio = out.contact.filmRatio.data()[k];
-    if (ratio > contact::kMixedRegimeUpperFilmRatio) {
+    if (ratio > contact_forces::kMixedRegimeUpperFilmRatio) {
       hydro += w[k];
-    } else if (ratio > contact::kBoundaryRegimeUpperFilmRatio) {
+    } else if (ratio > contact_forces::kBoundaryRegimeUpperFilmRatio) {
       mixed += w[k];
     } else {
       boundary += w[k];

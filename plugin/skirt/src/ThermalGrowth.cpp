@@ -3,8 +3,8 @@
 #include <string>
 
 #include "Checks.h"
-#include "NodalView.h"
 #include "OutputChecks.h"
+#include "pistondyn/common/NodalField.h"
 
 namespace pistondyn::skirt {
 
@@ -71,7 +71,7 @@ void PistonThermalGrowth::calcField(const SkirtSideGrid& grid,
     return;
   }
   const Eigen::VectorXd& y = grid.getYNodes_m();
-  auto rows = detail::asNodeMatrix(gap_m, grid.nPhi(), grid.nY());
+  auto rows = common::asGrid(gap_m, grid.nPhi(), grid.nY());
   for (int j = 0; j < grid.nY(); ++j)
     rows.col(j).setConstant(calcGapFromTable_m(y[j]));
 }
@@ -116,8 +116,8 @@ void LinerThermalGrowth::calcField(double pinHeight_m, double axialVelocity_mps,
     gapRate_mps.setZero();
     return;
   }
-  auto gapRows = detail::asNodeMatrix(gap_m, nPhi_, y_m_.size());
-  auto rateRows = detail::asNodeMatrix(gapRate_mps, nPhi_, y_m_.size());
+  auto gapRows = common::asGrid(gap_m, nPhi_, static_cast<int>(y_m_.size()));
+  auto rateRows = common::asGrid(gapRate_mps, nPhi_, static_cast<int>(y_m_.size()));
   for (Eigen::Index j = 0; j < y_m_.size(); ++j) {
     const LinerThermalSample s = calcSample(pinHeight_m + y_m_[j]);
     gapRows.col(j).setConstant(s.gap_m);

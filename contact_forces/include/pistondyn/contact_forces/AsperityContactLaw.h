@@ -27,7 +27,7 @@
 
 #include "pistondyn/contact_forces/LubricationRegime.h"
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 
 // Everything a law says about one node.
 struct ContactNodeState {
@@ -103,4 +103,4 @@ class AsperityContactLaw {
   virtual ContactNodeState evalNode(double gap_m) const;
 };
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

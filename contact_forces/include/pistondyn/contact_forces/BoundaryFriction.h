@@ -45,7 +45,7 @@
 
 #include <Eigen/Core>
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 
 enum class FrictionRegularisation {
   Algebraic,  // v/√(v² + v_ε²) (default)
@@ -63,7 +63,7 @@ class BoundaryFriction {
   // Checks the parameters; throws std::invalid_argument naming the bad one.
   explicit BoundaryFriction(const BoundaryFrictionParameters& parameters = {});
 
-  const BoundaryFrictionParameters& parameters() const { return parameters_; }
+  const BoundaryFrictionParameters& getParameters() const { return parameters_; }
 
   // Effective coefficient f·g(|v|) ∈ [0, f) at sliding speed |v| [m/s] ≥ 0 [-].
   double calcEffectiveCoefficient(double slidingSpeed_mps) const;
@@ -121,4 +121,4 @@ class BoundaryFriction {
   double fastPathSpeed_mps_ = 0.0;  // components up to this use |v|² directly
 };
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

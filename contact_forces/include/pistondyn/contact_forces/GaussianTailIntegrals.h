@@ -30,7 +30,7 @@
 
 #include <array>
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 
 // The orders that have exact tables. The value of n is 0.5 * (enumerator).
 enum class TailOrder : int { F0 = 0, F1_2 = 1, F1 = 2, F3_2 = 3, F2 = 4, F5_2 = 5 };
@@ -111,4 +111,4 @@ inline constexpr PolynomialTailFit kPolynomialFitF52{{-0.004, 0.057, -0.296, 0.7
 inline constexpr PolynomialTailFit kPolynomialFitF2{
     {-0.0018, 0.0281, -0.1728, 0.5258, -0.8043, 0.5003}, 2.2945781132122444};
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

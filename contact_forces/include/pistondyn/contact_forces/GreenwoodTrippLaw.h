@@ -38,7 +38,7 @@
 #include "pistondyn/contact_forces/GaussianTailIntegrals.h"
 #include "pistondyn/contact_forces/SurfacePair.h"
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 
 // How F_{5/2} and F_2 are evaluated.
 enum class TailIntegralModel {
@@ -80,7 +80,7 @@ class GreenwoodTrippLaw final : public AsperityContactLaw {
   const char* name() const override { return "GreenwoodTripp"; }
   double compositeSigma_m() const override { return sigma_m_; }
 
-  const GreenwoodTrippParameters& parameters() const { return parameters_; }
+  const GreenwoodTrippParameters& getParameters() const { return parameters_; }
   double effectiveModulus_Pa() const { return effectiveModulus_Pa_; }  // E′ [Pa]
   double coefficientK() const { return coefficientK_; }                // K [-]
   // K·E′ [Pa]: pressure per unit F_{5/2}.
@@ -106,4 +106,4 @@ class GreenwoodTrippLaw final : public AsperityContactLaw {
   double areaScale_ = 0.0;  // π²(ηβσ)²
 };
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

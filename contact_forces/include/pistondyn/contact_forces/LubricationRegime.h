@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 
 enum class LubricationRegime : std::uint8_t { Hydrodynamic = 0, Mixed = 1, Boundary = 2 };
 
@@ -23,4 +23,4 @@ LubricationRegime classifyRegime(double filmRatio);
 // "hydrodynamic", "mixed" or "boundary".
 const char* toString(LubricationRegime regime);
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

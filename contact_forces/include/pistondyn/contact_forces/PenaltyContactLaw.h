@@ -19,7 +19,7 @@
 
 #include "pistondyn/contact_forces/AsperityContactLaw.h"
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 
 struct PenaltyContactParameters {
   double referencePressure_Pa = 10.0e6;    // p_ref > 0 [Pa]; default 10 MPa ...
@@ -37,7 +37,7 @@ class PenaltyContactLaw final : public AsperityContactLaw {
 
   const char* name() const override { return "Penalty"; }
   double compositeSigma_m() const override { return parameters_.compositeRoughness_m; }
-  const PenaltyContactParameters& parameters() const { return parameters_; }
+  const PenaltyContactParameters& getParameters() const { return parameters_; }
 
  protected:
   double evalPressure(double gap_m) const override;
@@ -48,4 +48,4 @@ class PenaltyContactLaw final : public AsperityContactLaw {
   PenaltyContactParameters parameters_;
 };
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

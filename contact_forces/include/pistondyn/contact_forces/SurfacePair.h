@@ -28,7 +28,7 @@
 // E′ = 2E*), so K·E′ is Greenwood & Tripp's coefficient. Pairing K = (8√2/15)… with E*
 // halves the asperity pressure — a mistake found in published codes.
 
-namespace pistondyn::contact {
+namespace pistondyn::contact_forces {
 
 // Isotropic linear-elastic material.
 struct ElasticMaterial {
@@ -59,4 +59,4 @@ double effectiveModulus_Pa(const ElasticMaterial& surface1, const ElasticMateria
 // names `argName` (e.g. "surface1").
 void validateMaterial(const ElasticMaterial& material, const char* where, const char* argName);
 
-}  // namespace pistondyn::contact
+}  // namespace pistondyn::contact_forces

@@ -137,8 +137,10 @@ enum class FastLinearSolver {
   // fill-fraction block is one upwind sweep.
   Multigrid,
 };
-// Grid size from which FastLinearSolver::Automatic picks multigrid: on the skirt benchmark the two
-// cost about the same at 48 x 36 nodes (1728); the factorisation wins below, multigrid above.
+// Grid size from which FastLinearSolver::Automatic picks multigrid: on smaller grids the lagged
+// factorisation costs less per solve, on larger ones multigrid does (multigrid's cost grows
+// linearly with the node count, the factorisation's faster). The crossover measured on the skirt
+// benchmark is in BENCHMARKS.md.
 constexpr int kMultigridMinNodes = 2000;
 
 // Warm start that the caller keeps between steps (e.g. in the Simbody State cache). Small,
@@ -155,7 +157,7 @@ struct FilmSolverOptions {
   double tolerance = 1e-8;  // relative residual (see top of file), default 1e-8
   int maxSweeps = 200000;   // Gauss-Seidel sweeps before giving up, default 200000
   // SOR factor of the pressure update, (0, 2), default 1.8. The best value grows with the grid
-  // (skirt benchmark: 1.84 at 64 x 48, 1.92 at 128 x 96; BENCHMARKS.md).
+  // (the best values found on the skirt benchmark are in BENCHMARKS.md).
   double overRelaxation = 1.8;
   double fillRelaxation = 1.0;      // relaxation of the fill-fraction update (JFO GS), (0, 1]
   int maxActiveSetIterations = 40;  // active-set (Newton) steps of the fast solver, default 40

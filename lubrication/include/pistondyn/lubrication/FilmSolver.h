@@ -23,8 +23,8 @@
 //    The default picks multigrid from kMultigridMinNodes nodes up, where it is the faster one.
 //    The lagged part (multigrid coarse levels, factorisation) is refreshed when a Krylov solve
 //    costs more than the running average since the last refresh; while the active set still
-//    moves, solves are inexact. Warm-started in an engine simulation a call typically costs 1-3
-//    active-set steps and 6-13 Krylov iterations (BENCHMARKS.md).
+//    moves, solves are inexact. Warm-started in an engine simulation a call typically takes a
+//    few active-set steps of a few Krylov iterations each (measured counts: BENCHMARKS.md).
 //    If the iteration does not settle, the reference solver finishes from its iterate
 //    (FilmSolverOptions::fallbackToReference, reported in FilmResult::usedFallback).
 //  Both enforce p >= p_cav, 0 <= theta <= 1 and p (1 - theta) = 0 exactly; they differ only in

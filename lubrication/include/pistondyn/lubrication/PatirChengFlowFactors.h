@@ -19,7 +19,6 @@
 #include "pistondyn/lubrication/FlowFactorModel.h"
 #include "pistondyn/lubrication/PatirChengExpectedGap.h"
 #include "pistondyn/lubrication/PatirChengFactors.h"
-#include "pistondyn/lubrication/PatirChengRows.h"
 
 namespace pistondyn::lubrication {
 
@@ -101,11 +100,18 @@ class PatirChengFlowFactors final : public FlowFactorModel {
   double varianceRatio1_ = 0.0;  // Rq1^2 / sigma^2
   double varianceRatio2_ = 0.0;  // Rq2^2 / sigma^2
   double gammaComposite_ = 1.0;
-  // Interpolation brackets in ln(gamma), fixed at construction.
-  patir_cheng::detail::GammaBracket bracketSliding_;  // gammaC
-  patir_cheng::detail::GammaBracket bracketCross_;    // 1 / gammaC
-  patir_cheng::detail::GammaBracket bracket1_;        // gamma1
-  patir_cheng::detail::GammaBracket bracket2_;        // gamma2
+  // Interpolation in ln(gamma) between two neighbouring tabulated rows of the Patir & Cheng
+  // fits, value = (1 - wHi) f(lo) + wHi f(hi); lo == hi (wHi = 0) at a tabulated gamma or
+  // when clamped to the table's range. Fixed at construction (PatirChengFlowFactors.cpp).
+  struct RowBracket {
+    int lo = 3;  // row index (3 is gamma = 1)
+    int hi = 3;
+    double wHi = 0.0;
+  };
+  RowBracket bracketSliding_;  // gammaC
+  RowBracket bracketCross_;    // 1 / gammaC
+  RowBracket bracket1_;        // gamma1
+  RowBracket bracket2_;        // gamma2
   // Bracket equalities, so that calcFactors blends each row function once per bracket.
   bool crossEqualsSliding_ = false;      // bracketCross_ == bracketSliding_ (gammaC = 1)
   bool bracket2EqualsBracket1_ = false;  // bracket2_ == bracket1_ (gamma1 = gamma2)

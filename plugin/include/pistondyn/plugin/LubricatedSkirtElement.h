@@ -71,8 +71,8 @@ struct LubricatedSkirtParameters {
   lubrication::OilSpec oil;          // oil data (grade)
   double oilTemperature_degC = 105.0;  // film temperature [degC]
   lubrication::PatirChengParameters roughness;         // rq1 = liner, rq2 = skirt
-  contact::GreenwoodTrippParameters asperity;   // its roughness is set from `roughness`
-  contact::BoundaryFrictionParameters boundaryFriction;  // f_dry = 0.1
+  contact_forces::GreenwoodTrippParameters asperity;   // its roughness is set from `roughness`
+  contact_forces::BoundaryFrictionParameters boundaryFriction;  // f_dry = 0.1
   skirt::SkirtLubricationParameters lubrication;       // cavitation model, solver, wear
   SupplyFilm supplyFilm;                               // inlet oil film
   bool tertiaryMotion = false;  // must match EngineDescription::tertiaryMotion

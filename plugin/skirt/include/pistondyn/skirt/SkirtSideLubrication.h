@@ -1,8 +1,8 @@
 #pragma once
 // Film and asperity contact on one skirt side for one force evaluation: the gap fields of a
 // GapAssembly go in, the film (lubrication::FilmSolver), the asperity contact
-// (contact::AsperityContactLaw) and the boundary friction
-// (contact::BoundaryFriction) are evaluated on the side's grid, and the loads on the
+// (contact_forces::AsperityContactLaw) and the boundary friction
+// (contact_forces::BoundaryFriction) are evaluated on the side's grid, and the loads on the
 // piston come out with their derivatives with respect to the pose and its rates.
 //
 // Surfaces and velocities (FilmProblem.h, SurfacePair.h): the grid is attached to the skirt
@@ -98,7 +98,7 @@ struct SkirtSideInputs {
 
 struct SkirtSideResults {
   lubrication::FilmResult film;        // pressure, fill fraction, film shear, diagnostics
-  contact::ContactField contact;  // p_c, dp_c/dh, area fraction, h/sigma, regime
+  contact_forces::ContactField contact;  // p_c, dp_c/dh, area fraction, h/sigma, regime
   Eigen::ArrayXd filmGap_m;            // clamped film gap h_f [m]
   Eigen::ArrayXd boundaryShearAxial_Pa, boundaryShearCircumferential_Pa;  // tau_b [Pa]
   Eigen::ArrayXd normalPressure_Pa;    // p_film + p_c - edgePressure [Pa] (total traction)
@@ -140,8 +140,8 @@ class SkirtSideLubrication {
   // Throws std::invalid_argument naming the member for bad parameters or a null model.
   SkirtSideLubrication(const SkirtSideGrid& grid,
                        std::shared_ptr<const lubrication::FlowFactorModel> flowFactors,
-                       std::shared_ptr<const contact::AsperityContactLaw> contactLaw,
-                       const contact::BoundaryFriction& friction,
+                       std::shared_ptr<const contact_forces::AsperityContactLaw> contactLaw,
+                       const contact_forces::BoundaryFriction& friction,
                        const SkirtLubricationParameters& parameters);
   ~SkirtSideLubrication();
   SkirtSideLubrication(SkirtSideLubrication&&) noexcept;

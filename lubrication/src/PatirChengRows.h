@@ -1,7 +1,9 @@
 #pragma once
-// Implementation detail of pistondyn::lubrication (not for users): the per-row evaluation of the
-// Patir & Cheng fits and the interpolation weights in ln(gamma), so that PatirChengFlowFactors can
-// bracket its Peklenik numbers once at construction instead of at every node.
+// Private to pistondyn::lubrication (lubrication/src, not installed): the per-row evaluation of
+// the Patir & Cheng fits and the interpolation weights in ln(gamma), so that
+// PatirChengFlowFactors can bracket its Peklenik numbers once at construction instead of at
+// every node. PatirChengFlowFactors.h stores the brackets as plain ints and doubles
+// (PatirChengFlowFactors::RowBracket) so that no public header needs this one.
 
 namespace pistondyn::lubrication::patir_cheng::detail {
 

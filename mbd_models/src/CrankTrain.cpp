@@ -91,7 +91,8 @@ CrankTrain::CrankTrain(SimTK::SimbodyMatterSubsystem& matter, SimTK::GeneralForc
   auto slider = [tertiary](MobilizedBody& parent, const Transform& inParent,
                            const SimTK::Body::Rigid& body,
                            const Transform& inBody) -> MobilizedBody {
-    if (tertiary) return MobilizedBody::Cylinder(parent, inParent, body, inBody);
+    if (tertiary)
+      return MobilizedBody::Cylinder(parent, inParent, body, inBody);
     return MobilizedBody::Pin(parent, inParent, body, inBody);
   };
   switch (engine_.pinJoint) {

@@ -26,7 +26,8 @@ SimTK::SpatialVec IdealLinerGuide::calcForceOnLiner(const SimTK::State& s) const
   const SimTK::MobilizedBody& piston = crankTrain_->getPiston();
   SimTK::SpatialVec total(SimTK::Vec3(0), SimTK::Vec3(0));
   for (const SimTK::Constraint* c : {&lateral_, &tilt_, &transverse_}) {
-    if (c->isEmptyHandle()) continue;
+    if (c->isEmptyHandle())
+      continue;
     // Simbody reports constraint forces with the opposite sign of applied forces
     // (they sit on the left-hand side of its equations of motion), so these are
     // already the forces the piston exerts on the constraint, i.e. on the liner.

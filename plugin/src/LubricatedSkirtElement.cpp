@@ -12,7 +12,9 @@ namespace {
 
 constexpr int kThrust = 0, kAntiThrust = 1;
 
-int sideIndex(SkirtSide side) { return side == SkirtSide::Thrust ? kThrust : kAntiThrust; }
+int sideIndex(SkirtSide side) {
+  return side == SkirtSide::Thrust ? kThrust : kAntiThrust;
+}
 
 [[noreturn]] void badParameter(const std::string& what) {
   throw std::invalid_argument("LubricatedSkirtParameters: " + what);
@@ -26,18 +28,22 @@ Eigen::Vector3d poseForces(const Eigen::Matrix<double, 6, 1>& loads) {
 }  // namespace
 
 double SupplyFilm::calcThickness_m(double angle_deg) const {
-  if (crankAngle_deg.empty()) return constant_m;
+  if (crankAngle_deg.empty())
+    return constant_m;
   const std::size_t n = crankAngle_deg.size();
   double a = std::fmod(angle_deg, 720.0);
-  if (a < 0.0) a += 720.0;
+  if (a < 0.0)
+    a += 720.0;
   // Periodic linear interpolation: the segment after the last point wraps to the first.
   const auto it = std::upper_bound(crankAngle_deg.begin(), crankAngle_deg.end(), a);
   const std::size_t hi = static_cast<std::size_t>(it - crankAngle_deg.begin()) % n;
   const std::size_t lo = (hi + n - 1) % n;
   const double a0 = crankAngle_deg[lo];
   double a1 = crankAngle_deg[hi];
-  if (a1 <= a0) a1 += 720.0;
-  if (a < a0) a += 720.0;
+  if (a1 <= a0)
+    a1 += 720.0;
+  if (a < a0)
+    a += 720.0;
   const double w = (a - a0) / (a1 - a0);
   return (1.0 - w) * thickness_m[lo] + w * thickness_m[hi];
 }
@@ -56,7 +62,8 @@ LubricatedSkirtElement::LubricatedSkirtElement(const LubricatedSkirtParameters& 
     badParameter("oilTemperature_degC must be finite and above absolute zero");
   const SupplyFilm& f = p.supplyFilm;
   if (f.crankAngle_deg.empty()) {
-    if (!(f.constant_m > 0.0)) badParameter("supplyFilm.constant_m must be positive (or +inf)");
+    if (!(f.constant_m > 0.0))
+      badParameter("supplyFilm.constant_m must be positive (or +inf)");
   } else {
     if (f.crankAngle_deg.size() != f.thickness_m.size() || f.crankAngle_deg.size() < 2)
       badParameter("supplyFilm table: crank angles and thicknesses need the same size, >= 2");
@@ -85,8 +92,8 @@ void LubricatedSkirtElement::addToModel(const ModelBuildContext& context) {
         std::string(engine.tertiaryMotion ? "on" : "off") + " but the element has it " +
         (parameters_.tertiaryMotion ? "on" : "off") + " (set both the same)");
   }
-  viscosity_Pas_ = lubrication::Oil(parameters_.oil)
-                       .calcDynamicViscosity_Pas(parameters_.oilTemperature_degC);
+  viscosity_Pas_ =
+      lubrication::Oil(parameters_.oil).calcDynamicViscosity_Pas(parameters_.oilTemperature_degC);
 
   // The engine fills in what the deck does not repeat: radius, skirt range, travel, liner top.
   const mbd::SliderCrank kinematics(engine.geometry);
@@ -101,8 +108,8 @@ void LubricatedSkirtElement::addToModel(const ModelBuildContext& context) {
   }
   parameters_.gap = gap;
 
-  auto flowFactors = std::make_shared<const lubrication::PatirChengFlowFactors>(
-      parameters_.roughness);
+  auto flowFactors =
+      std::make_shared<const lubrication::PatirChengFlowFactors>(parameters_.roughness);
   contact_forces::GreenwoodTrippParameters gt = parameters_.asperity;
   gt.roughnessSurface1_m = parameters_.roughness.rq1_m;  // roughness entered once (liner)
   gt.roughnessSurface2_m = parameters_.roughness.rq2_m;  // (skirt)
@@ -181,8 +188,10 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
                                " deg: " + e.what());
     }
     ++filmSolves_;
-    if (out.film.usedFallback) ++filmFallbacks_;
-    if (massConserving) fill.setUpdateValue(s, out.film.fillFraction());
+    if (out.film.usedFallback)
+      ++filmFallbacks_;
+    if (massConserving)
+      fill.setUpdateValue(s, out.film.fillFraction());
 
     LubricatedSkirtResults::Side& side = r.sides[k];
     side.hydrodynamic = out.hydrodynamicLoads;
@@ -216,8 +225,8 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
   if (parameters_.tertiaryMotion) {
     const double excess = std::abs(pose.transverse_m) - parameters_.pinRetainerPlay_m;
     if (excess > 0.0) {
-      r.retainerForce_N = -std::copysign(parameters_.pinRetainerStiffness_Npm * excess,
-                                         pose.transverse_m);
+      r.retainerForce_N =
+          -std::copysign(parameters_.pinRetainerStiffness_Npm * excess, pose.transverse_m);
       retainerStiffness = parameters_.pinRetainerStiffness_Npm;
     }
   }
@@ -239,9 +248,8 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
   // Secondary kinetic energy (slap tracking).
   const double mass = engine.mass.piston.mass_kg + engine.mass.pin.mass_kg;
   const double vG = pose.lateralRate_mps + engine.mass.piston.comY_m * pose.tiltRate_radps;
-  r.secondaryKineticEnergy_J = 0.5 * mass * vG * vG +
-                               0.5 * engine.mass.piston.inertiaZZ_kgm2 * pose.tiltRate_radps *
-                                   pose.tiltRate_radps;
+  r.secondaryKineticEnergy_J = 0.5 * mass * vG * vG + 0.5 * engine.mass.piston.inertiaZZ_kgm2 *
+                                                          pose.tiltRate_radps * pose.tiltRate_radps;
   SlapTracker next = slap_.getValue(s);
   const int direction = vG > 0.0 ? 1 : (vG < 0.0 ? -1 : 0);
   if (next.direction == 0) {
@@ -294,7 +302,8 @@ double LubricatedSkirtElement::getSideForce_N(const SimTK::State& s) const {
 double LubricatedSkirtElement::getFrictionForce_N(const SimTK::State& s) const {
   const LubricatedSkirtResults& r = getResults(s);
   double f = 0.0;
-  for (const auto& side : r.sides) f += side.hydrodynamicFrictionAxial_N + side.asperityFrictionAxial_N;
+  for (const auto& side : r.sides)
+    f += side.hydrodynamicFrictionAxial_N + side.asperityFrictionAxial_N;
   return f;
 }
 
@@ -325,14 +334,16 @@ long LubricatedSkirtElement::getSlapEventCount(const SimTK::State& s) const {
 }
 
 std::optional<double> LubricatedSkirtElement::getHotRunningClearance_m() const {
-  if (!workspace_->gap[kThrust]) return std::nullopt;
+  if (!workspace_->gap[kThrust])
+    return std::nullopt;
   return std::min(workspace_->gap[kThrust]->getHotRunningClearance().clearance_m,
                   workspace_->gap[kAntiThrust]->getHotRunningClearance().clearance_m);
 }
 
 const skirt::GapAssembly& LubricatedSkirtElement::getGapAssembly(SkirtSide side) const {
   const auto& g = workspace_->gap[sideIndex(side)];
-  if (!g) throw std::logic_error("LubricatedSkirtElement: not added to a model yet");
+  if (!g)
+    throw std::logic_error("LubricatedSkirtElement: not added to a model yet");
   return *g;
 }
 
@@ -413,7 +424,8 @@ ElementOutputs LubricatedSkirtElement::getOutputs() const {
                  [side, k](S s) { return side(s, k).mixedShare; }});
     o.push_back({"boundary_share_" + n, "1", "area share with h/sigma <= 1, " + n + " side",
                  [side, k](S s) { return side(s, k).boundaryShare; }});
-    o.push_back({"wetted_share_" + n, "1", "area share with oil (fill fraction > 0), " + n + " side",
+    o.push_back({"wetted_share_" + n, "1",
+                 "area share with oil (fill fraction > 0), " + n + " side",
                  [side, k](S s) { return side(s, k).wettedShare; }});
   }
   o.push_back({"secondary_kinetic_energy", "mJ",
@@ -421,10 +433,10 @@ ElementOutputs LubricatedSkirtElement::getOutputs() const {
                [this](S s) { return 1e3 * getResults(s).secondaryKineticEnergy_J; }});
   o.push_back({"slap_energy", "mJ", "impact kinetic energy of the last completed slap event",
                [this](S s) { return 1e3 * slap_.getValue(s).lastEvent_J; }});
-  o.push_back({"wear_rate", "mm3ph", "Archard wear volume rate of the liner, both sides",
-               [side](S s) {
-                 return 3.6e12 * (side(s, kThrust).wearRate_m3ps + side(s, kAntiThrust).wearRate_m3ps);
-               }});
+  o.push_back(
+      {"wear_rate", "mm3ph", "Archard wear volume rate of the liner, both sides", [side](S s) {
+         return 3.6e12 * (side(s, kThrust).wearRate_m3ps + side(s, kAntiThrust).wearRate_m3ps);
+       }});
   // A fully flooded skirt (infinite supply) has no supply column: outputs are finite.
   const SupplyFilm& supply = parameters_.supplyFilm;
   if (!supply.crankAngle_deg.empty() || std::isfinite(supply.constant_m)) {

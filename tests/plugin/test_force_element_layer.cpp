@@ -117,6 +117,31 @@ TEST(ElementCache, ResultsArePerState) {
   EXPECT_NEAR(gas.getResults(a).cylinderPressure_Pa, pa, 0.0);
 }
 
+// A copy of a realized state, moved to another time and crank angle, must not keep the
+// copied cache values (Simbody 3.7 copies cache entries with the state; ElementCache.h).
+// The stepper does exactly this: it copies the accepted, realized state and moves the copy.
+TEST(ElementCache, CopyOfARealizedStateRecomputesAfterItMoves) {
+  plugin::PistonAssemblyModel m(testEngine());
+  m.addElement(std::make_unique<plugin::GasForceElement>(testPressure(), 1e5));
+  m.addElement(std::make_unique<LateralPush>(0.0));
+  const auto& gas = m.getElementAs<plugin::GasForceElement>("gas_force");
+  const auto& system = m.getSystem();
+  SimTK::State a = m.getDefaultState();
+  m.getCrankTrain().setPose(a, 10.0 * M_PI / 180.0);
+  system.prescribe(a);
+  system.realize(a, SimTK::Stage::Acceleration);
+  ASSERT_NEAR(gas.getResults(a).cylinderPressure_Pa, testPressure().calcPressure_Pa(10.0), 1e-6);
+  for (double angle : {11.0, 12.0, 200.0}) {
+    SimTK::State b = a;  // copy of the realized state
+    SimTK::State c = b;  // and a copy of the copy, as the stepper makes them
+    m.getCrankTrain().setPose(c, angle * M_PI / 180.0);
+    system.prescribe(c);
+    system.realize(c, SimTK::Stage::Acceleration);
+    EXPECT_NEAR(gas.getResults(c).cylinderPressure_Pa, testPressure().calcPressure_Pa(angle), 1e-6)
+        << "stale cache value at " << angle << " deg";
+  }
+}
+
 // A free crank with a flywheel and no load: with the ideal guide doing no work and
 // no load torque, the total mechanical energy changes only by the gas work; check
 // energy conservation with the gas force removed (pure flywheel + inertia + gravity).

@@ -10,7 +10,9 @@
 namespace pistondyn::skirt {
 namespace {
 
-const char* sideName(SkirtSide s) { return s == SkirtSide::Thrust ? "thrust" : "anti-thrust"; }
+const char* sideName(SkirtSide s) {
+  return s == SkirtSide::Thrust ? "thrust" : "anti-thrust";
+}
 
 [[noreturn]] void bad(const std::string& what) {
   throw std::invalid_argument("SkirtSideLubrication: " + what);
@@ -18,9 +20,8 @@ const char* sideName(SkirtSide s) { return s == SkirtSide::Thrust ? "thrust" : "
 
 // Gauss-Legendre nodes and weights on [0, 1], 6 points (exact for degree 11).
 constexpr int kGauss = 6;
-constexpr double kGaussX[kGauss] = {0.033765242898423975, 0.16939530676686776,
-                                    0.38069040695840156,  0.61930959304159845,
-                                    0.83060469323313224,  0.96623475710157603};
+constexpr double kGaussX[kGauss] = {0.033765242898423975, 0.16939530676686776, 0.38069040695840156,
+                                    0.61930959304159845,  0.83060469323313224, 0.96623475710157603};
 constexpr double kGaussW[kGauss] = {0.085662246189585178, 0.18038078652406930,
                                     0.23395696728634552,  0.23395696728634552,
                                     0.18038078652406930,  0.085662246189585178};
@@ -51,14 +52,14 @@ struct SkirtSideLubrication::Impl {
   lubrication::FilmState warmStart;
   bool haveWarmStart = false;
   Eigen::ArrayXd clampSlope, pressureColumn, zero;
-  Eigen::ArrayXd couetteY, couetteX;  // film shear on the skirt (Couette + Poiseuille)
+  Eigen::ArrayXd couetteY, couetteX;     // film shear on the skirt (Couette + Poiseuille)
   Eigen::ArrayXXd boundaryX, boundaryY;  // boundary shear as grid-shaped scratch
   // Outward normal of the side's centre line (cos phi_c, sin phi_c) in (x, z).
   double normalX = 1.0;
   // Contact quadrature results (integrateContact).
-  PistonLoads contactCorrection;                  // exact minus nodal-interpolant loads
+  PistonLoads contactCorrection;  // exact minus nodal-interpolant loads
   Eigen::Matrix<double, 6, 3> contactStiffnessCorrection = Eigen::Matrix<double, 6, 3>::Zero();
-  double contactPressureIntegralCorrection_N = 0.0;  // of int p_c dA
+  double contactPressureIntegralCorrection_N = 0.0;            // of int p_c dA
   Eigen::Vector2d shearPerPressure = Eigen::Vector2d::Zero();  // boundary (x, y) shear per Pa
 
   // The asperity pressure p_c(h) is steep (Greenwood-Tripp: F_{5/2}), and a contact at a
@@ -85,7 +86,8 @@ struct SkirtSideLubrication::Impl {
     for (int j = 0; j + 1 < nY; ++j) {
       for (int i = 0; i + 1 < nPhi; ++i) {
         const int k00 = i + nPhi * j, k10 = k00 + 1, k01 = k00 + nPhi, k11 = k01 + 1;
-        if (std::min({h[k00], h[k10], h[k01], h[k11]}) >= limit) continue;
+        if (std::min({h[k00], h[k10], h[k01], h[k11]}) >= limit)
+          continue;
         const double dphi = phiN[i + 1] - phiN[i], dy = yN[j + 1] - yN[j];
         const double area = R * dphi * dy;
         for (int a = 0; a < kGauss; ++a) {
@@ -93,21 +95,20 @@ struct SkirtSideLubrication::Impl {
           const double c = std::cos(phi), sn = std::sin(phi);
           for (int b = 0; b < kGauss; ++b) {
             const double u = kGaussX[b], y = yN[j] + u * dy;
-            const double n00 = (1 - t) * (1 - u), n10 = t * (1 - u), n01 = (1 - t) * u,
-                         n11 = t * u;
+            const double n00 = (1 - t) * (1 - u), n10 = t * (1 - u), n01 = (1 - t) * u, n11 = t * u;
             const double hg = n00 * h[k00] + n10 * h[k10] + n01 * h[k01] + n11 * h[k11];
             const contact_forces::PressureAndSlope ps = contactLaw->calcPressureAndSlope(hg);
-            const double pInterp = n00 * pNode[k00] + n10 * pNode[k10] + n01 * pNode[k01] +
-                                   n11 * pNode[k11];
-            const double sInterp = n00 * sNode[k00] + n10 * sNode[k10] + n01 * sNode[k01] +
-                                   n11 * sNode[k11];
+            const double pInterp =
+                n00 * pNode[k00] + n10 * pNode[k10] + n01 * pNode[k01] + n11 * pNode[k11];
+            const double sInterp =
+                n00 * sNode[k00] + n10 * sNode[k10] + n01 * sNode[k01] + n11 * sNode[k11];
             const double wgt = kGaussW[a] * kGaussW[b] * area;
             const double dp = (ps.pressure_Pa - pInterp) * wgt;
             contactPressureIntegralCorrection_N += dp;
             // Normal pressure, axial and circumferential boundary shear (SkirtSideGrid.h).
             Eigen::Matrix<double, 6, 1> kernel;
-            kernel << -c + tx * (-sn), ty, -sn + tx * c,
-                -y * sn - R * sn * ty + tx * y * c, -R * tx, y * c + R * c * ty + tx * y * sn;
+            kernel << -c + tx * (-sn), ty, -sn + tx * c, -y * sn - R * sn * ty + tx * y * c,
+                -R * tx, y * c + R * c * ty + tx * y * sn;
             contactCorrection.force_N += dp * kernel.head<3>();
             contactCorrection.moment_Nm += dp * kernel.tail<3>();
             // dh/dpose at the point, exactly: -cos phi, -y cos(alpha) cos phi (~ -y cos phi,
@@ -136,8 +137,10 @@ struct SkirtSideLubrication::Impl {
         friction(f),
         parameters(p),
         solver(p.solver) {
-    if (!flowFactors) bad("flowFactors is null");
-    if (!contactLaw) bad("contactLaw is null");
+    if (!flowFactors)
+      bad("flowFactors is null");
+    if (!contactLaw)
+      bad("contactLaw is null");
     if (!(p.clampFraction > 0.0) || !std::isfinite(p.clampFraction))
       bad("clampFraction must be positive and finite");
     if (!(p.minimumClampGap_m > 0.0) || !std::isfinite(p.minimumClampGap_m))
@@ -154,7 +157,8 @@ struct SkirtSideLubrication::Impl {
         << lawSigma << " m differ: enter one roughness pair for both";
       bad(m.str());
     }
-    if (sigma_m == 0.0) sigma_m = lawSigma;
+    if (sigma_m == 0.0)
+      sigma_m = lawSigma;
     clamp_m = std::max(p.clampFraction * sigma_m, p.minimumClampGap_m);
     normalX = grid.getSide() == SkirtSide::Thrust ? 1.0 : -1.0;
 
@@ -185,13 +189,21 @@ SkirtSideLubrication::~SkirtSideLubrication() = default;
 SkirtSideLubrication::SkirtSideLubrication(SkirtSideLubrication&&) noexcept = default;
 SkirtSideLubrication& SkirtSideLubrication::operator=(SkirtSideLubrication&&) noexcept = default;
 
-const SkirtSideGrid& SkirtSideLubrication::getGrid() const { return impl_->grid; }
+const SkirtSideGrid& SkirtSideLubrication::getGrid() const {
+  return impl_->grid;
+}
 const SkirtLubricationParameters& SkirtSideLubrication::getParameters() const {
   return impl_->parameters;
 }
-double SkirtSideLubrication::getCompositeSigma_m() const { return impl_->sigma_m; }
-double SkirtSideLubrication::getClampGap_m() const { return impl_->clamp_m; }
-void SkirtSideLubrication::resetWarmStart() { impl_->haveWarmStart = false; }
+double SkirtSideLubrication::getCompositeSigma_m() const {
+  return impl_->sigma_m;
+}
+double SkirtSideLubrication::getClampGap_m() const {
+  return impl_->clamp_m;
+}
+void SkirtSideLubrication::resetWarmStart() {
+  impl_->haveWarmStart = false;
+}
 
 void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in,
                                  SkirtSideResults& out) {
@@ -208,7 +220,8 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   if (!std::isfinite(in.slidingVelocityAxial_mps) ||
       !std::isfinite(in.slidingVelocityCircumferential_mps))
     bad("inputs' sliding velocities must be finite");
-  if (!(in.supplyFilm_m > 0.0)) bad("inputs.supplyFilm_m must be positive (or +inf)");
+  if (!(in.supplyFilm_m > 0.0))
+    bad("inputs.supplyFilm_m must be positive (or +inf)");
   if (in.squeezeColumns < 0 || in.squeezeColumns > 3)
     bad("inputs.squeezeColumns must be 0..3");
   if (!gap.gap_m.allFinite() || !gap.gapRate_mps.allFinite())
@@ -227,14 +240,15 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   p.squeezeBasis.resize(n, in.squeezeColumns);
   for (int c = 0; c < in.squeezeColumns; ++c)
     p.squeezeBasis.col(c) = (gap.squeezeBasis.col(c).array() * m.clampSlope).matrix();
-  p.slidingVelocity_mps = Eigen::Vector2d(in.slidingVelocityCircumferential_mps,
-                                          in.slidingVelocityAxial_mps);
+  p.slidingVelocity_mps =
+      Eigen::Vector2d(in.slidingVelocityCircumferential_mps, in.slidingVelocityAxial_mps);
   p.viscosity_Pas = in.viscosity_Pas;
   p.boundary.yMin.supplyFilm_m = in.supplyFilm_m;
   p.boundary.yMax.supplyFilm_m = in.supplyFilm_m;
   if (p.cavitation == lubrication::CavitationModel::MassConserving) {
     if (in.previousFillFraction != nullptr && in.previousFillFraction->size() > 0) {
-      if (in.previousFillFraction->size() != n) bad("inputs.previousFillFraction has the wrong size");
+      if (in.previousFillFraction->size() != n)
+        bad("inputs.previousFillFraction has the wrong size");
       p.previousFillFraction = *in.previousFillFraction;
     } else {
       p.previousFillFraction.resize(0);
@@ -261,8 +275,7 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   m.contactLaw->calcField(nominal, out.contact);
   const Eigen::Map<const Eigen::ArrayXd> pc(out.contact.pressure_Pa.data(), n);
   const Eigen::Vector2d skirtVelocity = -p.slidingVelocity_mps;
-  m.friction.calcShearStressField(out.contact.pressure_Pa, skirtVelocity, m.boundaryX,
-                                  m.boundaryY);
+  m.friction.calcShearStressField(out.contact.pressure_Pa, skirtVelocity, m.boundaryX, m.boundaryY);
   out.boundaryShearCircumferential_Pa = Eigen::Map<const Eigen::ArrayXd>(m.boundaryX.data(), n);
   out.boundaryShearAxial_Pa = Eigen::Map<const Eigen::ArrayXd>(m.boundaryY.data(), n);
 
@@ -294,8 +307,8 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   const Eigen::Map<const Eigen::ArrayXd> slope(out.contact.dPressure_dGap_PaPerM.data(), n);
   for (int c = 0; c < 3; ++c) {
     m.pressureColumn = slope * gap.dGap_dPose.col(c).array();
-    out.dLoads_dPose.col(c) = stack(grid.calcLoadsOnPiston(m.pressureColumn)) +
-                              m.contactStiffnessCorrection.col(c);
+    out.dLoads_dPose.col(c) =
+        stack(grid.calcLoadsOnPiston(m.pressureColumn)) + m.contactStiffnessCorrection.col(c);
   }
 
   // Figures.
@@ -320,8 +333,8 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   out.minFilmThickness_m = gap.gap_m.minCoeff(&kMin);
   out.minFilmPhi_rad = grid.getNodePhi_rad()[kMin];
   out.minFilmY_m = grid.getNodeY_m()[kMin];
-  out.minGapOverSigma = m.sigma_m > 0.0 ? out.minFilmThickness_m / m.sigma_m
-                                        : std::numeric_limits<double>::max();
+  out.minGapOverSigma =
+      m.sigma_m > 0.0 ? out.minFilmThickness_m / m.sigma_m : std::numeric_limits<double>::max();
   double hydro = 0.0, mixed = 0.0, boundary = 0.0, wetted = 0.0, maxPc = 0.0;
   for (int k = 0; k < n; ++k) {
     const double ratio = out.contact.filmRatio.data()[k];
@@ -332,7 +345,8 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
     } else {
       boundary += w[k];
     }
-    if (film.fillFraction()[k] > 0.0) wetted += w[k];
+    if (film.fillFraction()[k] > 0.0)
+      wetted += w[k];
     maxPc = std::max(maxPc, pc[k]);
   }
   out.hydrodynamicShare = hydro / area;

@@ -27,12 +27,19 @@
 
 namespace pistondyn::plugin {
 
+// Why a stamp besides Simbody's own validity: Simbody 3.7 copies a State's cache entries
+// with it, and a lazy entry copied from a state realized beyond its stage can read as valid
+// in the copy after the copy's time and q have changed (found when a stepper copied an
+// accepted, realized state and then moved the copy to the next step: the gas force kept the
+// previous crank angle's value). Each value therefore carries the time and Simbody's value
+// versions of q, u and z it was computed at, and is recomputed when they differ.
 template <class T>
 class ElementCache {
  public:
   void allocate(ElementStateAllocator& a, SimTK::Stage dependsOn = SimTK::Stage::Dynamics) const {
     subsystem_ = &a.getSubsystem();
-    index_ = subsystem_->allocateLazyCacheEntry(a.updState(), dependsOn, new SimTK::Value<T>());
+    index_ =
+        subsystem_->allocateLazyCacheEntry(a.updState(), dependsOn, new SimTK::Value<Stamped>());
   }
 
   template <class Calc>
@@ -42,15 +49,29 @@ class ElementCache {
     }
     // updCacheEntry: readable below the entry's stage (inside calcForces), unlike
     // getCacheEntry which checks the stage.
-    T& value = SimTK::Value<T>::updDowncast(subsystem_->updCacheEntry(s, index_)).upd();
-    if (!subsystem_->isCacheValueRealized(s, index_)) {
-      calc(value);
+    Stamped& entry = SimTK::Value<Stamped>::updDowncast(subsystem_->updCacheEntry(s, index_)).upd();
+    const Stamp now{s.getTime(), s.getQValueVersion(), s.getUValueVersion(), s.getZValueVersion()};
+    if (!subsystem_->isCacheValueRealized(s, index_) || !(entry.stamp == now)) {
+      calc(entry.value);
+      entry.stamp = now;
       subsystem_->markCacheValueRealized(s, index_);
     }
-    return value;
+    return entry.value;
   }
 
  private:
+  struct Stamp {
+    double time = -1.0;
+    SimTK::ValueVersion q = -1, u = -1, z = -1;
+    bool operator==(const Stamp& o) const {
+      return time == o.time && q == o.q && u == o.u && z == o.z;
+    }
+  };
+  struct Stamped {
+    T value;
+    Stamp stamp;
+  };
+
   // Set once per realizeTopology (Simbody's own pattern for topology indices).
   mutable const SimTK::Subsystem* subsystem_ = nullptr;
   mutable SimTK::CacheEntryIndex index_;

@@ -67,17 +67,17 @@ struct LubricatedSkirtParameters {
   // Both sides' grids: arc width, node counts, clustering (side, radius and the skirt's
   // height range are filled in from the engine).
   skirt::SkirtSideGridParameters grid;
-  skirt::GapAssemblyParameters gap;  // gap terms (travel and radius from the engine if unset)
-  lubrication::OilSpec oil;          // oil data (grade)
+  skirt::GapAssemblyParameters gap;    // gap terms (travel and radius from the engine if unset)
+  lubrication::OilSpec oil;            // oil data (grade)
   double oilTemperature_degC = 105.0;  // film temperature [degC]
-  lubrication::PatirChengParameters roughness;         // rq1 = liner, rq2 = skirt
-  contact_forces::GreenwoodTrippParameters asperity;   // its roughness is set from `roughness`
+  lubrication::PatirChengParameters roughness;        // rq1 = liner, rq2 = skirt
+  contact_forces::GreenwoodTrippParameters asperity;  // its roughness is set from `roughness`
   contact_forces::BoundaryFrictionParameters boundaryFriction;  // f_dry = 0.1
-  skirt::SkirtLubricationParameters lubrication;       // cavitation model, solver, wear
-  SupplyFilm supplyFilm;                               // inlet oil film
-  bool tertiaryMotion = false;  // must match EngineDescription::tertiaryMotion
-  double pinRetainerPlay_m = 0.5e-3;        // tertiary: free axial play each way [m], > 0
-  double pinRetainerStiffness_Npm = 2e7;    // tertiary: spring outside the play [N/m], > 0
+  skirt::SkirtLubricationParameters lubrication;                // cavitation model, solver, wear
+  SupplyFilm supplyFilm;                                        // inlet oil film
+  bool tertiaryMotion = false;            // must match EngineDescription::tertiaryMotion
+  double pinRetainerPlay_m = 0.5e-3;      // tertiary: free axial play each way [m], > 0
+  double pinRetainerStiffness_Npm = 2e7;  // tertiary: spring outside the play [N/m], > 0
 };
 
 // The per-state results the element caches (small: no nodal fields).
@@ -93,16 +93,16 @@ struct LubricatedSkirtResults {
     int filmIterations = 0;
     bool filmUsedFallback = false;
   };
-  std::array<Side, 2> sides;  // [0] thrust, [1] anti-thrust
+  std::array<Side, 2> sides;                                    // [0] thrust, [1] anti-thrust
   Eigen::Vector3d forceOnPiston_N = Eigen::Vector3d::Zero();    // ground, at the origin
   Eigen::Vector3d momentOnPiston_Nm = Eigen::Vector3d::Zero();  // ground, about the origin
-  Eigen::Matrix3d dQ_dPose = Eigen::Matrix3d::Zero();      // PistonPose.h generalised forces
+  Eigen::Matrix3d dQ_dPose = Eigen::Matrix3d::Zero();           // PistonPose.h generalised forces
   Eigen::Matrix3d dQ_dPoseRate = Eigen::Matrix3d::Zero();
-  double frictionPower_W = 0;      // both sides, >= 0 typical
+  double frictionPower_W = 0;  // both sides, >= 0 typical
   double hydrodynamicFrictionPower_W = 0, asperityFrictionPower_W = 0;
   double secondaryKineticEnergy_J = 0;
   double supplyFilm_m = 0;
-  double retainerForce_N = 0;      // tertiary: force of the pin retainer on the piston (+z)
+  double retainerForce_N = 0;  // tertiary: force of the pin retainer on the piston (+z)
 };
 
 class LubricatedSkirtElement final : public LinerElement {
@@ -126,8 +126,7 @@ class LubricatedSkirtElement final : public LinerElement {
   double getFrictionForce_N(const SimTK::State& s) const override;
   double getFrictionPower_W(const SimTK::State& s) const override;
   std::optional<double> getFrictionWork_J(const SimTK::State& s) const override;
-  std::optional<double> getMinFilmThickness_m(const SimTK::State& s,
-                                              SkirtSide side) const override;
+  std::optional<double> getMinFilmThickness_m(const SimTK::State& s, SkirtSide side) const override;
   std::optional<double> getMinGapOverSigma(const SimTK::State& s, SkirtSide side) const override;
   std::optional<double> getLastSlapEnergy_J(const SimTK::State& s) const override;
   std::optional<double> getHotRunningClearance_m() const override;
@@ -147,10 +146,10 @@ class LubricatedSkirtElement final : public LinerElement {
 
  private:
   struct SlapTracker {
-    int direction = 0;           // sign of v_G in the current approach (0: none yet)
-    double peak_J = 0.0;         // peak K of the current approach
-    double lastEvent_J = 0.0;    // impact energy of the last completed event
-    long events = 0;             // completed events
+    int direction = 0;         // sign of v_G in the current approach (0: none yet)
+    double peak_J = 0.0;       // peak K of the current approach
+    double lastEvent_J = 0.0;  // impact energy of the last completed event
+    long events = 0;           // completed events
   };
   struct Workspace;  // per-side solvers, gap fields, results (mutable)
 

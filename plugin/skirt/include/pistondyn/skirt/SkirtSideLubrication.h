@@ -67,8 +67,8 @@ namespace pistondyn::skirt {
 
 struct SkirtLubricationParameters {
   lubrication::CavitationModel cavitation = lubrication::CavitationModel::Reynolds;
-  double cavitationPressure_Pa = 0.0;  // p_cav, gauge [Pa], default 0
-  double edgePressure_Pa = 0.0;        // pressure on all four edges, gauge [Pa], default 0
+  double cavitationPressure_Pa = 0.0;     // p_cav, gauge [Pa], default 0
+  double edgePressure_Pa = 0.0;           // pressure on all four edges, gauge [Pa], default 0
   lubrication::FilmSolverOptions solver;  // fast active-set solver by default
   // h_c of the film-gap clamp as a fraction of the composite roughness sigma [-], > 0,
   // default 0.1; with sigma = 0 (smooth surfaces) h_c = minimumClampGap_m.
@@ -97,11 +97,11 @@ struct SkirtSideInputs {
 };
 
 struct SkirtSideResults {
-  lubrication::FilmResult film;        // pressure, fill fraction, film shear, diagnostics
+  lubrication::FilmResult film;          // pressure, fill fraction, film shear, diagnostics
   contact_forces::ContactField contact;  // p_c, dp_c/dh, area fraction, h/sigma, regime
-  Eigen::ArrayXd filmGap_m;            // clamped film gap h_f [m]
+  Eigen::ArrayXd filmGap_m;              // clamped film gap h_f [m]
   Eigen::ArrayXd boundaryShearAxial_Pa, boundaryShearCircumferential_Pa;  // tau_b [Pa]
-  Eigen::ArrayXd normalPressure_Pa;    // p_film + p_c - edgePressure [Pa] (total traction)
+  Eigen::ArrayXd normalPressure_Pa;  // p_film + p_c - edgePressure [Pa] (total traction)
 
   PistonLoads hydrodynamicLoads;  // film pressure + film shear (piston frame, about origin)
   PistonLoads asperityLoads;      // contact pressure + boundary shear
@@ -110,8 +110,9 @@ struct SkirtSideResults {
   Eigen::Matrix<double, 6, 3> dLoads_dPose = Eigen::Matrix<double, 6, 3>::Zero();
 
   // Figures of the side (all SI, finite):
-  double hydrodynamicNormalForce_N = 0.0;  // load the film carries, along the side's normal, >= 0 typical
-  double asperityNormalForce_N = 0.0;      // load the asperities carry, >= 0
+  double hydrodynamicNormalForce_N =
+      0.0;  // load the film carries, along the side's normal, >= 0 typical
+  double asperityNormalForce_N = 0.0;        // load the asperities carry, >= 0
   double hydrodynamicFrictionAxial_N = 0.0;  // film shear force on the piston along +y
   double asperityFrictionAxial_N = 0.0;      // boundary friction force on the piston along +y
   // Power the shear dissipates, U . (integral of tau on the skirt) [W], split into the film
@@ -120,12 +121,12 @@ struct SkirtSideResults {
   double hydrodynamicFrictionPower_W = 0.0, asperityFrictionPower_W = 0.0;
   double minFilmThickness_m = 0.0;  // smallest NOMINAL gap on the side (may be < 0: overlap)
   double minFilmPhi_rad = 0.0, minFilmY_m = 0.0;  // where
-  double minGapOverSigma = 0.0;      // smallest h / sigma (nominal gap)
+  double minGapOverSigma = 0.0;                   // smallest h / sigma (nominal gap)
   // Shares of the side's area by regime of the nominal gap (contact_forces' classification:
   // hydrodynamic h/sigma > 3, mixed 1 < h/sigma <= 3, boundary <= 1); they sum to 1.
   double hydrodynamicShare = 0.0, mixedShare = 0.0, boundaryShare = 0.0;
-  double wettedShare = 0.0;     // share of the area with oil (fill fraction > 0)
-  double wearRate_m3ps = 0.0;   // Archard wear volume rate k/H * integral p_c |U| dA [m^3/s]
+  double wettedShare = 0.0;           // share of the area with oil (fill fraction > 0)
+  double wearRate_m3ps = 0.0;         // Archard wear volume rate k/H * integral p_c |U| dA [m^3/s]
   double maxWearDepthRate_mps = 0.0;  // k/H * max p_c |U| [m/s]
 };
 

@@ -1,0 +1,171 @@
+// The lubricated skirt element over whole cycles of the passenger-car example engine:
+// the force on the piston against the closed-form free-body side force of the primary
+// motion corrected by the piston's own lateral inertia, the moment against the piston's
+// Newton-Euler balance about the pin, and the friction work (a continuous state) against
+// the time integral of the friction power.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "SkirtTestDeck.h"
+#include "SliderCrankClosedForm.h"
+#include "pistondyn/plugin/CycleSimulation.h"
+#include "pistondyn/plugin/GasForceElement.h"
+#include "pistondyn/plugin/LubricatedSkirtElement.h"
+
+namespace {
+
+using namespace pistondyn;
+namespace ts = pistondyn::testsupport;
+
+double maxAbs(const std::vector<double>& v) {
+  double m = 0;
+  for (double x : v)
+    m = std::max(m, std::abs(x));
+  return m;
+}
+
+// Two cycles on a coarse grid (the balance holds on any grid); rows of the second.
+struct CycleRun {
+  explicit CycleRun(double outputStep_deg) : setup(ts::makeGasolineSkirtModel(32, 24)) {
+    plugin::SimulationSettings s;
+    s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2;
+    s.outputStep_deg = outputStep_deg;
+    s.cycles = 2;
+    plugin::CycleSimulation sim(*setup.model, s);
+    const auto& ct = setup.model->getCrankTrain();
+    const auto& mass = setup.engine.mass;
+    table = sim.run({}, [&](const SimTK::State& st) {
+      // Lateral inertia force of the piston side (piston + floating pin) [N], and the
+      // piston body's Newton-Euler moment terms about the pin centre P.
+      const SimTK::Vec3 comP(mass.piston.comX_m, mass.piston.comY_m, 0);
+      const SimTK::Vec3 aG = ct.getPiston().findStationAccelerationInGround(st, comP);
+      const SimTK::Vec3 aPin = ct.getPin().getBodyOriginAcceleration(st);
+      lateralInertia.push_back(mass.piston.mass_kg * aG[0] + mass.pin.mass_kg * aPin[0]);
+      pinLateralAcceleration.push_back(aPin[0]);
+      const SimTK::Vec3 G = ct.getPiston().findStationLocationInGround(st, comP);
+      const SimTK::Vec3 P = ct.getPiston().findStationLocationInGround(st, ct.getPinAxisInPiston());
+      const SimTK::Vec3 O = ct.getPiston().getBodyOriginLocation(st);
+      const SimTK::Vec3 crown =
+          ct.getPiston().findStationLocationInGround(st, ct.getCrownCentreInPiston());
+      const double alpha = ct.getPiston().getBodyAngularAcceleration(st)[2];
+      momentTerms.push_back({G, P, O, crown, aG, alpha, ct.getPiston().getBodyRotation(st).y()});
+    });
+    stats = sim.getStats();
+  }
+  struct MomentTerms {
+    SimTK::Vec3 G, P, O, crown, aG;
+    double angularAcceleration;
+    SimTK::UnitVec3 pistonAxis;
+  };
+  ts::SkirtModel setup;
+  plugin::ResultTable table;
+  plugin::SimulationStats stats;
+  std::vector<double> lateralInertia, pinLateralAcceleration;
+  std::vector<MomentTerms> momentTerms;
+};
+
+// The check: over the whole cycle, the lateral force that film and contact exert
+// on the piston equals the free-body side force of the primary motion corrected by the
+// piston's own lateral inertia m x'', within 1 % of the peak side force. The closed form
+// (tests/support/SliderCrankClosedForm.h) takes the measured axial loads: the gas force and
+// the skirt friction.
+TEST(LubricatedSkirt, ForceBalanceMatchesTheClosedFormSideForce) {
+  CycleRun run(2.0);
+  const auto& t = run.table;
+  const auto angle = t.column("crank_angle_deg"), side = t.column("side_force_N"),
+             gas = t.column("gas_force_N"), friction = t.column("friction_force_N"),
+             tilt = t.column("tilt_mrad");
+  const auto cf = ts::ClosedForm::of(run.setup.engine);
+  const double phiTdc = cf.tdcPhi();
+  const std::size_t begin = angle.size() / 2;  // the second cycle
+  std::vector<double> reference, residual;
+  for (std::size_t i = begin; i < angle.size(); ++i) {
+    const auto k = cf.at(angle[i] * M_PI / 180.0 + phiTdc);
+    // Friction along +y on the piston reduces the load towards the crank.
+    const double axial = gas[i] - friction[i];
+    const double sCf = ts::freeBody(run.setup.engine, k, axial).sideForceOnLiner_N;
+    reference.push_back(sCf);
+    // Piston side, x: m x'' = F_rod,x + F_skirt,x + F_gas,x, with the gas force along the
+    // tilted piston axis (F_gas,x = -F_gas sin(tilt)), so F_rod,x = side force (= -F_skirt,x)
+    // + m x'' + F_gas sin(tilt); F_rod,x is the closed form's side force up to the rod's own
+    // secondary inertia. That part, from the rod's moment balance about the crank pin C with
+    // the pin's lateral acceleration x_P'' added to the primary motion (the rod turns by
+    // -cos(beta) x_P''/L more, its centre of mass moves by (l_G/L) x_P''): the rod-on-piston
+    // lateral force changes by -(m_r l_G^2 + I_r) x_P'' / L^2 (cos(beta) cancels).
+    const auto& rod = run.setup.engine.mass.conrod;
+    const double L = run.setup.engine.geometry.conrodLength_m;
+    const double rodInertia = -(rod.mass_kg * rod.comY_m * rod.comY_m + rod.inertiaZZ_kgm2) /
+                              (L * L) * run.pinLateralAcceleration[i];
+    residual.push_back(side[i] + run.lateralInertia[i] + gas[i] * std::sin(1e-3 * tilt[i]) -
+                       (sCf + rodInertia));
+  }
+  const double peak = maxAbs(reference), worst = maxAbs(residual);
+  std::printf("  peak side force %.1f N, worst residual %.2f N (%.3f %%), max |m x''| %.2f N\n",
+              peak, worst, 100 * worst / peak, maxAbs(run.lateralInertia));
+  EXPECT_LE(worst, 0.01 * peak);
+}
+
+// The moment on the piston: Newton-Euler of the piston body about the pin centre P with the
+// element's reported loads (side force, friction at the piston-frame origin O, moment on the
+// liner about O), the gas force along the piston axis at the crown centre and gravity:
+//   M_skirt,O + [(O-P) x F_skirt]_z + [(crown-P) x F_gas]_z + [(G-P) x m g]_z
+//     = I_G theta'' + m [(G-P) x a_G]_z
+// (a floating pin transmits no moment). Within 1 % of the peak moment the element reports.
+TEST(LubricatedSkirt, MomentBalanceAboutThePin) {
+  CycleRun run(2.0);
+  const auto& t = run.table;
+  const auto side = t.column("side_force_N"), friction = t.column("friction_force_N"),
+             moment = t.column("liner_moment_Nm"), gas = t.column("gas_force_N");
+  const auto& mass = run.setup.engine.mass.piston;
+  const double g = run.setup.engine.gravity_mps2;
+  std::vector<double> residual;
+  for (std::size_t i = side.size() / 2; i < side.size(); ++i) {
+    const auto& m = run.momentTerms[i];
+    const SimTK::Vec3 fSkirt(-side[i], friction[i], 0.0);
+    const SimTK::Vec3 fGas = -gas[i] * SimTK::Vec3(m.pistonAxis);
+    const double lhs = -moment[i] + SimTK::cross(m.O - m.P, fSkirt)[2] +
+                       SimTK::cross(m.crown - m.P, fGas)[2] +
+                       SimTK::cross(m.G - m.P, SimTK::Vec3(0, -mass.mass_kg * g, 0))[2];
+    const double rhs = mass.inertiaZZ_kgm2 * m.angularAcceleration +
+                       mass.mass_kg * SimTK::cross(m.G - m.P, m.aG)[2];
+    residual.push_back(lhs - rhs);
+  }
+  const double peak = maxAbs(std::vector<double>(moment.begin() + moment.size() / 2, moment.end()));
+  const double worst = maxAbs(residual);
+  std::printf("  peak liner moment %.3f N m, worst residual %.2e N m\n", peak, worst);
+  ASSERT_GT(peak, 1.0);
+  EXPECT_LE(worst, 0.01 * peak);
+}
+
+// Friction work is a continuous state integrated with the motion; it must equal the time
+// integral of the friction power (Simpson's rule over 0.5 deg rows, whose own error is far
+// below the 0.5 % allowed), and fmep is that work per cycle over the displacement.
+TEST(LubricatedSkirt, FrictionWorkIsTheIntegralOfFrictionPower) {
+  CycleRun run(0.5);
+  const auto& t = run.table;
+  const auto time = t.column("time_s"), power = t.column("friction_power_W"),
+             work = t.column("friction_work_J");
+  const std::size_t n = time.size(), begin = n / 2;  // second cycle: rows begin .. n-1
+  ASSERT_EQ((n - 1 - begin) % 2, 0u);
+  const double h = time[begin + 1] - time[begin];
+  double simpson = power[begin] + power[n - 1];
+  for (std::size_t i = begin + 1; i < n - 1; ++i)
+    simpson += ((i - begin) % 2 ? 4.0 : 2.0) * power[i];
+  simpson *= h / 3.0;
+  const double integrated = work[n - 1] - work[begin];
+  std::printf("  cycle friction work: state %.6f J, Simpson of the power %.6f J\n", integrated,
+              simpson);
+  ASSERT_GT(integrated, 0.1);
+  EXPECT_NEAR(integrated, simpson, 5e-3 * integrated);
+  ASSERT_EQ(run.stats.cycleFmep_Pa.size(), 2u);
+  const double displacement = ts::displacement_m3(run.setup.engine);
+  EXPECT_NEAR(run.stats.cycleFmep_Pa[1], integrated / displacement,
+              1e-9 * run.stats.cycleFmep_Pa[1]);
+  std::printf("  fmep of the two cycles: %.4f %.4f kPa\n", run.stats.cycleFmep_Pa[0] / 1e3,
+              run.stats.cycleFmep_Pa[1] / 1e3);
+}
+
+}  // namespace

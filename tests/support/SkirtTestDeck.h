@@ -1,0 +1,88 @@
+#pragma once
+// The passenger-car example engine (examples/engines/gasoline_1400_2000rpm) with the
+// lubricated skirt element and the example skirt data, built in code for the element's
+// tests: barrel profile with its minimum-clearance line 8 mm below the pin and edge reliefs,
+// elliptic ovality 0.3 mm, Rq 0.4 um (liner) / 0.6 um (skirt), SAE 0W-30 at 105 C, f_dry
+// 0.1, cold radial clearance 20 um, no thermal growth, no tertiary motion.
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pistondyn/cli/EngineDeck.h"
+#include "pistondyn/lubrication/OilGrades.h"
+#include "pistondyn/mbd_models/SliderCrank.h"
+#include "pistondyn/plugin/GasForceElement.h"
+#include "pistondyn/plugin/LubricatedSkirtElement.h"
+
+namespace pistondyn::testsupport {
+
+struct SkirtModel {
+  mbd::EngineDescription engine;
+  std::unique_ptr<plugin::PistonAssemblyModel> model;
+  const plugin::LubricatedSkirtElement& skirt() const {
+    return model->getElementAs<plugin::LubricatedSkirtElement>("lubricated_skirt");
+  }
+};
+
+// Radial drop [m] of the example barrel profile at height y above the pin [m]: parabolic
+// about y0 = -8 mm (0.08 um/mm^2 below, 0.12 above) plus 15 um quadratic reliefs over the
+// last 2 mm of the 30 mm skirt (from -22 to +8 mm).
+inline double exampleProfileDrop_m(double y_m) {
+  const double y = y_m * 1e3, d = y + 8.0;
+  double drop = (d > 0 ? 0.12 : 0.08) * d * d;
+  if (y < -20.0)
+    drop += 15.0 * ((-20.0 - y) / 2.0) * ((-20.0 - y) / 2.0);
+  if (y > 6.0)
+    drop += 15.0 * ((y - 6.0) / 2.0) * ((y - 6.0) / 2.0);
+  return drop * 1e-6;
+}
+
+inline plugin::LubricatedSkirtParameters exampleSkirtParameters(int nPhi, int nY) {
+  plugin::LubricatedSkirtParameters p;
+  p.grid.arcWidth_rad = 80.0 * M_PI / 180.0;
+  p.grid.nPhi = nPhi;
+  p.grid.nY = nY;
+  p.grid.axialClustering = 2.5;
+  p.gap.coldRadialClearance_m = 20e-6;
+  const int n = 101;  // -25 .. +25 mm in 0.5 mm (covers the mirrored skirt too)
+  p.gap.skirtProfile.axial.height_m.resize(n);
+  p.gap.skirtProfile.axial.radialDrop_m.resize(n);
+  for (int i = 0; i < n; ++i) {
+    const double y = (-25.0 + 0.5 * i) * 1e-3;
+    p.gap.skirtProfile.axial.height_m[i] = y;
+    p.gap.skirtProfile.axial.radialDrop_m[i] = exampleProfileDrop_m(y);
+  }
+  p.gap.skirtProfile.ovality.diametralOvality_m = 300e-6;
+  p.oil = lubrication::makeSaeGradeOilSpec(lubrication::SaeGrade::k0W30);
+  p.oilTemperature_degC = 105.0;
+  p.roughness.rq1_m = 0.4e-6;
+  p.roughness.rq2_m = 0.6e-6;
+  p.boundaryFriction.frictionCoefficient = 0.1;
+  return p;
+}
+
+inline SkirtModel makeGasolineSkirtModel(
+    int nPhi, int nY, const plugin::LubricatedSkirtParameters* custom = nullptr) {
+  const cli::EngineDeck deck = cli::loadEngineDeck(
+      std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm/engine.yaml",
+      {});
+  SkirtModel m;
+  m.engine = deck.engine;
+  m.engine.tertiaryMotion = false;
+  m.model = std::make_unique<plugin::PistonAssemblyModel>(m.engine);
+  m.model->addElement(
+      std::make_unique<plugin::GasForceElement>(*deck.cylinderPressure, deck.crankcasePressure_Pa));
+  m.model->addElement(std::make_unique<plugin::LubricatedSkirtElement>(
+      custom ? *custom : exampleSkirtParameters(nPhi, nY)));
+  return m;
+}
+
+// Swept volume [m^3].
+inline double displacement_m3(const mbd::EngineDescription& e) {
+  const mbd::SliderCrank kin(e.geometry);
+  return mbd::CylinderVolume(kin, e.piston.bore_m, e.geometry.compressionRatio).displacement_m3();
+}
+
+}  // namespace pistondyn::testsupport

@@ -1,9 +1,11 @@
 #pragma once
 // The passenger-car example engine (examples/engines/gasoline_1400_2000rpm) with the
 // lubricated skirt element and the example skirt data, built in code for the element's
-// tests: barrel profile with its minimum-clearance line 8 mm below the pin and edge reliefs,
-// elliptic ovality 0.3 mm, Rq 0.4 um (liner) / 0.6 um (skirt), SAE 0W-30 at 105 C, f_dry
-// 0.1, cold radial clearance 20 um, no thermal growth, no tertiary motion.
+// tests: skirt from 12 mm above to 18 mm below the pin, parabolic barrel profile with its
+// minimum-clearance line 6 mm below the pin (0.12 um/mm^2), elliptic ovality 0.3 mm, Rq
+// 0.4 um (liner) / 0.6 um (skirt), SAE 0W-30 at 105 C, f_dry 0.1, cold radial clearance
+// 40 um, no thermal growth, no tertiary motion, mass-conserving cavitation, fully flooded
+// unless a supply film is set.
 
 #include <cmath>
 #include <memory>
@@ -45,7 +47,7 @@ inline plugin::LubricatedSkirtParameters exampleSkirtParameters(int nPhi, int nY
   p.grid.nPhi = nPhi;
   p.grid.nY = nY;
   p.grid.axialClustering = 2.5;
-  p.gap.coldRadialClearance_m = 20e-6;
+  p.gap.coldRadialClearance_m = 40e-6;
   const int n = 101;  // -25 .. +25 mm in 0.5 mm (covers the mirrored skirt too)
   p.gap.skirtProfile.axial.height_m.resize(n);
   p.gap.skirtProfile.axial.radialDrop_m.resize(n);
@@ -60,6 +62,7 @@ inline plugin::LubricatedSkirtParameters exampleSkirtParameters(int nPhi, int nY
   p.roughness.rq1_m = 0.4e-6;
   p.roughness.rq2_m = 0.6e-6;
   p.boundaryFriction.frictionCoefficient = 0.1;
+  p.lubrication.cavitation = lubrication::CavitationModel::MassConserving;
   return p;
 }
 
@@ -71,6 +74,7 @@ inline SkirtModel makeGasolineSkirtModel(
   SkirtModel m;
   m.engine = deck.engine;
   m.engine.tertiaryMotion = false;
+  m.engine.piston.skirtTopAbovePin_m = 12e-3;  // the example skirt: +12 .. -18 mm
   m.model = std::make_unique<plugin::PistonAssemblyModel>(m.engine);
   m.model->addElement(
       std::make_unique<plugin::GasForceElement>(*deck.cylinderPressure, deck.crankcasePressure_Pa));

@@ -142,6 +142,9 @@ class LubricatedSkirtElement final : public LinerElement {
   const skirt::GapFields& getLastGapFields(SkirtSide side) const;
   const skirt::SkirtSideResults& getLastSideResults(SkirtSide side) const;
   double getWearVolume_m3(const SimTK::State& s, SkirtSide side) const;
+  // The friction work's split since the start of the run [J] (continuous states).
+  double getHydrodynamicFrictionWork_J(const SimTK::State& s) const { return work_.getValue(s, 1); }
+  double getAsperityFrictionWork_J(const SimTK::State& s) const { return work_.getValue(s, 2); }
   long getSlapEventCount(const SimTK::State& s) const;
 
  private:

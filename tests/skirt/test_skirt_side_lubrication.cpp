@@ -725,6 +725,109 @@ double barrel(double, double y) {
 // ------------------------------------------------------------------------------------------
 // 7. Bad input: std::invalid_argument naming the input; a film that does not converge:
 // std::runtime_error naming the side.
+TEST(SkirtSideLubrication, BadInputIsRejectedNamingTheInput) {
+  const ps::SkirtSideGrid g = makeGrid(1.0, 0.03, 0.01, 9, 7);
+  const int n = g.nodeCount();  // 63
+  ps::SkirtSideLubrication lub = makeLubrication(g, patirCheng());
+  const ps::GapFields good = rigidFields(g, 20e-6, Pose());
+  auto rejects = [&](auto editGap, auto editInputs,
+                     std::initializer_list<std::string_view> fragments) {
+    ps::GapFields f = good;
+    ps::SkirtSideInputs in = inputs(0.01, 1.0);
+    editGap(f);
+    editInputs(in);
+    ps::SkirtSideResults out;
+    expectInvalidArgument([&] { lub.solve(f, in, out); }, fragments);
+  };
+  auto noGap = [](ps::GapFields&) {};
+  auto noInputs = [](ps::SkirtSideInputs&) {};
+  const char* s = "SkirtSideLubrication::solve";
+  rejects([&](ps::GapFields& f) { f.gap_m.resize(n - 1); }, noInputs,
+          {s, "gap.gap_m has 62 entries", "63", "thrust"});
+  rejects([&](ps::GapFields& f) { f.gapRate_mps.resize(n + 1); }, noInputs,
+          {s, "gap.gapRate_mps has 64 entries", "63"});
+  rejects([&](ps::GapFields& f) { f.squeezeBasis.resize(n - 2, 3); }, noInputs,
+          {s, "gap.squeezeBasis is 61 x 3", "63"});
+  rejects([&](ps::GapFields& f) { f.squeezeBasis.resize(n, 1); }, noInputs,
+          {s, "gap.squeezeBasis is 63 x 1", "inputs.squeezeColumns = 3"});
+  rejects([&](ps::GapFields& f) { f.dGap_dPose.resize(n, 2); }, noInputs,
+          {s, "gap.dGap_dPose is 63 x 2", "63 x 3"});
+  rejects([&](ps::GapFields& f) { f.dGap_dPose.resize(0, 0); }, noInputs,
+          {s, "gap.dGap_dPose is 0 x 0"});
+  rejects([&](ps::GapFields& f) { f.gap_m[5] = NAN; }, noInputs,
+          {s, "gap.gap_m[5] = nan m", "finite", "thrust"});
+  rejects([&](ps::GapFields& f) { f.gapRate_mps[3] = INFINITY; }, noInputs,
+          {s, "gap.gapRate_mps[3] = inf m/s", "finite"});
+  rejects([&](ps::GapFields& f) { f.dGap_dPose(4, 1) = NAN; }, noInputs,
+          {s, "gap.dGap_dPose(4, 1) = nan", "finite"});
+  rejects([&](ps::GapFields& f) { f.squeezeBasis(2, 0) = NAN; }, noInputs,
+          {s, "gap.squeezeBasis(2, 0) = nan", "finite"});
+  for (double eta : {0.0, -1e-3, double(NAN), double(INFINITY)})
+    rejects(noGap, [&](ps::SkirtSideInputs& in) { in.viscosity_Pas = eta; },
+            {s, "inputs.viscosity_Pas = ", "Pa s", "positive and finite"});
+  rejects(noGap, [](ps::SkirtSideInputs& in) { in.viscosity_Pas = 0.0; },
+          {"inputs.viscosity_Pas = 0 Pa s"});
+  for (double h : {0.0, -1e-6, double(NAN)})
+    rejects(noGap, [&](ps::SkirtSideInputs& in) { in.supplyFilm_m = h; },
+            {s, "inputs.supplyFilm_m = ", " m must be positive"});
+  rejects(noGap, [](ps::SkirtSideInputs& in) { in.slidingVelocityAxial_mps = NAN; },
+          {s, "inputs.slidingVelocityAxial_mps = nan m/s", "finite"});
+  rejects(noGap, [](ps::SkirtSideInputs& in) { in.slidingVelocityCircumferential_mps = INFINITY; },
+          {s, "inputs.slidingVelocityCircumferential_mps = inf m/s", "finite"});
+  rejects(noGap, [](ps::SkirtSideInputs& in) { in.squeezeColumns = 4; },
+          {s, "inputs.squeezeColumns = 4", "0..3"});
+
+  // Mass-conserving: the previous fill fraction's size, and the step.
+  ps::SkirtSideLubrication jfo =
+      makeLubrication(g, patirCheng(), tightSolver(lub::CavitationModel::MassConserving));
+  const Eigen::ArrayXd wrongSize = Eigen::ArrayXd::Constant(n + 3, 1.0);
+  ps::SkirtSideInputs in = inputs(0.01, 1.0);
+  in.previousFillFraction = &wrongSize;
+  in.timeStep_s = 1e-5;
+  ps::SkirtSideResults out;
+  expectInvalidArgument([&] { jfo.solve(good, in, out); },
+                        {s, "inputs.previousFillFraction has 66 entries", "63"});
+  in.previousFillFraction = nullptr;
+  in.timeStep_s = NAN;
+  expectInvalidArgument([&] { jfo.solve(good, in, out); }, {s, "inputs.timeStep_s = nan s"});
+
+  // Constructor: parameters, null models, one roughness pair for film and contact.
+  const char* c = "SkirtSideLubrication";
+  auto ctorRejects = [&](auto edit, std::initializer_list<std::string_view> fragments) {
+    ps::SkirtLubricationParameters p;
+    edit(p);
+    expectInvalidArgument([&] { makeLubrication(g, patirCheng(), p); }, fragments);
+  };
+  using P = ps::SkirtLubricationParameters;
+  ctorRejects([](P& p) { p.clampFraction = 0.0; },
+              {c, "parameters.clampFraction = 0", "positive and finite"});
+  ctorRejects([](P& p) { p.minimumClampGap_m = -1e-9; },
+              {c, "parameters.minimumClampGap_m = -1e-09 m", "positive and finite"});
+  ctorRejects([](P& p) { p.wearCoefficient_m2pN = NAN; },
+              {c, "parameters.wearCoefficient_m2pN = nan", "non-negative"});
+  ctorRejects([](P& p) { p.cavitationPressure_Pa = INFINITY; },
+              {c, "parameters.cavitationPressure_Pa = inf Pa", "finite"});
+  ctorRejects([](P& p) { p.edgePressure_Pa = NAN; },
+              {c, "parameters.edgePressure_Pa = nan Pa", "finite"});
+  expectInvalidArgument(
+      [&] { ps::SkirtSideLubrication(g, nullptr, gtLaw(), cf::BoundaryFriction(), P()); },
+      {c, "flowFactors", "null"});
+  expectInvalidArgument(
+      [&] { ps::SkirtSideLubrication(g, patirCheng(), nullptr, cf::BoundaryFriction(), P()); },
+      {c, "contactLaw", "null"});
+  // Skirt Rq 0.4 um in the film, 0.5 um in the contact law: sigma 0.5 um vs 0.583 um; and a
+  // difference in the 7th digit, which a 6-digit format would print as two equal numbers.
+  const auto film = patirCheng(0.3e-6, 0.4e-6);
+  const auto law1 = gtLaw(0.3e-6, 0.5e-6), law2 = gtLaw(0.3e-6, 0.4000005e-6);
+  using pistondyn::common::formatNumber;  // the conventions' number format
+  expectInvalidArgument([&] { makeLubrication(g, film, P(), law1); },
+                        {c, "roughness", formatNumber(film->compositeSigma_m()) + " m",
+                         formatNumber(law1->compositeSigma_m()) + " m"});
+  expectInvalidArgument([&] { makeLubrication(g, film, P(), law2); },
+                        {c, "roughness", formatNumber(film->compositeSigma_m()) + " m",
+                         formatNumber(law2->compositeSigma_m()) + " m"});
+}
+
 TEST(SkirtSideLubrication, FilmThatDoesNotConvergeThrowsARuntimeErrorNamingTheSide) {
   for (ps::SkirtSide side : {ps::SkirtSide::Thrust, ps::SkirtSide::AntiThrust}) {
     const ps::SkirtSideGrid g = makeGrid(1.0, 0.04, 0.015, 64, 48, side);

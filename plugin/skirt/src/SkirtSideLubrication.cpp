@@ -3,19 +3,82 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include "pistondyn/common/Validation.h"
+
 namespace pistondyn::skirt {
 namespace {
+
+constexpr const char* kConstructor = "SkirtSideLubrication";
+constexpr const char* kSolve = "SkirtSideLubrication::solve";
 
 const char* sideName(SkirtSide s) {
   return s == SkirtSide::Thrust ? "thrust" : "anti-thrust";
 }
 
 [[noreturn]] void bad(const std::string& what) {
-  throw std::invalid_argument("SkirtSideLubrication: " + what);
+  common::throwInvalidArgument(kConstructor, what);
+}
+
+// Checks of one call's inputs (messages: docs/CONVENTIONS.md; names are built only to throw, so
+// a passing call allocates nothing).
+template <class... Parts>
+[[noreturn]] void badInput(const Parts&... parts) {
+  common::throwInvalidArgument(kSolve, common::message(parts...));
+}
+
+void requireFiniteEntries(const Eigen::ArrayXd& a, const char* name, const char* unit,
+                          SkirtSide side) {
+  for (Eigen::Index k = 0; k < a.size(); ++k)
+    if (!std::isfinite(a[k]))
+      badInput(name, "[", k, "] = ", a[k], " ", unit, " must be finite (", sideName(side),
+               " side)");
+}
+
+void requireFiniteEntries(const Eigen::MatrixXd& a, Eigen::Index cols, const char* name,
+                          SkirtSide side) {
+  for (Eigen::Index c = 0; c < cols; ++c)
+    for (Eigen::Index k = 0; k < a.rows(); ++k)
+      if (!std::isfinite(a(k, c)))
+        badInput(name, "(", k, ", ", c, ") = ", a(k, c), " must be finite (", sideName(side),
+                 " side)");
+}
+
+void validateInputs(const GapFields& gap, const SkirtSideInputs& in, const SkirtSideGrid& grid) {
+  const Eigen::Index n = grid.nodeCount();
+  const SkirtSide side = grid.getSide();
+  if (gap.gap_m.size() != n)
+    badInput("gap.gap_m has ", gap.gap_m.size(), " entries, expected ", n, " (nodes of the ",
+             sideName(side), " side)");
+  if (gap.gapRate_mps.size() != n)
+    badInput("gap.gapRate_mps has ", gap.gapRate_mps.size(), " entries, expected ", n,
+             " (nodes of the ", sideName(side), " side)");
+  if (gap.dGap_dPose.rows() != n || gap.dGap_dPose.cols() != 3)
+    badInput("gap.dGap_dPose is ", gap.dGap_dPose.rows(), " x ", gap.dGap_dPose.cols(),
+             ", expected ", n, " x 3 (nodes of the ", sideName(side),
+             " side x lateral, tilt, tertiary)");
+  if (in.squeezeColumns < 0 || in.squeezeColumns > 3)
+    badInput("inputs.squeezeColumns = ", in.squeezeColumns, " must be 0..3");
+  if (gap.squeezeBasis.rows() != n || gap.squeezeBasis.cols() < in.squeezeColumns)
+    badInput("gap.squeezeBasis is ", gap.squeezeBasis.rows(), " x ", gap.squeezeBasis.cols(),
+             ", expected ", n, " rows (nodes of the ", sideName(side),
+             " side) and at least inputs.squeezeColumns = ", in.squeezeColumns, " columns");
+  requireFiniteEntries(gap.gap_m, "gap.gap_m", "m", side);
+  requireFiniteEntries(gap.gapRate_mps, "gap.gapRate_mps", "m/s", side);
+  requireFiniteEntries(gap.dGap_dPose, 3, "gap.dGap_dPose", side);
+  requireFiniteEntries(gap.squeezeBasis, in.squeezeColumns, "gap.squeezeBasis", side);
+  common::requirePositiveFinite(in.viscosity_Pas, kSolve, "inputs.viscosity_Pas", "Pa s");
+  common::requireFinite(in.slidingVelocityAxial_mps, kSolve, "inputs.slidingVelocityAxial_mps",
+                        "m/s");
+  common::requireFinite(in.slidingVelocityCircumferential_mps, kSolve,
+                        "inputs.slidingVelocityCircumferential_mps", "m/s");
+  if (!(in.supplyFilm_m > 0.0))
+    badInput("inputs.supplyFilm_m = ", in.supplyFilm_m,
+             " m must be positive (+inf: fully flooded)");
+  if (std::isnan(in.timeStep_s))
+    badInput("inputs.timeStep_s = ", in.timeStep_s, " s must not be NaN (+inf or <= 0: steady)");
 }
 
 // Gauss-Legendre nodes and weights on [0, 1], 6 points (exact for degree 11).
@@ -141,21 +204,20 @@ struct SkirtSideLubrication::Impl {
       bad("flowFactors is null");
     if (!contactLaw)
       bad("contactLaw is null");
-    if (!(p.clampFraction > 0.0) || !std::isfinite(p.clampFraction))
-      bad("clampFraction must be positive and finite");
-    if (!(p.minimumClampGap_m > 0.0) || !std::isfinite(p.minimumClampGap_m))
-      bad("minimumClampGap_m must be positive and finite");
-    if (!(p.wearCoefficient_m2pN >= 0.0) || !std::isfinite(p.wearCoefficient_m2pN))
-      bad("wearCoefficient_m2pN must be non-negative and finite");
-    if (!std::isfinite(p.cavitationPressure_Pa) || !std::isfinite(p.edgePressure_Pa))
-      bad("cavitationPressure_Pa and edgePressure_Pa must be finite");
+    common::requirePositiveFinite(p.clampFraction, kConstructor, "parameters.clampFraction", "");
+    common::requirePositiveFinite(p.minimumClampGap_m, kConstructor, "parameters.minimumClampGap_m",
+                                  "m");
+    common::requireNonNegativeFinite(p.wearCoefficient_m2pN, kConstructor,
+                                     "parameters.wearCoefficient_m2pN", "m^2/N");
+    common::requireFinite(p.cavitationPressure_Pa, kConstructor, "parameters.cavitationPressure_Pa",
+                          "Pa");
+    common::requireFinite(p.edgePressure_Pa, kConstructor, "parameters.edgePressure_Pa", "Pa");
     sigma_m = flowFactors->compositeSigma_m();
     const double lawSigma = contactLaw->compositeSigma_m();
     if (sigma_m > 0.0 && std::abs(lawSigma - sigma_m) > 1e-9 * sigma_m) {
-      std::ostringstream m;
-      m << "the flow factors' roughness sigma = " << sigma_m << " m and the contact law's "
-        << lawSigma << " m differ: enter one roughness pair for both";
-      bad(m.str());
+      bad(common::message("the flow factors' composite roughness sigma = ", sigma_m,
+                          " m and the contact law's sigma = ", lawSigma,
+                          " m differ: enter one roughness pair (Rq of liner and skirt) for both"));
     }
     if (sigma_m == 0.0)
       sigma_m = lawSigma;
@@ -210,22 +272,7 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   Impl& m = *impl_;
   const SkirtSideGrid& grid = m.grid;
   const int n = grid.nodeCount();
-  if (gap.gap_m.size() != n || gap.gapRate_mps.size() != n || gap.squeezeBasis.rows() != n) {
-    bad(std::string("gap fields of the wrong size for the ") + sideName(grid.getSide()) +
-        " side (" + std::to_string(gap.gap_m.size()) + " nodes, expected " + std::to_string(n) +
-        ")");
-  }
-  if (!(in.viscosity_Pas > 0.0) || !std::isfinite(in.viscosity_Pas))
-    bad("inputs.viscosity_Pas must be positive and finite");
-  if (!std::isfinite(in.slidingVelocityAxial_mps) ||
-      !std::isfinite(in.slidingVelocityCircumferential_mps))
-    bad("inputs' sliding velocities must be finite");
-  if (!(in.supplyFilm_m > 0.0))
-    bad("inputs.supplyFilm_m must be positive (or +inf)");
-  if (in.squeezeColumns < 0 || in.squeezeColumns > 3)
-    bad("inputs.squeezeColumns must be 0..3");
-  if (!gap.gap_m.allFinite() || !gap.gapRate_mps.allFinite())
-    bad(std::string("the ") + sideName(grid.getSide()) + " side's gap or gap rate is not finite");
+  validateInputs(gap, in, grid);
 
   // Film gap: the smooth clamp of the nominal gap, and its slope for the rates.
   lubrication::FilmProblem& p = m.problem;
@@ -248,7 +295,9 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   if (p.cavitation == lubrication::CavitationModel::MassConserving) {
     if (in.previousFillFraction != nullptr && in.previousFillFraction->size() > 0) {
       if (in.previousFillFraction->size() != n)
-        bad("inputs.previousFillFraction has the wrong size");
+        badInput("inputs.previousFillFraction has ", in.previousFillFraction->size(),
+                 " entries, expected ", n, " (nodes of the ", sideName(grid.getSide()),
+                 " side; empty: full film)");
       p.previousFillFraction = *in.previousFillFraction;
     } else {
       p.previousFillFraction.resize(0);
@@ -259,12 +308,12 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   m.solver.solve(grid.getFilmGrid(), p, m.haveWarmStart ? &m.warmStart : nullptr, out.film);
   const lubrication::FilmResult& film = out.film;
   if (!film.converged) {
-    std::ostringstream msg;
-    msg << "the " << sideName(grid.getSide()) << " side's film solve did not converge (residual "
-        << film.residual << " after " << film.iterations << " iterations"
-        << (film.usedFallback ? ", reference-solver fallback included" : "") << ")";
     m.haveWarmStart = false;  // a failed iterate is a poor start
-    throw std::runtime_error(msg.str());
+    throw std::runtime_error(common::message(
+        kSolve, ": the ", sideName(grid.getSide()),
+        " side's film solve did not converge (residual ", film.residual, " > tolerance ",
+        m.solver.getOptions().tolerance, " after ", film.iterations, " iterations",
+        film.usedFallback ? ", reference-solver fallback included" : "", ")"));
   }
   m.warmStart = film.state;
   m.haveWarmStart = true;

@@ -47,7 +47,9 @@
 // fraction) is NOT kept here: the caller passes the previous fill fraction and the time step
 // and stores the result's fill fraction in its own State.
 //
-// Errors: std::invalid_argument for inputs of the wrong size or not finite (naming them); a
+// Errors: std::invalid_argument for inputs of the wrong size or not finite (naming them: the
+// GapFields members gap_m, gapRate_mps, dGap_dPose (nodeCount x 3), squeezeBasis (nodeCount x
+// at least squeezeColumns), every SkirtSideInputs member, with the value and unit); a
 // film solve that does not converge (after the solver's own fallback) throws
 // std::runtime_error naming the side, the residual and the iterations, never returns NaN.
 
@@ -91,7 +93,7 @@ struct SkirtSideInputs {
   // (0..3; 2 = lateral and tilt, 3 with the tertiary motion).
   int squeezeColumns = 2;
   // Mass-conserving model only: fill fraction at the start of the step (nodeCount entries;
-  // empty = full film) and the step [s] (> 0; +inf or <= 0 = steady state).
+  // empty = full film) and the step [s] (> 0; +inf or <= 0 = steady state; NaN is rejected).
   const Eigen::ArrayXd* previousFillFraction = nullptr;
   double timeStep_s = std::numeric_limits<double>::infinity();
 };

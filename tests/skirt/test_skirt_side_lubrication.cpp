@@ -551,6 +551,49 @@ TEST(SkirtSideLubrication, SqueezeDerivativesEqualCentralDifferencesOfTheFilmLoa
   }
 }
 
+// An asperity contact spread over the lower skirt (min h/sigma = 1 at the bottom edge, the
+// gap rising at alpha = 2e-4 towards the crown), with boundary friction (f = 0.1, U_y = 3 m/s).
+TEST(SkirtSideLubrication, AsperityStiffnessEqualsCentralDifferencesOfTheAsperityLoads) {
+  // p_c(h) is smooth (exact Gaussian tail integrals); with steps of 2e-3 sigma the central
+  // difference's truncation error is ~(delta / sigma)^2 times the ratio of the third to the
+  // first derivative of F_5/2 (O(1..10)), ~1e-5 of a column. Tolerance 1e-4 of the column's
+  // norm. (The set of Gauss-corrected cells does not change over a step of 2e-3 sigma unless
+  // a corner gap lies within it of 4.5 sigma; the jump it would make is ~1e-7 of the load.)
+  RunningCase rc;
+  const ps::SkirtSideGrid& g = rc.grid;
+  ps::SkirtSideLubrication lub = makeLubrication(g, patirCheng());
+  const double sigma = lub.getCompositeSigma_m();
+  Pose q;
+  q.alpha = -2e-4;
+  q.e = rc.c0 - (-0.025) * q.alpha - 1.0 * sigma;  // h(bottom, phi = 0) = sigma
+  const double uy = 3.0;
+  ps::SkirtSideResults out;
+  lub.solve(rigidFields(g, rc.c0, q), inputs(rc.eta, uy), out);
+  // The nearest nodes are dphi/2 off the centre line: h/sigma = 1 + e dphi^2 / (8 sigma).
+  EXPECT_NEAR(out.minGapOverSigma, 1.0, 0.01);
+  ASSERT_GT(out.asperityNormalForce_N, 0.0);
+  const Eigen::Matrix<double, 6, 3> analytic = out.dLoads_dPose;
+  const double steps[3] = {1e-9, 1e-9 / 0.025, 1e-9};  // [m], [rad], [m]
+  for (int c = 0; c < 3; ++c) {
+    Loads6 l[2];
+    for (int side = 0; side < 2; ++side) {
+      Pose qq = q;
+      (c == 0 ? qq.e : c == 1 ? qq.alpha : qq.z) += (side == 0 ? 1.0 : -1.0) * steps[c];
+      ps::SkirtSideResults o;
+      lub.solve(rigidFields(g, rc.c0, qq), inputs(rc.eta, uy), o);
+      l[side] = stack(o.asperityLoads);
+    }
+    const Loads6 fd = (l[0] - l[1]) / (2.0 * steps[c]);
+    const double err = (fd - analytic.col(c)).norm() / fd.norm();
+    std::printf(
+        "  column %d: |FD - analytic| / |FD| = %.2e\n    FD       %11.4e %11.4e %11.4e "
+        "%11.4e %11.4e %11.4e\n    analytic %11.4e %11.4e %11.4e %11.4e %11.4e %11.4e\n",
+        c, err, fd[0], fd[1], fd[2], fd[3], fd[4], fd[5], analytic(0, c), analytic(1, c),
+        analytic(2, c), analytic(3, c), analytic(4, c), analytic(5, c));
+    EXPECT_LT(err, 1e-4) << "column " << c;
+  }
+}
+
 // ------------------------------------------------------------------------------------------
 // 5. Asperity quadrature of an edge contact.
 //
@@ -636,6 +679,41 @@ TEST(SkirtSideLubrication, EdgeContactConvergesUnderRefinementToTheExactGapQuadr
   // whose chord error in phi, (dphi^2 / 8) (e + y alpha) = 1e-9 m = 0.002 sigma, moves p_c by
   // ~(5/2)(F_3/2 / F_5/2) 0.002 ~ 0.5 % (falling as dphi^2 under refinement).
   EXPECT_LT(errDefault, 5e-3);
+}
+
+TEST(SkirtSideLubrication, EdgeContactStiffnessEqualsCentralDifferences) {
+  // The stiffness where the Gauss correction carries most of the load (the edge contact above:
+  // the nodal interpolant alone is 4.8 times the load at 64 x 48): dLoads_dPose against central
+  // differences of the asperity loads, with sliding (U = (0.2, 3) m/s) so that the boundary
+  // shear's part shows. Steps 2e-3 sigma (tolerance 1e-4 of a column, as above).
+  EdgeContact ec;
+  const auto law = gtLaw();
+  const double sigma = law->compositeSigma_m();
+  ec.e = ec.c0 - ec.yBottom() * ec.alpha + 0.5 * sigma;
+  const ps::SkirtSideGrid g = makeGrid(ec.arc, ec.L, ec.yTop);
+  ps::SkirtSideLubrication lub = makeLubrication(g, patirCheng(), tightSolver(), law);
+  Pose q;
+  q.e = ec.e;
+  q.alpha = ec.alpha;
+  q.z = 2e-6;  // off-centre: the tertiary column is not zero by symmetry
+  ps::SkirtSideResults out;
+  lub.solve(rigidFields(g, ec.c0, q), inputs(0.01, 3.0, 0.2), out);
+  const Eigen::Matrix<double, 6, 3> analytic = out.dLoads_dPose;
+  const double steps[3] = {1e-9, 1e-9 / 0.025, 1e-9};
+  for (int c = 0; c < 3; ++c) {
+    Loads6 l[2];
+    for (int side = 0; side < 2; ++side) {
+      Pose qq = q;
+      (c == 0 ? qq.e : c == 1 ? qq.alpha : qq.z) += (side == 0 ? 1.0 : -1.0) * steps[c];
+      ps::SkirtSideResults o;
+      lub.solve(rigidFields(g, ec.c0, qq), inputs(0.01, 3.0, 0.2), o);
+      l[side] = stack(o.asperityLoads);
+    }
+    const Loads6 fd = (l[0] - l[1]) / (2.0 * steps[c]);
+    const double err = (fd - analytic.col(c)).norm() / fd.norm();
+    std::printf("  column %d: |FD - analytic| / |FD| = %.2e\n", c, err);
+    EXPECT_LT(err, 1e-4) << "column " << c;
+  }
 }
 
 TEST(SkirtSideLubrication, WithoutCellsNearContactTheAsperityLoadsAreTheNodalInterpolants) {

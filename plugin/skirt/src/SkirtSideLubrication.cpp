@@ -114,7 +114,7 @@ struct SkirtSideLubrication::Impl {
   lubrication::FilmProblem problem;
   lubrication::FilmState warmStart;
   bool haveWarmStart = false;
-  Eigen::ArrayXd clampSlope, pressureColumn, zero;
+  Eigen::ArrayXd clampSlope, pressureColumn, shearColumnX, shearColumnY, zero;
   Eigen::ArrayXd couetteY, couetteX;     // film shear on the skirt (Couette + Poiseuille)
   Eigen::ArrayXXd boundaryX, boundaryY;  // boundary shear as grid-shaped scratch
   // Outward normal of the side's centre line (cos phi_c, sin phi_c) in (x, z).
@@ -163,8 +163,6 @@ struct SkirtSideLubrication::Impl {
             const contact_forces::PressureAndSlope ps = contactLaw->calcPressureAndSlope(hg);
             const double pInterp =
                 n00 * pNode[k00] + n10 * pNode[k10] + n01 * pNode[k01] + n11 * pNode[k11];
-            const double sInterp =
-                n00 * sNode[k00] + n10 * sNode[k10] + n01 * sNode[k01] + n11 * sNode[k11];
             const double wgt = kGaussW[a] * kGaussW[b] * area;
             const double dp = (ps.pressure_Pa - pInterp) * wgt;
             contactPressureIntegralCorrection_N += dp;
@@ -174,16 +172,18 @@ struct SkirtSideLubrication::Impl {
                 -R * tx, y * c + R * c * ty + tx * y * sn;
             contactCorrection.force_N += dp * kernel.head<3>();
             contactCorrection.moment_Nm += dp * kernel.tail<3>();
-            // dh/dpose at the point, exactly: -cos phi, -y cos(alpha) cos phi (~ -y cos phi,
-            // as the nodal basis), -sin phi; interpolated from the nodal basis.
-            const double ds = (ps.dPressure_dGap_PaPerM - sInterp) * wgt;
+            // Stiffness: the derivative of p_c(h_bilinear) at the point is
+            // dp_c/dh(h_g) * (bilinear interpolant of dGap_dPose), that of the nodal
+            // interpolant the interpolant of the nodal products s_k dGap_dPose_k; their
+            // difference, with the same kernel (the boundary shear is shearPerPressure p_c
+            // for the fixed sliding velocity), corrects the nodal stiffness exactly.
             for (int col = 0; col < 3; ++col) {
-              const double dh = n00 * gap.dGap_dPose(k00, col) + n10 * gap.dGap_dPose(k10, col) +
-                                n01 * gap.dGap_dPose(k01, col) + n11 * gap.dGap_dPose(k11, col);
-              // Pressure part only (as for the nodal derivative).
-              Eigen::Matrix<double, 6, 1> kp;
-              kp << -c, 0.0, -sn, -y * sn, 0.0, y * c;
-              contactStiffnessCorrection.col(col) += ds * dh * kp;
+              const double* dh = gap.dGap_dPose.col(col).data();
+              const double dhg = n00 * dh[k00] + n10 * dh[k10] + n01 * dh[k01] + n11 * dh[k11];
+              const double sdInterp = n00 * sNode[k00] * dh[k00] + n10 * sNode[k10] * dh[k10] +
+                                      n01 * sNode[k01] * dh[k01] + n11 * sNode[k11] * dh[k11];
+              contactStiffnessCorrection.col(col) +=
+                  ((ps.dPressure_dGap_PaPerM * dhg - sdInterp) * wgt) * kernel;
             }
           }
         }
@@ -353,11 +353,16 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
     m.pressureColumn = film.dPressure_dVelocity.col(c).array();
     out.dLoads_dPoseRate.col(c) = stack(grid.calcLoadsOnPiston(m.pressureColumn));
   }
+  // Asperity stiffness: the derivative of the asperity loads (contact pressure and the
+  // boundary shear shearPerPressure * p_c it carries) for the fixed sliding velocity.
   const Eigen::Map<const Eigen::ArrayXd> slope(out.contact.dPressure_dGap_PaPerM.data(), n);
   for (int c = 0; c < 3; ++c) {
     m.pressureColumn = slope * gap.dGap_dPose.col(c).array();
+    m.shearColumnX = m.shearPerPressure[0] * m.pressureColumn;
+    m.shearColumnY = m.shearPerPressure[1] * m.pressureColumn;
     out.dLoads_dPose.col(c) =
-        stack(grid.calcLoadsOnPiston(m.pressureColumn)) + m.contactStiffnessCorrection.col(c);
+        stack(grid.calcLoadsOnPiston(m.pressureColumn, m.shearColumnY, m.shearColumnX)) +
+        m.contactStiffnessCorrection.col(c);
   }
 
   // Figures.

@@ -20,7 +20,11 @@
 //                  matters only where the liner slides in), the flow-factor model of the
 //                  side (Patir & Cheng; smooth when sigma = 0)
 //   contact        p_c(h) of the asperity law on the NOMINAL gap (it carries the load where
-//                  the clamp holds the film open), its slope dp_c/dh
+//                  the clamp holds the film open), its slope dp_c/dh; its loads are those
+//                  of the nodal interpolant except in cells whose smallest corner gap is
+//                  below 4.5 sigma, where p_c(h) of the bilinear gap is integrated at 6 x 6
+//                  Gauss points (a contact at an edge is often narrower than a cell: the
+//                  interpolant alone overestimated an edge contact 4.8-fold at 64 x 48)
 //   boundary shear tau_b = BoundaryFriction::calcShearStress_Pa(p_c, -U) on the skirt
 // Tractions on the skirt: normal p = p_film + p_c (minus edgePressure_Pa, see below), axial
 // tau_y = film shear on surface 2 along y + tau_b,y, circumferential tau_phi = film shear on
@@ -31,10 +35,17 @@
 // Derivatives (for the implicit time stepper; pose order kLateral, kTilt, kTertiary):
 //   dLoads_dPoseRate  6 x 3: (force; moment) per unit pose rate, from the film's squeeze
 //                     derivatives (FilmResult::dPressure_dVelocity; exact for the final
-//                     cavitation set), pressure part only; columns beyond
+//                     cavitation set), pressure part only (the film shear's part is
+//                     ~h/L and h/(2R) of it); columns beyond
 //                     squeezeColumns are zero
-//   dLoads_dPose      6 x 3: from the asperity law's exact slope, dp_c/dh * dh/dpose,
-//                     pressure part only. The film's own stiffness (the change of the wedge
+//   dLoads_dPose      6 x 3: the derivative of asperityLoads (contact pressure AND the
+//                     boundary shear it carries, for the fixed sliding velocity) from the
+//                     asperity law's exact slope, dp_c/dh * dh/dpose: of the nodal
+//                     interpolant plus the Gauss correction (above), i.e. exact for the
+//                     loads as computed while the set of Gauss-corrected cells stays. The
+//                     boundary shear is f g(|U|) p_c: its stiffness is all of dF_y and, with
+//                     the arm R against the pressure's y, ~R f / |y| (15..20 % on a skirt) of
+//                     the tilt moment's. The film's own stiffness (the change of the wedge
 //                     pressure with the pose) is NOT included: it is not stiff (the film is
 //                     overdamped: K/C is slow), LinearlyImplicitStepper.h explains why that
 //                     is enough.

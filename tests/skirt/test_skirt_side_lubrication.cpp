@@ -304,6 +304,41 @@ TEST(SkirtSideLubrication, TiltSqueezeDerivativeMatchesTheClosedForms) {
   EXPECT_LT(errSB, 0.02);
 }
 
+TEST(SkirtSideLubrication, ClampedGapSqueezesWithTheClampsSlope) {
+  // A nominal gap h at the clamp (h = 2 h_c, mixed contact) squeezing laterally: the film
+  // sees the clamped gap h_f = (h + h_c + sqrt((h - h_c)^2 + h_c^2)) / 2 and its rate
+  // dh_f/dt = (dh_f/dh) dh/dt, dh_f/dh = (1 + (h - h_c)/sqrt((h - h_c)^2 + h_c^2)) / 2 (the
+  // header's clamp), both the gap rate and the squeeze basis. So the film's F_x and its
+  // lateral squeeze derivative are the exact rectangle solution above with c0 -> h_f and
+  // de/dt -> (dh_f/dh) de/dt (grid error 2e-3, as above). h_c = max(0.1 sigma, 10 nm): with
+  // the contact law's sigma when the flow factors are smooth (0.05 um here), and the floor
+  // 10 nm for a composite roughness of 16.7 nm.
+  const double R = 0.037, arc = 2.6, L = 0.01, yMid = -0.005, eta = 0.01, eDot = 1e-6;
+  for (double rq : {0.3e-6, 0.01e-6}) {  // liner Rq; skirt 4/3 of it: sigma 0.5 um, 16.7 nm
+    const auto law = gtLaw(rq, rq * 4.0 / 3.0);
+    const double sigma = law->compositeSigma_m();
+    const double hc = std::max(0.1 * sigma, 1e-8);
+    const ps::SkirtSideGrid g = makeGrid(arc, L, yMid + 0.5 * L);
+    ps::SkirtSideLubrication lub = makeLubrication(g, smooth(), tightSolver(), law);
+    EXPECT_DOUBLE_EQ(lub.getClampGap_m(), hc);
+    const double h = 2.0 * hc, root = std::sqrt((h - hc) * (h - hc) + hc * hc);
+    const double hf = 0.5 * (h + hc + root), slope = 0.5 * (1.0 + (h - hc) / root);
+    Pose q;
+    q.eDot = eDot;
+    ps::SkirtSideResults out;
+    lub.solve(rigidFields(g, h, q), inputs(eta), out);
+    EXPECT_NEAR(out.filmGap_m.maxCoeff(), hf, 1e-15 * hf);
+    const Eigen::ArrayXd p = out.film.pressure_Pa();
+    const double fx = g.calcLoadsOnPiston(p).force_N.x();
+    const SqueezeLoads ex =
+        exactRectangleSqueeze(R, arc, L, yMid - 0.5 * L, hf, eta, slope * eDot, 0.0);
+    std::printf("  sigma %.3g m: h_c %.3g m, h_f %.4g m, slope %.4f; F_x %.6g N vs %.6g N\n", sigma,
+                hc, hf, slope, fx, ex.fx);
+    EXPECT_LT(relErr(fx, ex.fx), 2e-3);
+    EXPECT_LT(relErr(out.dLoads_dPoseRate(0, ps::kLateral), ex.fx / eDot), 2e-3);
+  }
+}
+
 // ------------------------------------------------------------------------------------------
 // 2. Axial sliding U (liner relative to skirt along +y) with a small tilt alpha > 0, e = 0:
 // every phi-line has the linear gap h(y) = c0 - y alpha cos phi, decreasing along +y: a

@@ -12,9 +12,10 @@
 //
 // Per node (k = i + nPhi j, SkirtSideGrid.h):
 //   film gap       h_f = (h + h_c + sqrt((h - h_c)^2 + h_c^2)) / 2 of the nominal gap h, a
-//                  smooth clamp >= h_c = clampFraction * sigma (PatirChengFlowFactors.h: it
-//                  changes the film gap by < 1.2 % at h/sigma >= 0.5); the gap rate and the
-//                  squeeze basis are multiplied by dh_f/dh
+//                  smooth clamp >= h_c = max(clampFraction * sigma, minimumClampGap_m),
+//                  sigma = getCompositeSigma_m() (PatirChengFlowFactors.h: it changes the
+//                  film gap by < 1.2 % at h/sigma >= 0.5); the gap rate and the squeeze
+//                  basis are multiplied by dh_f/dh
 //   film           lubrication::FilmSolver on SkirtSideGrid::getFilmGrid(), all four edges
 //                  open at edgePressure_Pa, the inlet supply film on both axial edges (it
 //                  matters only where the liner slides in), the flow-factor model of the
@@ -83,10 +84,11 @@ struct SkirtLubricationParameters {
   double cavitationPressure_Pa = 0.0;     // p_cav, gauge [Pa], default 0
   double edgePressure_Pa = 0.0;           // pressure on all four edges, gauge [Pa], default 0
   lubrication::FilmSolverOptions solver;  // fast active-set solver by default
-  // h_c of the film-gap clamp as a fraction of the composite roughness sigma [-], > 0,
-  // default 0.1; with sigma = 0 (smooth surfaces) h_c = minimumClampGap_m.
-  double clampFraction = 0.1;
-  double minimumClampGap_m = 1e-8;  // [m], > 0, default 10 nm
+  // The film-gap clamp h_c = max(clampFraction * sigma, minimumClampGap_m), sigma the
+  // composite roughness of getCompositeSigma_m() (the flow factors', or the contact law's
+  // when the flow factors are smooth: the contact law always has one).
+  double clampFraction = 0.1;       // [-], > 0, default 0.1
+  double minimumClampGap_m = 1e-8;  // floor of h_c [m], > 0, default 10 nm
   // Archard wear coefficient k/H of the liner-skirt pair, wear volume per (normal force x
   // sliding distance) [m^2/N] = [1/Pa], >= 0, default 0 (no wear reported).
   double wearCoefficient_m2pN = 0.0;
@@ -163,7 +165,8 @@ class SkirtSideLubrication {
 
   const SkirtSideGrid& getGrid() const;
   const SkirtLubricationParameters& getParameters() const;
-  // Composite roughness sigma of the pair [m] and the clamp gap h_c in use [m].
+  // Composite roughness sigma of the pair [m] (the flow factors'; the contact law's when the
+  // flow factors are smooth) and the clamp gap h_c in use [m].
   double getCompositeSigma_m() const;
   double getClampGap_m() const;
 

@@ -25,6 +25,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "AllocationCounter.h"
 #include "ExpectInvalidArgument.h"
 #include "SkirtTestSupport.h"
@@ -716,6 +718,64 @@ TEST(SkirtSideLubrication, EdgeContactConvergesUnderRefinementToTheExactGapQuadr
   EXPECT_LT(errDefault, 5e-3);
 }
 
+// The same edge contact off-centre (z_t = 3 um) and sliding (U = (0.4, 4) m/s, boundary
+// friction f = 0.1, v_eps = 1 mm/s): all six loads against the quadrature of the traction
+//   t = -p_c e_r + tau_y e_y + tau_phi e_phi,  (tau_phi, tau_y) = f p_c U / sqrt(|U|^2 + v_eps^2)
+// (BoundaryFriction.h: on the skirt, along U), force int t dA and moment int r x t dA with
+// r = (R cos phi, y, R sin phi) and the unit vectors built here as 3-vectors (not the load
+// formulas of SkirtSideGrid.h). This checks the moment arms of the Gauss correction's kernel.
+TEST(SkirtSideLubrication, OffCentreSlidingEdgeContactMatchesTheTractionQuadratureRowByRow) {
+  EdgeContact ec;
+  const auto law = gtLaw();
+  const double sigma = law->compositeSigma_m(), z = 3e-6, ux = 0.4, uy = 4.0;
+  ec.e = ec.c0 - ec.yBottom() * ec.alpha + 0.5 * sigma;
+  const double fg = 0.1 / std::sqrt(ux * ux + uy * uy + 1e-6);  // f g(|U|) / |U|
+  // Reference (same rule as referenceContactLoads).
+  const auto [xp, wp] = ps::test::gaussLegendre(200);
+  const auto [xg, wg] = ps::test::gaussLegendre(6);
+  Eigen::Vector3d F = Eigen::Vector3d::Zero(), M = Eigen::Vector3d::Zero();
+  const double yB = ec.yBottom();
+  for (std::size_t a = 0; a < xp.size(); ++a) {
+    const double phi = 0.5 * ec.arc * xp[a], wphi = 0.5 * ec.arc * wp[a] * ec.R;
+    const Eigen::Vector3d er(std::cos(phi), 0.0, std::sin(phi)), ey(0.0, 1.0, 0.0),
+        ephi(-std::sin(phi), 0.0, std::cos(phi));
+    for (int panel = 0; panel < 440; ++panel) {
+      const double y0 =
+          panel < 400 ? yB + 1e-5 * panel : yB + 0.004 + (ec.L - 0.004) / 40 * (panel - 400);
+      const double d = panel < 400 ? 1e-5 : (ec.L - 0.004) / 40;
+      for (std::size_t m = 0; m < xg.size(); ++m) {
+        const double y = y0 + 0.5 * d * (1.0 + xg[m]), w = wphi * 0.5 * d * wg[m];
+        const double p = law->calcPressure(ec.gap(phi, y) - z * std::sin(phi));
+        const Eigen::Vector3d t = -p * er + fg * p * uy * ey + fg * p * ux * ephi;
+        const Eigen::Vector3d r(ec.R * std::cos(phi), y, ec.R * std::sin(phi));
+        F += w * t;
+        M += w * r.cross(t);
+      }
+    }
+  }
+  Loads6 ref;
+  ref << F, M;
+  std::printf("  reference: F = (%.6g, %.6g, %.6g) N, M = (%.6g, %.6g, %.6g) N m\n", ref[0], ref[1],
+              ref[2], ref[3], ref[4], ref[5]);
+  for (const auto& sz : {std::pair{64, 48}, std::pair{256, 192}}) {
+    const ps::SkirtSideGrid g = makeGrid(ec.arc, ec.L, ec.yTop, sz.first, sz.second);
+    ps::SkirtSideLubrication lub = makeLubrication(g, patirCheng(), tightSolver(), law);
+    Pose q;
+    q.e = ec.e;
+    q.alpha = ec.alpha;
+    q.z = z;
+    ps::SkirtSideResults out;
+    lub.solve(rigidFields(g, ec.c0, q), inputs(0.01, uy, ux), out);
+    const Loads6 code = stack(out.asperityLoads);
+    double worst = 0.0;
+    for (int r = 0; r < 6; ++r)
+      worst = std::max(worst, relErr(code[r], ref[r]));
+    std::printf("  %d x %d: worst row error %.2e\n", sz.first, sz.second, worst);
+    // 0.5 % at the default grid (as above), 0.05 % at 4 x the nodes (dphi^2: 1/16).
+    EXPECT_LT(worst, sz.first == 64 ? 5e-3 : 5e-4) << sz.first << " x " << sz.second;
+  }
+}
+
 TEST(SkirtSideLubrication, EdgeContactStiffnessEqualsCentralDifferences) {
   // The stiffness where the Gauss correction carries most of the load (the edge contact above:
   // the nodal interpolant alone is 4.8 times the load at 64 x 48): dLoads_dPose against central
@@ -780,6 +840,63 @@ TEST(SkirtSideLubrication, WithoutCellsNearContactTheAsperityLoadsAreTheNodalInt
   const double W = (g.getAreaWeights_m2() * pc).sum();
   const double fy = 0.1 * uy / std::sqrt(uy * uy + ux * ux + 1e-6);
   EXPECT_LT(relErr(out.asperityFrictionAxial_N, fy * W), 1e-12);
+}
+
+// The anti-thrust side is the mirror image of the thrust side in the plane x = 0 (phi -> pi -
+// phi; its film grid's x runs the other way). Mirroring the pose and its rates (e, alpha ->
+// -e, -alpha) with the same axial sliding must mirror the loads: F_x, M_y, M_z change sign,
+// F_y, F_z, M_x do not (moments are pseudo-vectors), and every scalar figure (normal forces,
+// friction, power, shares, h_min, wear) is the same. A case with everything on: squeeze,
+// wedge, cavitation, a mixed contact at the bottom edge with boundary friction. Tolerance
+// 1e-8 of the largest load (solver tolerance; the two grids are mirror images up to rounding
+// of their angles).
+TEST(SkirtSideLubrication, AntiThrustSideIsTheMirrorImageOfTheThrustSide) {
+  ps::SkirtSideResults r[2];
+  for (int s = 0; s < 2; ++s) {
+    const ps::SkirtSide side = s == 0 ? ps::SkirtSide::Thrust : ps::SkirtSide::AntiThrust;
+    const ps::SkirtSideGrid g = makeGrid(kPi / 3, 0.04, 0.015, 64, 48, side);
+    ps::SkirtLubricationParameters lp = tightSolver();
+    lp.wearCoefficient_m2pN = 1e-17;
+    ps::SkirtSideLubrication lub = makeLubrication(g, patirCheng(), lp);
+    const double sign = s == 0 ? 1.0 : -1.0;
+    Pose q;
+    q.alpha = -2e-4 * sign;
+    q.e = (20e-6 - 0.025 * 2e-4 - 1.5 * lub.getCompositeSigma_m()) * sign;
+    q.eDot = -0.0005 * sign;  // opening: cavitation
+    q.alphaDot = -0.05 * sign;
+    lub.solve(rigidFields(g, 20e-6, q), inputs(0.008, 6.0), r[s]);
+  }
+  const Loads6 t = stack(r[0].totalLoads), a = stack(r[1].totalLoads);
+  Loads6 mirror;
+  mirror << -1, 1, 1, 1, -1, -1;
+  const double scale = t.cwiseAbs().maxCoeff();
+  EXPECT_LT((a - mirror.cwiseProduct(t)).cwiseAbs().maxCoeff(), 1e-8 * scale)
+      << "thrust " << t.transpose() << "\nanti-thrust " << a.transpose();
+  for (int c = 0; c < 2; ++c) {  // lateral, tilt columns: mirrored rows, mirrored coordinate
+    EXPECT_LT((r[1].dLoads_dPoseRate.col(c) + mirror.cwiseProduct(r[0].dLoads_dPoseRate.col(c)))
+                  .cwiseAbs()
+                  .maxCoeff(),
+              1e-8 * r[0].dLoads_dPoseRate.col(c).cwiseAbs().maxCoeff());
+    EXPECT_LT((r[1].dLoads_dPose.col(c) + mirror.cwiseProduct(r[0].dLoads_dPose.col(c)))
+                  .cwiseAbs()
+                  .maxCoeff(),
+              1e-8 * r[0].dLoads_dPose.col(c).cwiseAbs().maxCoeff());
+  }
+  auto same = [](double x, double y, const char* what) {
+    EXPECT_LE(std::abs(x - y), 1e-8 * std::max(std::abs(x), 1e-300)) << what;
+  };
+  EXPECT_GT(r[0].hydrodynamicNormalForce_N, 0.0);
+  EXPECT_GT(r[0].asperityNormalForce_N, 0.0);
+  same(r[0].hydrodynamicNormalForce_N, r[1].hydrodynamicNormalForce_N, "hydrodynamic normal");
+  same(r[0].asperityNormalForce_N, r[1].asperityNormalForce_N, "asperity normal");
+  same(r[0].hydrodynamicFrictionAxial_N, r[1].hydrodynamicFrictionAxial_N, "film friction");
+  same(r[0].asperityFrictionAxial_N, r[1].asperityFrictionAxial_N, "boundary friction");
+  same(r[0].frictionPower_W, r[1].frictionPower_W, "power");
+  same(r[0].minFilmThickness_m, r[1].minFilmThickness_m, "h_min");
+  same(r[0].mixedShare, r[1].mixedShare, "mixed share");
+  same(r[0].wearRate_m3ps, r[1].wearRate_m3ps, "wear");
+  EXPECT_GT(r[0].film.cavitatedNodes, 0);
+  EXPECT_EQ(r[0].film.cavitatedNodes, r[1].film.cavitatedNodes);
 }
 
 // ------------------------------------------------------------------------------------------

@@ -1037,6 +1037,12 @@ TEST(SkirtSideLubrication, BadInputIsRejectedNamingTheInput) {
               {c, "parameters.wearCoefficient_m2pN = nan", "non-negative"});
   ctorRejects([](P& p) { p.cavitationPressure_Pa = INFINITY; },
               {c, "parameters.cavitationPressure_Pa = inf Pa", "finite"});
+  ctorRejects(
+      [](P& p) {
+        p.cavitation = lub::CavitationModel::MassConserving;
+        p.edgePressure_Pa = -1e3;
+      },
+      {c, "parameters.edgePressure_Pa = -1000 Pa", "parameters.cavitationPressure_Pa = 0 Pa"});
   ctorRejects([](P& p) { p.edgePressure_Pa = NAN; },
               {c, "parameters.edgePressure_Pa = nan Pa", "finite"});
   expectInvalidArgument(

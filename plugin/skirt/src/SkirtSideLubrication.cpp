@@ -212,6 +212,14 @@ struct SkirtSideLubrication::Impl {
     common::requireFinite(p.cavitationPressure_Pa, kConstructor, "parameters.cavitationPressure_Pa",
                           "Pa");
     common::requireFinite(p.edgePressure_Pa, kConstructor, "parameters.edgePressure_Pa", "Pa");
+    // The mass-conserving model has no solution with an open edge below p_cav (FilmProblem.h):
+    // say so here, in the caller's names, rather than at the first solve.
+    if (p.cavitation == lubrication::CavitationModel::MassConserving &&
+        p.edgePressure_Pa < p.cavitationPressure_Pa)
+      bad(common::message(
+          "parameters.edgePressure_Pa = ", p.edgePressure_Pa,
+          " Pa is below parameters.cavitationPressure_Pa = ", p.cavitationPressure_Pa,
+          " Pa; the mass-conserving model needs the edges at or above it"));
     sigma_m = flowFactors->compositeSigma_m();
     const double lawSigma = contactLaw->compositeSigma_m();
     if (sigma_m > 0.0 && std::abs(lawSigma - sigma_m) > 1e-9 * sigma_m) {

@@ -90,7 +90,7 @@ constexpr double kGaussW[kGauss] = {0.085662246189585178, 0.18038078652406930,
                                     0.18038078652406930,  0.085662246189585178};
 
 // Cells whose smallest corner gap is below this many sigma get the asperity pressure
-// integrated at Gauss points (F_{5/2}(4.5) is ~2e-6 of F_{5/2}(0): beyond it the nodal
+// integrated at Gauss points (F_{5/2}(4.5) is 3.2e-7 of F_{5/2}(0): beyond it the nodal
 // interpolant's error is negligible).
 constexpr double kContactQuadratureFilmRatio = 4.5;
 

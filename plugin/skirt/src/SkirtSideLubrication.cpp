@@ -3,19 +3,82 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include "pistondyn/common/Validation.h"
+
 namespace pistondyn::skirt {
 namespace {
+
+constexpr const char* kConstructor = "SkirtSideLubrication";
+constexpr const char* kSolve = "SkirtSideLubrication::solve";
 
 const char* sideName(SkirtSide s) {
   return s == SkirtSide::Thrust ? "thrust" : "anti-thrust";
 }
 
 [[noreturn]] void bad(const std::string& what) {
-  throw std::invalid_argument("SkirtSideLubrication: " + what);
+  common::throwInvalidArgument(kConstructor, what);
+}
+
+// Checks of one call's inputs (messages: docs/CONVENTIONS.md; names are built only to throw, so
+// a passing call allocates nothing).
+template <class... Parts>
+[[noreturn]] void badInput(const Parts&... parts) {
+  common::throwInvalidArgument(kSolve, common::message(parts...));
+}
+
+void requireFiniteEntries(const Eigen::ArrayXd& a, const char* name, const char* unit,
+                          SkirtSide side) {
+  for (Eigen::Index k = 0; k < a.size(); ++k)
+    if (!std::isfinite(a[k]))
+      badInput(name, "[", k, "] = ", a[k], " ", unit, " must be finite (", sideName(side),
+               " side)");
+}
+
+void requireFiniteEntries(const Eigen::MatrixXd& a, Eigen::Index cols, const char* name,
+                          SkirtSide side) {
+  for (Eigen::Index c = 0; c < cols; ++c)
+    for (Eigen::Index k = 0; k < a.rows(); ++k)
+      if (!std::isfinite(a(k, c)))
+        badInput(name, "(", k, ", ", c, ") = ", a(k, c), " must be finite (", sideName(side),
+                 " side)");
+}
+
+void validateInputs(const GapFields& gap, const SkirtSideInputs& in, const SkirtSideGrid& grid) {
+  const Eigen::Index n = grid.nodeCount();
+  const SkirtSide side = grid.getSide();
+  if (gap.gap_m.size() != n)
+    badInput("gap.gap_m has ", gap.gap_m.size(), " entries, expected ", n, " (nodes of the ",
+             sideName(side), " side)");
+  if (gap.gapRate_mps.size() != n)
+    badInput("gap.gapRate_mps has ", gap.gapRate_mps.size(), " entries, expected ", n,
+             " (nodes of the ", sideName(side), " side)");
+  if (gap.dGap_dPose.rows() != n || gap.dGap_dPose.cols() != 3)
+    badInput("gap.dGap_dPose is ", gap.dGap_dPose.rows(), " x ", gap.dGap_dPose.cols(),
+             ", expected ", n, " x 3 (nodes of the ", sideName(side),
+             " side x lateral, tilt, tertiary)");
+  if (in.squeezeColumns < 0 || in.squeezeColumns > 3)
+    badInput("inputs.squeezeColumns = ", in.squeezeColumns, " must be 0..3");
+  if (gap.squeezeBasis.rows() != n || gap.squeezeBasis.cols() < in.squeezeColumns)
+    badInput("gap.squeezeBasis is ", gap.squeezeBasis.rows(), " x ", gap.squeezeBasis.cols(),
+             ", expected ", n, " rows (nodes of the ", sideName(side),
+             " side) and at least inputs.squeezeColumns = ", in.squeezeColumns, " columns");
+  requireFiniteEntries(gap.gap_m, "gap.gap_m", "m", side);
+  requireFiniteEntries(gap.gapRate_mps, "gap.gapRate_mps", "m/s", side);
+  requireFiniteEntries(gap.dGap_dPose, 3, "gap.dGap_dPose", side);
+  requireFiniteEntries(gap.squeezeBasis, in.squeezeColumns, "gap.squeezeBasis", side);
+  common::requirePositiveFinite(in.viscosity_Pas, kSolve, "inputs.viscosity_Pas", "Pa s");
+  common::requireFinite(in.slidingVelocityAxial_mps, kSolve, "inputs.slidingVelocityAxial_mps",
+                        "m/s");
+  common::requireFinite(in.slidingVelocityCircumferential_mps, kSolve,
+                        "inputs.slidingVelocityCircumferential_mps", "m/s");
+  if (!(in.supplyFilm_m > 0.0))
+    badInput("inputs.supplyFilm_m = ", in.supplyFilm_m,
+             " m must be positive (+inf: fully flooded)");
+  if (std::isnan(in.timeStep_s))
+    badInput("inputs.timeStep_s = ", in.timeStep_s, " s must not be NaN (+inf or <= 0: steady)");
 }
 
 // Gauss-Legendre nodes and weights on [0, 1], 6 points (exact for degree 11).
@@ -27,7 +90,7 @@ constexpr double kGaussW[kGauss] = {0.085662246189585178, 0.18038078652406930,
                                     0.18038078652406930,  0.085662246189585178};
 
 // Cells whose smallest corner gap is below this many sigma get the asperity pressure
-// integrated at Gauss points (F_{5/2}(4.5) is ~2e-6 of F_{5/2}(0): beyond it the nodal
+// integrated at Gauss points (F_{5/2}(4.5) is 3.2e-7 of F_{5/2}(0): beyond it the nodal
 // interpolant's error is negligible).
 constexpr double kContactQuadratureFilmRatio = 4.5;
 
@@ -51,7 +114,7 @@ struct SkirtSideLubrication::Impl {
   lubrication::FilmProblem problem;
   lubrication::FilmState warmStart;
   bool haveWarmStart = false;
-  Eigen::ArrayXd clampSlope, pressureColumn, zero;
+  Eigen::ArrayXd clampSlope, pressureColumn, shearColumnX, shearColumnY, zero;
   Eigen::ArrayXd couetteY, couetteX;     // film shear on the skirt (Couette + Poiseuille)
   Eigen::ArrayXXd boundaryX, boundaryY;  // boundary shear as grid-shaped scratch
   // Outward normal of the side's centre line (cos phi_c, sin phi_c) in (x, z).
@@ -100,8 +163,6 @@ struct SkirtSideLubrication::Impl {
             const contact_forces::PressureAndSlope ps = contactLaw->calcPressureAndSlope(hg);
             const double pInterp =
                 n00 * pNode[k00] + n10 * pNode[k10] + n01 * pNode[k01] + n11 * pNode[k11];
-            const double sInterp =
-                n00 * sNode[k00] + n10 * sNode[k10] + n01 * sNode[k01] + n11 * sNode[k11];
             const double wgt = kGaussW[a] * kGaussW[b] * area;
             const double dp = (ps.pressure_Pa - pInterp) * wgt;
             contactPressureIntegralCorrection_N += dp;
@@ -111,16 +172,18 @@ struct SkirtSideLubrication::Impl {
                 -R * tx, y * c + R * c * ty + tx * y * sn;
             contactCorrection.force_N += dp * kernel.head<3>();
             contactCorrection.moment_Nm += dp * kernel.tail<3>();
-            // dh/dpose at the point, exactly: -cos phi, -y cos(alpha) cos phi (~ -y cos phi,
-            // as the nodal basis), -sin phi; interpolated from the nodal basis.
-            const double ds = (ps.dPressure_dGap_PaPerM - sInterp) * wgt;
+            // Stiffness: the derivative of p_c(h_bilinear) at the point is
+            // dp_c/dh(h_g) * (bilinear interpolant of dGap_dPose), that of the nodal
+            // interpolant the interpolant of the nodal products s_k dGap_dPose_k; their
+            // difference, with the same kernel (the boundary shear is shearPerPressure p_c
+            // for the fixed sliding velocity), corrects the nodal stiffness exactly.
             for (int col = 0; col < 3; ++col) {
-              const double dh = n00 * gap.dGap_dPose(k00, col) + n10 * gap.dGap_dPose(k10, col) +
-                                n01 * gap.dGap_dPose(k01, col) + n11 * gap.dGap_dPose(k11, col);
-              // Pressure part only (as for the nodal derivative).
-              Eigen::Matrix<double, 6, 1> kp;
-              kp << -c, 0.0, -sn, -y * sn, 0.0, y * c;
-              contactStiffnessCorrection.col(col) += ds * dh * kp;
+              const double* dh = gap.dGap_dPose.col(col).data();
+              const double dhg = n00 * dh[k00] + n10 * dh[k10] + n01 * dh[k01] + n11 * dh[k11];
+              const double sdInterp = n00 * sNode[k00] * dh[k00] + n10 * sNode[k10] * dh[k10] +
+                                      n01 * sNode[k01] * dh[k01] + n11 * sNode[k11] * dh[k11];
+              contactStiffnessCorrection.col(col) +=
+                  ((ps.dPressure_dGap_PaPerM * dhg - sdInterp) * wgt) * kernel;
             }
           }
         }
@@ -141,21 +204,28 @@ struct SkirtSideLubrication::Impl {
       bad("flowFactors is null");
     if (!contactLaw)
       bad("contactLaw is null");
-    if (!(p.clampFraction > 0.0) || !std::isfinite(p.clampFraction))
-      bad("clampFraction must be positive and finite");
-    if (!(p.minimumClampGap_m > 0.0) || !std::isfinite(p.minimumClampGap_m))
-      bad("minimumClampGap_m must be positive and finite");
-    if (!(p.wearCoefficient_m2pN >= 0.0) || !std::isfinite(p.wearCoefficient_m2pN))
-      bad("wearCoefficient_m2pN must be non-negative and finite");
-    if (!std::isfinite(p.cavitationPressure_Pa) || !std::isfinite(p.edgePressure_Pa))
-      bad("cavitationPressure_Pa and edgePressure_Pa must be finite");
+    common::requirePositiveFinite(p.clampFraction, kConstructor, "parameters.clampFraction", "");
+    common::requirePositiveFinite(p.minimumClampGap_m, kConstructor, "parameters.minimumClampGap_m",
+                                  "m");
+    common::requireNonNegativeFinite(p.wearCoefficient_m2pN, kConstructor,
+                                     "parameters.wearCoefficient_m2pN", "m^2/N");
+    common::requireFinite(p.cavitationPressure_Pa, kConstructor, "parameters.cavitationPressure_Pa",
+                          "Pa");
+    common::requireFinite(p.edgePressure_Pa, kConstructor, "parameters.edgePressure_Pa", "Pa");
+    // The mass-conserving model has no solution with an open edge below p_cav (FilmProblem.h):
+    // say so here, in the caller's names, rather than at the first solve.
+    if (p.cavitation == lubrication::CavitationModel::MassConserving &&
+        p.edgePressure_Pa < p.cavitationPressure_Pa)
+      bad(common::message(
+          "parameters.edgePressure_Pa = ", p.edgePressure_Pa,
+          " Pa is below parameters.cavitationPressure_Pa = ", p.cavitationPressure_Pa,
+          " Pa; the mass-conserving model needs the edges at or above it"));
     sigma_m = flowFactors->compositeSigma_m();
     const double lawSigma = contactLaw->compositeSigma_m();
     if (sigma_m > 0.0 && std::abs(lawSigma - sigma_m) > 1e-9 * sigma_m) {
-      std::ostringstream m;
-      m << "the flow factors' roughness sigma = " << sigma_m << " m and the contact law's "
-        << lawSigma << " m differ: enter one roughness pair for both";
-      bad(m.str());
+      bad(common::message("the flow factors' composite roughness sigma = ", sigma_m,
+                          " m and the contact law's sigma = ", lawSigma,
+                          " m differ: enter one roughness pair (Rq of liner and skirt) for both"));
     }
     if (sigma_m == 0.0)
       sigma_m = lawSigma;
@@ -210,22 +280,7 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   Impl& m = *impl_;
   const SkirtSideGrid& grid = m.grid;
   const int n = grid.nodeCount();
-  if (gap.gap_m.size() != n || gap.gapRate_mps.size() != n || gap.squeezeBasis.rows() != n) {
-    bad(std::string("gap fields of the wrong size for the ") + sideName(grid.getSide()) +
-        " side (" + std::to_string(gap.gap_m.size()) + " nodes, expected " + std::to_string(n) +
-        ")");
-  }
-  if (!(in.viscosity_Pas > 0.0) || !std::isfinite(in.viscosity_Pas))
-    bad("inputs.viscosity_Pas must be positive and finite");
-  if (!std::isfinite(in.slidingVelocityAxial_mps) ||
-      !std::isfinite(in.slidingVelocityCircumferential_mps))
-    bad("inputs' sliding velocities must be finite");
-  if (!(in.supplyFilm_m > 0.0))
-    bad("inputs.supplyFilm_m must be positive (or +inf)");
-  if (in.squeezeColumns < 0 || in.squeezeColumns > 3)
-    bad("inputs.squeezeColumns must be 0..3");
-  if (!gap.gap_m.allFinite() || !gap.gapRate_mps.allFinite())
-    bad(std::string("the ") + sideName(grid.getSide()) + " side's gap or gap rate is not finite");
+  validateInputs(gap, in, grid);
 
   // Film gap: the smooth clamp of the nominal gap, and its slope for the rates.
   lubrication::FilmProblem& p = m.problem;
@@ -248,7 +303,9 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   if (p.cavitation == lubrication::CavitationModel::MassConserving) {
     if (in.previousFillFraction != nullptr && in.previousFillFraction->size() > 0) {
       if (in.previousFillFraction->size() != n)
-        bad("inputs.previousFillFraction has the wrong size");
+        badInput("inputs.previousFillFraction has ", in.previousFillFraction->size(),
+                 " entries, expected ", n, " (nodes of the ", sideName(grid.getSide()),
+                 " side; empty: full film)");
       p.previousFillFraction = *in.previousFillFraction;
     } else {
       p.previousFillFraction.resize(0);
@@ -259,12 +316,12 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   m.solver.solve(grid.getFilmGrid(), p, m.haveWarmStart ? &m.warmStart : nullptr, out.film);
   const lubrication::FilmResult& film = out.film;
   if (!film.converged) {
-    std::ostringstream msg;
-    msg << "the " << sideName(grid.getSide()) << " side's film solve did not converge (residual "
-        << film.residual << " after " << film.iterations << " iterations"
-        << (film.usedFallback ? ", reference-solver fallback included" : "") << ")";
     m.haveWarmStart = false;  // a failed iterate is a poor start
-    throw std::runtime_error(msg.str());
+    throw std::runtime_error(common::message(
+        kSolve, ": the ", sideName(grid.getSide()),
+        " side's film solve did not converge (residual ", film.residual, " > tolerance ",
+        m.solver.getOptions().tolerance, " after ", film.iterations, " iterations",
+        film.usedFallback ? ", reference-solver fallback included" : "", ")"));
   }
   m.warmStart = film.state;
   m.haveWarmStart = true;
@@ -304,11 +361,16 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
     m.pressureColumn = film.dPressure_dVelocity.col(c).array();
     out.dLoads_dPoseRate.col(c) = stack(grid.calcLoadsOnPiston(m.pressureColumn));
   }
+  // Asperity stiffness: the derivative of the asperity loads (contact pressure and the
+  // boundary shear shearPerPressure * p_c it carries) for the fixed sliding velocity.
   const Eigen::Map<const Eigen::ArrayXd> slope(out.contact.dPressure_dGap_PaPerM.data(), n);
   for (int c = 0; c < 3; ++c) {
     m.pressureColumn = slope * gap.dGap_dPose.col(c).array();
+    m.shearColumnX = m.shearPerPressure[0] * m.pressureColumn;
+    m.shearColumnY = m.shearPerPressure[1] * m.pressureColumn;
     out.dLoads_dPose.col(c) =
-        stack(grid.calcLoadsOnPiston(m.pressureColumn)) + m.contactStiffnessCorrection.col(c);
+        stack(grid.calcLoadsOnPiston(m.pressureColumn, m.shearColumnY, m.shearColumnX)) +
+        m.contactStiffnessCorrection.col(c);
   }
 
   // Figures.

@@ -12,15 +12,20 @@
 //
 // Per node (k = i + nPhi j, SkirtSideGrid.h):
 //   film gap       h_f = (h + h_c + sqrt((h - h_c)^2 + h_c^2)) / 2 of the nominal gap h, a
-//                  smooth clamp >= h_c = clampFraction * sigma (PatirChengFlowFactors.h: it
-//                  changes the film gap by < 1.2 % at h/sigma >= 0.5); the gap rate and the
-//                  squeeze basis are multiplied by dh_f/dh
+//                  smooth clamp >= h_c = max(clampFraction * sigma, minimumClampGap_m),
+//                  sigma = getCompositeSigma_m() (PatirChengFlowFactors.h: it changes the
+//                  film gap by < 1.2 % at h/sigma >= 0.5); the gap rate and the squeeze
+//                  basis are multiplied by dh_f/dh
 //   film           lubrication::FilmSolver on SkirtSideGrid::getFilmGrid(), all four edges
 //                  open at edgePressure_Pa, the inlet supply film on both axial edges (it
 //                  matters only where the liner slides in), the flow-factor model of the
 //                  side (Patir & Cheng; smooth when sigma = 0)
 //   contact        p_c(h) of the asperity law on the NOMINAL gap (it carries the load where
-//                  the clamp holds the film open), its slope dp_c/dh
+//                  the clamp holds the film open), its slope dp_c/dh; its loads are those
+//                  of the nodal interpolant except in cells whose smallest corner gap is
+//                  below 4.5 sigma, where p_c(h) of the bilinear gap is integrated at 6 x 6
+//                  Gauss points (a contact at an edge is often narrower than a cell: the
+//                  interpolant alone overestimated an edge contact 4.8-fold at 64 x 48)
 //   boundary shear tau_b = BoundaryFriction::calcShearStress_Pa(p_c, -U) on the skirt
 // Tractions on the skirt: normal p = p_film + p_c (minus edgePressure_Pa, see below), axial
 // tau_y = film shear on surface 2 along y + tau_b,y, circumferential tau_phi = film shear on
@@ -31,10 +36,17 @@
 // Derivatives (for the implicit time stepper; pose order kLateral, kTilt, kTertiary):
 //   dLoads_dPoseRate  6 x 3: (force; moment) per unit pose rate, from the film's squeeze
 //                     derivatives (FilmResult::dPressure_dVelocity; exact for the final
-//                     cavitation set), pressure part only; columns beyond
+//                     cavitation set), pressure part only (the film shear's part is
+//                     ~h/L and h/(2R) of it); columns beyond
 //                     squeezeColumns are zero
-//   dLoads_dPose      6 x 3: from the asperity law's exact slope, dp_c/dh * dh/dpose,
-//                     pressure part only. The film's own stiffness (the change of the wedge
+//   dLoads_dPose      6 x 3: the derivative of asperityLoads (contact pressure AND the
+//                     boundary shear it carries, for the fixed sliding velocity) from the
+//                     asperity law's exact slope, dp_c/dh * dh/dpose: of the nodal
+//                     interpolant plus the Gauss correction (above), i.e. exact for the
+//                     loads as computed while the set of Gauss-corrected cells stays. The
+//                     boundary shear is f g(|U|) p_c: its stiffness is all of dF_y and, with
+//                     the arm R against the pressure's y, ~R f / |y| (15..20 % on a skirt) of
+//                     the tilt moment's. The film's own stiffness (the change of the wedge
 //                     pressure with the pose) is NOT included: it is not stiff (the film is
 //                     overdamped: K/C is slow), LinearlyImplicitStepper.h explains why that
 //                     is enough.
@@ -47,7 +59,9 @@
 // fraction) is NOT kept here: the caller passes the previous fill fraction and the time step
 // and stores the result's fill fraction in its own State.
 //
-// Errors: std::invalid_argument for inputs of the wrong size or not finite (naming them); a
+// Errors: std::invalid_argument for inputs of the wrong size or not finite (naming them: the
+// GapFields members gap_m, gapRate_mps, dGap_dPose (nodeCount x 3), squeezeBasis (nodeCount x
+// at least squeezeColumns), every SkirtSideInputs member, with the value and unit); a
 // film solve that does not converge (after the solver's own fallback) throws
 // std::runtime_error naming the side, the residual and the iterations, never returns NaN.
 
@@ -70,10 +84,11 @@ struct SkirtLubricationParameters {
   double cavitationPressure_Pa = 0.0;     // p_cav, gauge [Pa], default 0
   double edgePressure_Pa = 0.0;           // pressure on all four edges, gauge [Pa], default 0
   lubrication::FilmSolverOptions solver;  // fast active-set solver by default
-  // h_c of the film-gap clamp as a fraction of the composite roughness sigma [-], > 0,
-  // default 0.1; with sigma = 0 (smooth surfaces) h_c = minimumClampGap_m.
-  double clampFraction = 0.1;
-  double minimumClampGap_m = 1e-8;  // [m], > 0, default 10 nm
+  // The film-gap clamp h_c = max(clampFraction * sigma, minimumClampGap_m), sigma the
+  // composite roughness of getCompositeSigma_m() (the flow factors', or the contact law's
+  // when the flow factors are smooth: the contact law always has one).
+  double clampFraction = 0.1;       // [-], > 0, default 0.1
+  double minimumClampGap_m = 1e-8;  // floor of h_c [m], > 0, default 10 nm
   // Archard wear coefficient k/H of the liner-skirt pair, wear volume per (normal force x
   // sliding distance) [m^2/N] = [1/Pa], >= 0, default 0 (no wear reported).
   double wearCoefficient_m2pN = 0.0;
@@ -91,7 +106,7 @@ struct SkirtSideInputs {
   // (0..3; 2 = lateral and tilt, 3 with the tertiary motion).
   int squeezeColumns = 2;
   // Mass-conserving model only: fill fraction at the start of the step (nodeCount entries;
-  // empty = full film) and the step [s] (> 0; +inf or <= 0 = steady state).
+  // empty = full film) and the step [s] (> 0; +inf or <= 0 = steady state; NaN is rejected).
   const Eigen::ArrayXd* previousFillFraction = nullptr;
   double timeStep_s = std::numeric_limits<double>::infinity();
 };
@@ -150,7 +165,8 @@ class SkirtSideLubrication {
 
   const SkirtSideGrid& getGrid() const;
   const SkirtLubricationParameters& getParameters() const;
-  // Composite roughness sigma of the pair [m] and the clamp gap h_c in use [m].
+  // Composite roughness sigma of the pair [m] (the flow factors'; the contact law's when the
+  // flow factors are smooth) and the clamp gap h_c in use [m].
   double getCompositeSigma_m() const;
   double getClampGap_m() const;
 

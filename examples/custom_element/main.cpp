@@ -13,7 +13,7 @@
 #include <memory>
 #include <string>
 
-#include "pistondyn/cli/EngineDeck.h"
+#include "pistondyn/io/EngineDeck.h"
 #include "pistondyn/plugin/CycleSimulation.h"
 #include "pistondyn/plugin/LinerElement.h"
 
@@ -73,15 +73,15 @@ int main(int argc, char** argv) {
   const std::string deckPath = argc > 1 ? argv[1]
                                         : std::string(PISTONDYN_SOURCE_DIR) +
                                               "/examples/engines/gasoline_1400_2000rpm/engine.yaml";
-  const cli::EngineDeck deck = cli::loadEngineDeck(deckPath, {});
+  const io::EngineDeck deck = io::loadEngineDeck(deckPath, {});
   plugin::SimulationSettings settings = deck.simulation;
   settings.cycles = 2;  // let the compliant piston settle, compare the last cycle
   settings.outputStep_deg = 1.0;
 
-  auto ideal = cli::buildModel(deck);
+  auto ideal = io::buildModel(deck);
   const auto reference = plugin::CycleSimulation(*ideal, settings).run();
 
-  auto compliant = cli::buildModel(deck);
+  auto compliant = io::buildModel(deck);
   compliant->replaceElement("ideal_liner_guide",
                             std::make_unique<SpringLinerGuide>(SpringLinerGuide::Parameters{}));
   plugin::CycleSimulation sim(*compliant, settings);

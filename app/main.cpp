@@ -16,9 +16,9 @@
 
 #include <unistd.h>
 
-#include "pistondyn/cli/DeckError.h"
-#include "pistondyn/cli/EngineDeck.h"
-#include "pistondyn/cli/RunDeck.h"
+#include "pistondyn/io/DeckError.h"
+#include "pistondyn/io/EngineDeck.h"
+#include "pistondyn/io/RunDeck.h"
 
 namespace {
 
@@ -83,7 +83,7 @@ bool parseArgs(int argc, char** argv, Args& a, std::string& error) {
   return true;
 }
 
-void printSummary(const pistondyn::cli::EngineDeck& deck, const pistondyn::cli::RunOutcome& o,
+void printSummary(const pistondyn::io::EngineDeck& deck, const pistondyn::io::RunOutcome& o,
                   const std::string& outDir) {
   const auto& s = o.summary;
   std::printf("pistondyn: %s\n", deck.engine.name.c_str());
@@ -127,10 +127,10 @@ int main(int argc, char** argv) {
       return kExitUsage;
     }
   }
-  pistondyn::cli::EngineDeck deck;
+  pistondyn::io::EngineDeck deck;
   try {
-    deck = pistondyn::cli::loadEngineDeck(args.deck, args.overrides);
-  } catch (const pistondyn::cli::DeckError& e) {
+    deck = pistondyn::io::loadEngineDeck(args.deck, args.overrides);
+  } catch (const pistondyn::io::DeckError& e) {
     std::cerr << "pistondyn: the deck was rejected; nothing was simulated or written:\n"
               << e.what() << "\n";
     return kExitBadInput;
@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
   }
   if (args.command == "check") {
     std::cout << "pistondyn: " << args.deck << " is valid (imep from its pressure table: "
-              << pistondyn::cli::calcDeckImep_Pa(deck) / 1e3 << " kPa)\n";
+              << pistondyn::io::calcDeckImep_Pa(deck) / 1e3 << " kPa)\n";
     return 0;
   }
   try {
@@ -156,7 +156,7 @@ int main(int argc, char** argv) {
         lastPercent = p;
       }
     };
-    const auto outcome = pistondyn::cli::runDeck(deck, args.outDir, progress);
+    const auto outcome = pistondyn::io::runDeck(deck, args.outDir, progress);
     if (!args.quiet)
       std::fprintf(stderr, "\r");
     printSummary(deck, outcome, args.outDir);

@@ -1,14 +1,14 @@
-#include "pistondyn/cli/EngineDeck.h"
+#include "pistondyn/io/EngineDeck.h"
 
 #include <cmath>
 
-#include "pistondyn/cli/DeckError.h"
-#include "pistondyn/cli/PressureTableCsv.h"
-#include "pistondyn/cli/YamlDeck.h"
+#include "pistondyn/io/DeckError.h"
+#include "pistondyn/io/PressureTableCsv.h"
+#include "pistondyn/io/YamlDeck.h"
 #include "pistondyn/plugin/GasForceElement.h"
 #include "pistondyn/plugin/IdealLinerGuide.h"
 
-namespace pistondyn::cli {
+namespace pistondyn::io {
 namespace {
 
 constexpr double kMm = 1e-3;     // mm -> m
@@ -178,4 +178,4 @@ std::unique_ptr<plugin::PistonAssemblyModel> buildModel(const EngineDeck& deck) 
   return model;
 }
 
-}  // namespace pistondyn::cli
+}  // namespace pistondyn::io

@@ -9,7 +9,7 @@
 
 #include "pistondyn/plugin/CycleSimulation.h"
 
-namespace pistondyn::cli {
+namespace pistondyn::io {
 
 std::string formatNumber(double value);
 
@@ -46,4 +46,4 @@ class JsonWriter {
 void writeFilesAtomically(const std::string& dir,
                           const std::vector<std::pair<std::string, std::string>>& nameAndContent);
 
-}  // namespace pistondyn::cli
+}  // namespace pistondyn::io

@@ -15,9 +15,9 @@
 
 #include "pistondyn/mbd_models/CylinderPressureCurve.h"
 
-namespace pistondyn::cli {
+namespace pistondyn::io {
 
 // Throws DeckError "<file>:<line>: ..." on any problem.
 mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath);
 
-}  // namespace pistondyn::cli
+}  // namespace pistondyn::io

@@ -3,10 +3,10 @@
 
 #include <string>
 
-#include "pistondyn/cli/EngineDeck.h"
+#include "pistondyn/io/EngineDeck.h"
 #include "pistondyn/plugin/CycleSimulation.h"
 
-namespace pistondyn::cli {
+namespace pistondyn::io {
 
 // Figures of the last simulated 720 deg cycle.
 struct CycleSummary {
@@ -38,4 +38,4 @@ RunOutcome runDeck(const EngineDeck& deck, const std::string& outDir,
 // The text of summary.json (inputs in SI, results, timings).
 std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& outcome);
 
-}  // namespace pistondyn::cli
+}  // namespace pistondyn::io

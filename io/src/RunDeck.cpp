@@ -1,16 +1,16 @@
-#include "pistondyn/cli/RunDeck.h"
+#include "pistondyn/io/RunDeck.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "pistondyn/cli/ResultWriters.h"
+#include "pistondyn/io/ResultWriters.h"
 
 #ifndef PISTONDYN_VERSION
 #define PISTONDYN_VERSION "unknown"
 #endif
 
-namespace pistondyn::cli {
+namespace pistondyn::io {
 namespace {
 
 const char* kAngleConvention =
@@ -207,4 +207,4 @@ RunOutcome runDeck(const EngineDeck& deck, const std::string& outDir,
   return o;
 }
 
-}  // namespace pistondyn::cli
+}  // namespace pistondyn::io

@@ -12,7 +12,7 @@
 #include "pistondyn/plugin/CycleSimulation.h"
 #include "pistondyn/plugin/PistonAssemblyModel.h"
 
-namespace pistondyn::cli {
+namespace pistondyn::io {
 
 struct EngineDeck {
   std::string deckPath;
@@ -36,4 +36,4 @@ double calcDeckImep_Pa(const EngineDeck& deck);
 // Builds the Simbody model with the deck's force elements (gas force + liner model).
 std::unique_ptr<plugin::PistonAssemblyModel> buildModel(const EngineDeck& deck);
 
-}  // namespace pistondyn::cli
+}  // namespace pistondyn::io

@@ -13,10 +13,10 @@
 #include <sstream>
 #include <string>
 
-#include "pistondyn/cli/DeckError.h"
-#include "pistondyn/cli/EngineDeck.h"
-#include "pistondyn/cli/ResultWriters.h"
-#include "pistondyn/cli/RunDeck.h"
+#include "pistondyn/io/DeckError.h"
+#include "pistondyn/io/EngineDeck.h"
+#include "pistondyn/io/ResultWriters.h"
+#include "pistondyn/io/RunDeck.h"
 
 namespace fs = std::filesystem;
 
@@ -38,7 +38,7 @@ class ScratchDeck : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("pistondyn_cli_" + std::to_string(::getpid()) + "_" +
+           ("pistondyn_io_" + std::to_string(::getpid()) + "_" +
             ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
@@ -69,8 +69,8 @@ class ScratchDeck : public ::testing::Test {
   // The DeckError message of loading the deck ("" if it loads).
   std::string rejection(const std::vector<std::string>& overrides = {}) const {
     try {
-      pistondyn::cli::loadEngineDeck(deck(), overrides);
-    } catch (const pistondyn::cli::DeckError& e) {
+      pistondyn::io::loadEngineDeck(deck(), overrides);
+    } catch (const pistondyn::io::DeckError& e) {
       return e.what();
     }
     return "";
@@ -185,7 +185,7 @@ TEST_F(ScratchDeck, InvalidYamlNamesTheLine) {
 }
 
 TEST_F(ScratchDeck, OverridesAreAppliedAndBadOnesNamed) {
-  const auto d = pistondyn::cli::loadEngineDeck(deck(), {"drive.speed_rpm=3000"});
+  const auto d = pistondyn::io::loadEngineDeck(deck(), {"drive.speed_rpm=3000"});
   EXPECT_DOUBLE_EQ(d.engine.drive.speed_radps, 3000 * M_PI / 30);
   EXPECT_NE(rejection({"drive.sped_rpm=3000"}).find("--set drive.sped_rpm: unknown key"),
             std::string::npos);
@@ -244,11 +244,11 @@ TEST(ResultWriters, NumbersRoundTrip) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   for (int i = 0; i < 20000; ++i) {
     const double x = unit(rng) * std::pow(10.0, static_cast<int>(rng() % 40) - 20);
-    EXPECT_EQ(std::strtod(pistondyn::cli::formatNumber(x).c_str(), nullptr), x);
+    EXPECT_EQ(std::strtod(pistondyn::io::formatNumber(x).c_str(), nullptr), x);
   }
   // A metre-valued position keeps sub-nanometre resolution.
   const double y = 0.179999305554216;
-  EXPECT_EQ(std::strtod(pistondyn::cli::formatNumber(y + 3e-13).c_str(), nullptr), y + 3e-13);
+  EXPECT_EQ(std::strtod(pistondyn::io::formatNumber(y + 3e-13).c_str(), nullptr), y + 3e-13);
 }
 
 // All-or-nothing: if any file cannot be placed, the folder is left exactly as it was
@@ -263,7 +263,7 @@ TEST(ResultWriters, AtomicWriteLeavesTheFolderAsItWasOnFailure) {
     std::ofstream(dir / "summary.json") << "old summary";
     fs::remove(dir / blocked);
     fs::create_directories(dir / blocked);  // a folder where a result file must go
-    EXPECT_THROW(pistondyn::cli::writeFilesAtomically(
+    EXPECT_THROW(pistondyn::io::writeFilesAtomically(
                      dir.string(), {{"cycle.csv", "new cycle"}, {"summary.json", "new summary"}}),
                  std::runtime_error);
     std::vector<std::string> names;
@@ -278,7 +278,7 @@ TEST(ResultWriters, AtomicWriteLeavesTheFolderAsItWasOnFailure) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "cycle.csv") << "old cycle";
-  pistondyn::cli::writeFilesAtomically(dir.string(), {{"cycle.csv", "new"}, {"summary.json", "s"}});
+  pistondyn::io::writeFilesAtomically(dir.string(), {{"cycle.csv", "new"}, {"summary.json", "s"}});
   EXPECT_EQ(readFile(dir / "cycle.csv"), "new");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 2);
   fs::remove_all(dir);
@@ -348,9 +348,9 @@ TEST_F(ScratchDeck, HostileInputsAreRejectedCleanly) {
 
 TEST_F(ScratchDeck, DeckPathThatIsAFolderIsRejected) {
   try {
-    pistondyn::cli::loadEngineDeck(dir_.string(), {});
+    pistondyn::io::loadEngineDeck(dir_.string(), {});
     ADD_FAILURE() << "accepted a folder as deck";
-  } catch (const pistondyn::cli::DeckError& e) {
+  } catch (const pistondyn::io::DeckError& e) {
     EXPECT_NE(std::string(e.what()).find("cannot"), std::string::npos) << e.what();
   }
 }

@@ -1,4 +1,4 @@
-#include "pistondyn/cli/ResultWriters.h"
+#include "pistondyn/io/ResultWriters.h"
 
 #include <array>
 #include <charconv>
@@ -7,7 +7,7 @@
 #include <fstream>
 #include <stdexcept>
 
-namespace pistondyn::cli {
+namespace pistondyn::io {
 
 std::string formatNumber(double v) {
   if (!std::isfinite(v))
@@ -194,4 +194,4 @@ void writeFilesAtomically(const std::string& dir,
   }
 }
 
-}  // namespace pistondyn::cli
+}  // namespace pistondyn::io

@@ -1,11 +1,11 @@
-#include "pistondyn/cli/YamlDeck.h"
+#include "pistondyn/io/YamlDeck.h"
 
 #include <cmath>
 #include <sstream>
 
-#include "pistondyn/cli/DeckError.h"
+#include "pistondyn/io/DeckError.h"
 
-namespace pistondyn::cli {
+namespace pistondyn::io {
 namespace {
 
 // Splits "a.b.c"; keeps empty segments so that "a..b" or "a.b." can be rejected.
@@ -278,4 +278,4 @@ void YamlDeck::finish() {
   throw DeckError(all);
 }
 
-}  // namespace pistondyn::cli
+}  // namespace pistondyn::io

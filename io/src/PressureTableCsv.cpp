@@ -1,4 +1,4 @@
-#include "pistondyn/cli/PressureTableCsv.h"
+#include "pistondyn/io/PressureTableCsv.h"
 
 #include <cerrno>
 #include <cmath>
@@ -8,9 +8,9 @@
 #include <sstream>
 #include <vector>
 
-#include "pistondyn/cli/DeckError.h"
+#include "pistondyn/io/DeckError.h"
 
-namespace pistondyn::cli {
+namespace pistondyn::io {
 namespace {
 
 std::string trim(const std::string& s) {
@@ -109,4 +109,4 @@ mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath) {
   }
 }
 
-}  // namespace pistondyn::cli
+}  // namespace pistondyn::io

@@ -5,11 +5,11 @@
 #include <stdexcept>
 #include <string>
 
-namespace pistondyn::cli {
+namespace pistondyn::io {
 
 class DeckError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
 
-}  // namespace pistondyn::cli
+}  // namespace pistondyn::io

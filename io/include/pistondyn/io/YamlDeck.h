@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace pistondyn::cli {
+namespace pistondyn::io {
 
 class YamlDeck {
  public:
@@ -64,4 +64,4 @@ class YamlDeck {
   std::vector<std::string> problems_;
 };
 
-}  // namespace pistondyn::cli
+}  // namespace pistondyn::io

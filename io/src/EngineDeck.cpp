@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "pistondyn/io/DeckError.h"
+#include "pistondyn/io/DeckSection.h"
 #include "pistondyn/io/PressureTableCsv.h"
 #include "pistondyn/io/YamlDeck.h"
 #include "pistondyn/plugin/GasForceElement.h"
@@ -24,9 +25,44 @@ mbd::PlanarMassProperties readBody(YamlDeck& d, const std::string& section) {
   return b;
 }
 
+// liner.model through the registry: the model's factory reads the rest of the section.
+// An unknown model is one problem; its section's keys are then not reported as unknown.
+void readLiner(YamlDeck& d, const LinerRegistry& registry, EngineDeck& deck) {
+  DeckSection liner = d.getSection("liner");
+  const std::string kModelKey = "liner.model";
+  const bool given = d.has(kModelKey);
+  const std::optional<std::string> requested = d.readString(kModelKey, false);
+  if (given && (!requested || !registry.has(*requested))) {
+    if (requested) {
+      std::string list;
+      for (const auto& c : registry.getNames())
+        list += (list.empty() ? "" : ", ") + c;
+      d.addProblem(kModelKey, "'" + *requested + "' is not one of: " + list +
+                                  " (the liner models registered in this program)");
+    }
+    d.ignoreSection("liner");
+    return;
+  }
+  deck.linerModel = requested.value_or("ideal_guide");
+  try {
+    deck.makeLinerElement = registry.getFactory(deck.linerModel)(liner);
+    if (!deck.makeLinerElement)
+      d.addProblem(kModelKey,
+                   "the liner model '" + deck.linerModel + "' returned no element maker");
+  } catch (const std::exception& e) {
+    d.addProblem(kModelKey, "the liner model '" + deck.linerModel +
+                                "' could not read its section: " + e.what());
+  }
+  for (const auto& in : d.getResolvedInputs()) {
+    if (in.path.rfind("liner.", 0) == 0)
+      deck.linerInputs.push_back(in);
+  }
+}
+
 }  // namespace
 
-EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::string>& overrides) {
+EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::string>& overrides,
+                          const LinerRegistry& registry) {
   YamlDeck d(deckPath);
   for (const auto& o : overrides)
     d.applyOverride(o);
@@ -81,14 +117,13 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
       d.getNumberInRange("simulation.gravity_mps2", false, 0.0, 100.0, "m/s^2").value_or(9.80665);
 
   const std::string table = d.getString("gas.cylinder_pressure_file");
-  deck.cylinderPressureFile =
-      (!table.empty() && table[0] == '/') ? table : d.getDirectory() + table;
+  deck.cylinderPressureFile = d.resolvePath(table);
   deck.crankcasePressure_Pa =
       d.getNumberOr("gas.crankcase_pressure_bar", 1.01325, Sign::NonNegative) * kBar;
   if (const auto imep = d.getOptionalNumber("gas.stated_imep_kPa"))
     deck.statedImep_Pa = *imep * 1e3;
 
-  deck.linerModel = d.getChoiceOr("liner.model", {"ideal_guide"}, "ideal_guide");
+  readLiner(d, registry, deck);
 
   using Settings = plugin::SimulationSettings;
   Settings& s = deck.simulation;
@@ -142,13 +177,23 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
   } catch (const std::invalid_argument& ex) {
     throw DeckError(deckPath + ": " + ex.what());
   }
+  // A trial construction of the liner element: its own checks of the values its factory
+  // read (std::invalid_argument, ...) are bad input too, reported before any simulation.
+  try {
+    if (!deck.makeLinerElement())
+      throw std::invalid_argument("no element was made");
+  } catch (const std::exception& ex) {
+    throw DeckError(deckPath + ": liner: the liner model '" + deck.linerModel +
+                    "' rejected its parameters: " + ex.what());
+  }
   deck.cylinderPressure = std::make_shared<const mbd::CylinderPressureCurve>(
       readPressureTableCsv(deck.cylinderPressureFile));
   if (deck.statedImep_Pa) {
     const double imep = calcDeckImep_Pa(deck);
     if (!std::isfinite(imep)) {
-      throw DeckError(deckPath + ": gas.stated_imep_kPa: the imep of the pressure table cannot be "
-                                 "computed with this geometry (check the geometry keys' units)");
+      throw DeckError(deckPath +
+                      ": gas.stated_imep_kPa: the imep of the pressure table cannot be "
+                      "computed with this geometry (check the geometry keys' units)");
     }
     const double rel = std::abs(imep - *deck.statedImep_Pa) / std::abs(*deck.statedImep_Pa);
     if (!(rel <= 0.005)) {
@@ -173,8 +218,15 @@ std::unique_ptr<plugin::PistonAssemblyModel> buildModel(const EngineDeck& deck) 
   auto model = std::make_unique<plugin::PistonAssemblyModel>(deck.engine);
   model->addElement(
       std::make_unique<plugin::GasForceElement>(*deck.cylinderPressure, deck.crankcasePressure_Pa));
-  // liner.model: only the ideal guide exists so far (the lubricated skirt comes next).
-  model->addElement(std::make_unique<plugin::IdealLinerGuide>());
+  // liner.model, through the maker its registered factory returned.
+  if (deck.makeLinerElement) {
+    model->addElement(deck.makeLinerElement());
+  } else if (deck.linerModel == "ideal_guide") {
+    model->addElement(std::make_unique<plugin::IdealLinerGuide>());
+  } else {
+    throw std::invalid_argument("buildModel: the deck has no maker for liner model '" +
+                                deck.linerModel + "'; read decks with loadEngineDeck()");
+  }
   return model;
 }
 

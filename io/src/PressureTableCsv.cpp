@@ -1,49 +1,17 @@
 #include "pistondyn/io/PressureTableCsv.h"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <vector>
 
+#include "CsvText.h"
 #include "pistondyn/io/DeckError.h"
 
 namespace pistondyn::io {
-namespace {
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos)
-    return {};
-  const auto e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
-
-std::vector<std::string> splitCsv(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream ss(line);
-  std::string f;
-  while (std::getline(ss, f, ','))
-    out.push_back(trim(f));
-  if (!line.empty() && line.back() == ',')
-    out.emplace_back();
-  return out;
-}
-
-// A finite number filling the whole field. Underflow (e.g. 1e-400) reads as 0 or a
-// subnormal and is accepted as that value; overflow, "nan" and "inf" are rejected.
-bool parseDouble(const std::string& text, double& value) {
-  if (text.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  value = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size() || !std::isfinite(value)) return false;
-  return errno != ERANGE || std::abs(value) < 1.0;  // ERANGE with |value| < 1 = underflow
-}
-
-}  // namespace
+using detail::parseDouble;
+using detail::splitCsv;
+using detail::trim;
 
 mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath) {
   std::ifstream in(filePath);
@@ -60,7 +28,8 @@ mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath) {
   int lineNo = 0;
   while (std::getline(in, line)) {
     ++lineNo;
-    if (lineNo == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 BOM
+    if (lineNo == 1)
+      detail::stripBom(line);
     const std::string t = trim(line);
     if (t.empty() || t[0] == '#')
       continue;

@@ -160,8 +160,7 @@ double maxAbs(const std::vector<double>& v) {
 }
 
 TEST_P(ClosedFormEngines, KinematicsLoadsAndPowerOver720Degrees) {
-  const EngineDeck deck =
-      pistondyn::io::loadEngineDeck(deckPath(GetParam()), GetParam().overrides);
+  const EngineDeck deck = pistondyn::io::loadEngineDeck(deckPath(GetParam()), GetParam().overrides);
   ASSERT_EQ(deck.engine.drive.mode, pistondyn::mbd::CrankDrive::Mode::ConstantSpeed);
   auto model = pistondyn::io::buildModel(deck);
   pistondyn::plugin::SimulationSettings settings = deck.simulation;
@@ -307,8 +306,7 @@ TEST(CycleEnergy, MeanCrankTorqueEqualsIndicatedWork) {
   for (std::size_t i = 0; i + 1 < torque.size(); ++i)
     mean += torque[i];
   mean /= static_cast<double>(torque.size() - 1);
-  const double expected =
-      pistondyn::io::calcDeckImep_Pa(deck) * displacement_m3(deck) / (4 * M_PI);
+  const double expected = pistondyn::io::calcDeckImep_Pa(deck) * displacement_m3(deck) / (4 * M_PI);
   std::printf("  mean crank torque %.9f N m, imep * Vd / 4pi %.9f N m\n", mean, expected);
   EXPECT_NEAR(mean, expected, 1e-6 * std::abs(expected));
 }

@@ -1,6 +1,6 @@
-// The command-line edge: every class of bad input named in issue 2 is rejected before
-// any simulation, with a message naming the file, the key or line, and what is wrong;
-// the program exits non-zero and leaves no result files. Outputs round-trip doubles.
+// Decks and tables (pistondyn::io): every class of bad input named in issue 2 is
+// rejected before any simulation, with a message naming the file, the key or line, and
+// what is wrong. The program-level checks (exit codes, no result files) are in tests/app.
 
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
@@ -8,92 +8,18 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <regex>
 #include <sstream>
 #include <string>
 
+#include "ScratchDeck.h"
 #include "pistondyn/io/DeckError.h"
 #include "pistondyn/io/EngineDeck.h"
-#include "pistondyn/io/ResultWriters.h"
-#include "pistondyn/io/RunDeck.h"
 
 namespace fs = std::filesystem;
+using namespace pistondyn_test;
 
 namespace {
-
-const std::string kEngineDir =
-    std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm";
-const std::string kTable = "cylinder_pressure_fired_imep598kPa.csv";
-
-std::string readFile(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-// A scratch copy of the gasoline engine's deck and table, edited per test.
-class ScratchDeck : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("pistondyn_io_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    fs::copy_file(kEngineDir + "/engine.yaml", dir_ / "engine.yaml");
-    fs::copy_file(kEngineDir + "/" + kTable, dir_ / kTable);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string deck() const { return (dir_ / "engine.yaml").string(); }
-  // Replace the first occurrence of `from` in the deck (the edit must apply).
-  void editDeck(const std::string& from, const std::string& to) {
-    std::string text = readFile(deck());
-    const auto pos = text.find(from);
-    ASSERT_NE(pos, std::string::npos) << from;
-    text.replace(pos, from.size(), to);
-    std::ofstream(deck()) << text;
-  }
-  void writeTable(const std::string& text) { std::ofstream(dir_ / kTable) << text; }
-  int lineOf(const std::string& needle) const {
-    std::ifstream in(deck());
-    std::string line;
-    for (int n = 1; std::getline(in, line); ++n) {
-      if (line.find(needle) != std::string::npos)
-        return n;
-    }
-    return -1;
-  }
-  // The DeckError message of loading the deck ("" if it loads).
-  std::string rejection(const std::vector<std::string>& overrides = {}) const {
-    try {
-      pistondyn::io::loadEngineDeck(deck(), overrides);
-    } catch (const pistondyn::io::DeckError& e) {
-      return e.what();
-    }
-    return "";
-  }
-  // Runs the real program; returns its exit code.
-  int runProgram(const std::string& args, const fs::path& out) const {
-    const std::string cmd =
-        std::string(PISTONDYN_EXE) + " run " + deck() + " --out " + out.string() + " --quiet " +
-        args + " > " + (dir_ / "stdout.txt").string() + " 2> " + (dir_ / "stderr.txt").string();
-    const int status = std::system(cmd.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-  std::string programStderr() const { return readFile(dir_ / "stderr.txt"); }
-
-  fs::path dir_;
-};
-
-// Message shape: "<file>:<line>: <key>: <problem>".
-void expectNames(const std::string& msg, const std::string& file, int line, const std::string& key,
-                 const std::string& problem) {
-  EXPECT_NE(msg.find(file + ":" + std::to_string(line) + ": " + key), std::string::npos) << msg;
-  EXPECT_NE(msg.find(problem), std::string::npos) << msg;
-}
 
 TEST_F(ScratchDeck, TheUneditedDeckLoads) {
   EXPECT_EQ(rejection(), "");
@@ -194,96 +120,6 @@ TEST_F(ScratchDeck, OverridesAreAppliedAndBadOnesNamed) {
   EXPECT_NE(rejection({"geometry"}).find("expected key.path=value"), std::string::npos);
 }
 
-// Process level: exit code 1, a message naming the key, and no result files.
-TEST_F(ScratchDeck, ProgramRejectsBadInputWithoutWritingAnything) {
-  editDeck("bore_mm: 74.5", "bore_mm: -74.5");
-  const fs::path out = dir_ / "results";
-  EXPECT_EQ(runProgram("", out), 1);
-  EXPECT_NE(programStderr().find("geometry.bore_mm: must be positive"), std::string::npos)
-      << programStderr();
-  EXPECT_FALSE(fs::exists(out));
-}
-
-TEST_F(ScratchDeck, ProgramUsageErrorsExitWithTwo) {
-  const std::string cmd = std::string(PISTONDYN_EXE) + " run " + deck() + " > /dev/null 2>&1";
-  const int status = std::system(cmd.c_str());
-  EXPECT_EQ(WEXITSTATUS(status), 2);  // no --out
-}
-
-// Process level, good deck: required columns with units, TDC convention stated,
-// summary.json with SI inputs, imep and wall time; --set reaches the run.
-TEST_F(ScratchDeck, ProgramWritesCycleAndSummary) {
-  const fs::path out = dir_ / "results";
-  ASSERT_EQ(runProgram("--set simulation.output_step_deg=2 --set drive.speed_rpm=2500", out), 0)
-      << programStderr();
-  const std::string csv = readFile(out / "cycle.csv");
-  EXPECT_NE(csv.find("crank angle 0 deg = firing TDC"), std::string::npos);
-  for (const char* col : {"crank_angle_deg", "piston_y_m", "piston_vy_mps", "piston_ay_mps2",
-                          "gas_force_N", "side_force_N", "conrod_force_N", "crank_torque_Nm"}) {
-    EXPECT_TRUE(std::regex_search(csv, std::regex(std::string("(^|\n|,)") + col + "(,|\n)")))
-        << col;
-  }
-  const YAML::Node summary = YAML::LoadFile((out / "summary.json").string());
-  EXPECT_NEAR(summary["inputs"]["drive"]["speed_rad_per_s"].as<double>(), 2500 * M_PI / 30, 1e-9);
-  EXPECT_NEAR(summary["inputs"]["geometry"]["bore_m"].as<double>(), 0.0745, 1e-15);
-  EXPECT_NEAR(summary["results"]["imep_kPa"].as<double>(), 598.0, 0.005 * 598.0);
-  EXPECT_GT(summary["wall_time_s"].as<double>(), 0.0);
-  EXPECT_NE(summary["crank_angle_convention"].as<std::string>().find("firing TDC"),
-            std::string::npos);
-  EXPECT_EQ(summary["overrides"].size(), 2u);
-  // No temporary files left next to the results.
-  for (const auto& entry : fs::directory_iterator(out)) {
-    EXPECT_TRUE(entry.path().filename() == "cycle.csv" || entry.path().filename() == "summary.json")
-        << entry.path();
-  }
-}
-
-// Results are written with the shortest text that reads back to the same double.
-TEST(ResultWriters, NumbersRoundTrip) {
-  std::mt19937_64 rng(12345);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  for (int i = 0; i < 20000; ++i) {
-    const double x = unit(rng) * std::pow(10.0, static_cast<int>(rng() % 40) - 20);
-    EXPECT_EQ(std::strtod(pistondyn::io::formatNumber(x).c_str(), nullptr), x);
-  }
-  // A metre-valued position keeps sub-nanometre resolution.
-  const double y = 0.179999305554216;
-  EXPECT_EQ(std::strtod(pistondyn::io::formatNumber(y + 3e-13).c_str(), nullptr), y + 3e-13);
-}
-
-// All-or-nothing: if any file cannot be placed, the folder is left exactly as it was
-// (old results intact, no new or temporary files), whichever file fails.
-TEST(ResultWriters, AtomicWriteLeavesTheFolderAsItWasOnFailure) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("pistondyn_atomic_" + std::to_string(::getpid()));
-  for (const char* blocked : {"cycle.csv", "summary.json"}) {
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    std::ofstream(dir / "cycle.csv") << "old cycle";
-    std::ofstream(dir / "summary.json") << "old summary";
-    fs::remove(dir / blocked);
-    fs::create_directories(dir / blocked);  // a folder where a result file must go
-    EXPECT_THROW(pistondyn::io::writeFilesAtomically(
-                     dir.string(), {{"cycle.csv", "new cycle"}, {"summary.json", "new summary"}}),
-                 std::runtime_error);
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir))
-      names.push_back(e.path().filename());
-    EXPECT_EQ(names.size(), 2u) << blocked;
-    EXPECT_TRUE(fs::is_directory(dir / blocked));
-    const std::string other = std::string(blocked) == "cycle.csv" ? "summary.json" : "cycle.csv";
-    EXPECT_EQ(readFile(dir / other), other == "cycle.csv" ? "old cycle" : "old summary") << blocked;
-  }
-  // And the success path replaces old results.
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ofstream(dir / "cycle.csv") << "old cycle";
-  pistondyn::io::writeFilesAtomically(dir.string(), {{"cycle.csv", "new"}, {"summary.json", "s"}});
-  EXPECT_EQ(readFile(dir / "cycle.csv"), "new");
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 2);
-  fs::remove_all(dir);
-}
-
 TEST_F(ScratchDeck, PressureTableWithBomAndUnderflowIsReadNanIsNot) {
   writeTable("\xEF\xBB\xBF" + readFile(kEngineDir + "/" + kTable));
   EXPECT_EQ(rejection(), "");
@@ -352,6 +188,50 @@ TEST_F(ScratchDeck, DeckPathThatIsAFolderIsRejected) {
     ADD_FAILURE() << "accepted a folder as deck";
   } catch (const pistondyn::io::DeckError& e) {
     EXPECT_NE(std::string(e.what()).find("cannot"), std::string::npos) << e.what();
+  }
+}
+
+// Process level: exit code 1, a message naming the key, and no result files.
+TEST_F(ScratchDeck, ProgramRejectsBadInputWithoutWritingAnything) {
+  editDeck("bore_mm: 74.5", "bore_mm: -74.5");
+  const fs::path out = dir_ / "results";
+  EXPECT_EQ(runProgram("", out), 1);
+  EXPECT_NE(programStderr().find("geometry.bore_mm: must be positive"), std::string::npos)
+      << programStderr();
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(ScratchDeck, ProgramUsageErrorsExitWithTwo) {
+  const std::string cmd = std::string(PISTONDYN_EXE) + " run " + deck() + " > /dev/null 2>&1";
+  const int status = std::system(cmd.c_str());
+  EXPECT_EQ(WEXITSTATUS(status), 2);  // no --out
+}
+
+// Process level, good deck: required columns with units, TDC convention stated,
+// summary.json with SI inputs, imep and wall time; --set reaches the run.
+TEST_F(ScratchDeck, ProgramWritesCycleAndSummary) {
+  const fs::path out = dir_ / "results";
+  ASSERT_EQ(runProgram("--set simulation.output_step_deg=2 --set drive.speed_rpm=2500", out), 0)
+      << programStderr();
+  const std::string csv = readFile(out / "cycle.csv");
+  EXPECT_NE(csv.find("crank angle 0 deg = firing TDC"), std::string::npos);
+  for (const char* col : {"crank_angle_deg", "piston_y_m", "piston_vy_mps", "piston_ay_mps2",
+                          "gas_force_N", "side_force_N", "conrod_force_N", "crank_torque_Nm"}) {
+    EXPECT_TRUE(std::regex_search(csv, std::regex(std::string("(^|\n|,)") + col + "(,|\n)")))
+        << col;
+  }
+  const YAML::Node summary = YAML::LoadFile((out / "summary.json").string());
+  EXPECT_NEAR(summary["inputs"]["drive"]["speed_rad_per_s"].as<double>(), 2500 * M_PI / 30, 1e-9);
+  EXPECT_NEAR(summary["inputs"]["geometry"]["bore_m"].as<double>(), 0.0745, 1e-15);
+  EXPECT_NEAR(summary["results"]["imep_kPa"].as<double>(), 598.0, 0.005 * 598.0);
+  EXPECT_GT(summary["wall_time_s"].as<double>(), 0.0);
+  EXPECT_NE(summary["crank_angle_convention"].as<std::string>().find("firing TDC"),
+            std::string::npos);
+  EXPECT_EQ(summary["overrides"].size(), 2u);
+  // No temporary files left next to the results.
+  for (const auto& entry : fs::directory_iterator(out)) {
+    EXPECT_TRUE(entry.path().filename() == "cycle.csv" || entry.path().filename() == "summary.json")
+        << entry.path();
   }
 }
 

@@ -87,13 +87,16 @@ void printSummary(const pistondyn::io::EngineDeck& deck, const pistondyn::io::Ru
                   const std::string& outDir) {
   const auto& s = o.summary;
   std::printf("pistondyn: %s\n", deck.engine.name.c_str());
-  std::printf("  %d cycle(s) at %.0f rpm, %zu rows, %.3f s wall time, %ld integrator steps\n",
-              deck.simulation.cycles, deck.engine.drive.speed_radps * 30.0 / M_PI,
-              o.table.rows.size(), o.stats.wallTime_s, o.stats.integratorSteps);
+  std::printf("  %d cycle(s) at %.0f rpm, %ld rows, %.3f s wall time, %ld integrator steps\n",
+              deck.simulation.cycles, deck.engine.drive.speed_radps * 30.0 / M_PI, o.rows,
+              o.stats.wallTime_s, o.stats.integratorSteps);
   std::printf("  imep %.1f kPa   peak cylinder pressure %.2f bar at %.1f deg\n", s.imep_Pa / 1e3,
               s.peakCylinderPressure_Pa / 1e5, s.peakCylinderPressureAngle_deg);
-  std::printf("  side force %+.0f N at %.1f deg (thrust), %+.0f N at %.1f deg (anti-thrust)\n",
-              s.sideForceMax_N, s.sideForceMaxAngle_deg, s.sideForceMin_N, s.sideForceMinAngle_deg);
+  if (s.liner) {
+    std::printf("  side force %+.0f N at %.1f deg (thrust), %+.0f N at %.1f deg (anti-thrust)\n",
+                s.liner->sideForceMax_N, s.liner->sideForceMaxAngle_deg, s.liner->sideForceMin_N,
+                s.liner->sideForceMinAngle_deg);
+  }
   std::printf("  conrod force %+.0f .. %+.0f N   mean crank torque %.2f N m   power %.2f kW\n",
               s.conrodForceMin_N, s.conrodForceMax_N, s.meanCrankTorque_Nm,
               s.indicatedPower_W / 1e3);

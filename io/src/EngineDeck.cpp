@@ -139,7 +139,7 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
     d.addProblem("simulation.output_step_deg",
                  "with simulation.cycles this makes more than " +
                      std::to_string(static_cast<long>(Settings::kMaxRows)) +
-                     " output rows (they are kept in memory); use a coarser step");
+                     " output rows; use a coarser step");
   }
   const std::string integ = d.getChoiceOr("simulation.integrator",
                                           {"rk_merson", "rk_feldberg", "cpodes_bdf"}, "rk_merson");

@@ -4,10 +4,11 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 namespace pistondyn::io {
+
+namespace fs = std::filesystem;
 
 std::string formatNumber(double v) {
   if (!std::isfinite(v))
@@ -17,181 +18,175 @@ std::string formatNumber(double v) {
   return std::string(buf.data(), res.ptr);
 }
 
-void writeCsv(std::ostream& out, const plugin::ResultTable& table,
-              const std::vector<std::string>& commentLines) {
+void writeCsvHeader(std::ostream& out, const std::vector<std::string>& columns,
+                    const std::vector<std::string>& commentLines) {
   for (const auto& c : commentLines)
     out << "# " << c << '\n';
-  for (std::size_t j = 0; j < table.columns.size(); ++j) {
-    out << (j ? "," : "") << table.columns[j];
+  for (std::size_t j = 0; j < columns.size(); ++j) {
+    out << (j ? "," : "") << columns[j];
   }
   out << '\n';
-  for (const auto& row : table.rows) {
-    for (std::size_t j = 0; j < row.size(); ++j)
-      out << (j ? "," : "") << formatNumber(row[j]);
-    out << '\n';
-  }
 }
 
-std::string JsonWriter::quote(const std::string& s) {
-  std::string q = "\"";
-  for (const char c : s) {
-    switch (c) {
-      case '"':
-        q += "\\\"";
-        break;
-      case '\\':
-        q += "\\\\";
-        break;
-      case '\n':
-        q += "\\n";
-        break;
-      case '\t':
-        q += "\\t";
-        break;
-      case '\r':
-        q += "\\r";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", c);
-          q += buf;
-        } else {
-          q += c;
-        }
-    }
-  }
-  return q + "\"";
+void writeCsvRow(std::ostream& out, const std::vector<double>& values) {
+  for (std::size_t j = 0; j < values.size(); ++j)
+    out << (j ? "," : "") << formatNumber(values[j]);
+  out << '\n';
 }
 
-void JsonWriter::prefix(const std::string& key) {
-  if (!first_.empty()) {
-    if (!first_.back())
-      out_ << ",";
-    first_.back() = false;
-    out_ << "\n" << std::string(2 * first_.size(), ' ');
-  }
-  if (!key.empty())
-    out_ << quote(key) << ": ";
+void writeCsv(std::ostream& out, const plugin::ResultTable& table,
+              const std::vector<std::string>& commentLines) {
+  writeCsvHeader(out, table.columns, commentLines);
+  for (const auto& row : table.rows)
+    writeCsvRow(out, row);
 }
 
-JsonWriter& JsonWriter::beginObject(const std::string& key) {
-  prefix(key);
-  out_ << "{";
-  first_.push_back(true);
-  return *this;
+// ---- CsvRowSink ----------------------------------------------------------------------
+
+CsvRowSink::CsvRowSink(std::string filePath, std::vector<std::string> commentLines)
+    : filePath_(std::move(filePath)), comments_(std::move(commentLines)) {}
+
+void CsvRowSink::fail(const std::string& what) const {
+  throw std::runtime_error(filePath_ + ": " + what);
 }
 
-JsonWriter& JsonWriter::endObject() {
-  first_.pop_back();
-  out_ << "\n" << std::string(2 * first_.size(), ' ') << "}";
-  if (first_.empty())
-    out_ << "\n";
-  return *this;
+void CsvRowSink::beginRun(const std::vector<std::string>& columns) {
+  columns_ = columns;
+  discardRows();
 }
 
-JsonWriter& JsonWriter::beginArray(const std::string& key) {
-  prefix(key);
-  out_ << "[";
-  first_.push_back(true);
-  return *this;
+void CsvRowSink::discardRows() {
+  // The file again from its start: comments and header, no rows.
+  out_.close();
+  out_.clear();
+  out_.open(filePath_, std::ios::binary | std::ios::trunc);
+  if (!out_)
+    fail("cannot create the file");
+  rows_ = 0;
+  writeCsvHeader(out_, columns_, comments_);
 }
 
-JsonWriter& JsonWriter::endArray() {
-  first_.pop_back();
-  out_ << "\n" << std::string(2 * first_.size(), ' ') << "]";
-  return *this;
+void CsvRowSink::consumeRow(const SimTK::State&, const std::vector<double>& values) {
+  writeCsvRow(out_, values);
+  ++rows_;
+  if (!out_)
+    fail("write failed (disk full?)");
 }
 
-JsonWriter& JsonWriter::value(const std::string& key, double v) {
-  prefix(key);
-  // JSON has no NaN/Inf; write null rather than an unreadable file.
-  out_ << (std::isfinite(v) ? formatNumber(v) : "null");
-  return *this;
+void CsvRowSink::endRun() {
+  out_.close();
+  if (!out_)
+    fail("write failed");
 }
 
-JsonWriter& JsonWriter::value(const std::string& key, long v) {
-  prefix(key);
-  out_ << v;
-  return *this;
+// ---- ResultFileSet -------------------------------------------------------------------
+
+namespace {
+
+void removeQuietly(const fs::path& p) {
+  std::error_code ignored;
+  fs::remove(p, ignored);
 }
 
-JsonWriter& JsonWriter::value(const std::string& key, bool v) {
-  prefix(key);
-  out_ << (v ? "true" : "false");
-  return *this;
+fs::path temporaryOf(const fs::path& folder, const std::string& name) {
+  return folder / ("." + name + ".partial");
 }
 
-JsonWriter& JsonWriter::value(const std::string& key, const std::string& v) {
-  prefix(key);
-  out_ << quote(v);
-  return *this;
+fs::path backupOf(const fs::path& folder, const std::string& name) {
+  return folder / ("." + name + ".previous");
 }
 
-JsonWriter& JsonWriter::arrayValue(const std::string& v) {
-  return value(std::string(), v);
-}
-JsonWriter& JsonWriter::arrayValue(double v) {
-  return value(std::string(), v);
-}
+}  // namespace
 
-void writeFilesAtomically(const std::string& dir,
-                          const std::vector<std::pair<std::string, std::string>>& files) {
-  namespace fs = std::filesystem;
+ResultFileSet::ResultFileSet(std::string dir) : dir_(std::move(dir)) {
   std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw std::runtime_error(dir + ": cannot create the output folder: " + ec.message());
-  const fs::path folder(dir);
-  auto target = [&](std::size_t i) { return folder / files[i].first; };
-  auto temporary = [&](std::size_t i) { return folder / ("." + files[i].first + ".partial"); };
-  auto backup = [&](std::size_t i) { return folder / ("." + files[i].first + ".previous"); };
-  auto removeQuietly = [](const fs::path& p) {
-    std::error_code ignored;
-    fs::remove(p, ignored);
-  };
-
-  // 1. Every file complete under a temporary name.
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    std::ofstream out(temporary(i), std::ios::binary);
-    out << files[i].second;
-    out.close();
-    if (!out) {
-      for (std::size_t k = 0; k <= i; ++k) removeQuietly(temporary(k));
-      throw std::runtime_error(target(i).string() + ": write failed");
-    }
+  // The folders that do not exist yet, deepest first, to remove them again on failure.
+  for (fs::path p = dir_; !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+    created_.push_back(p.string());
+    if (p == p.parent_path())
+      break;
   }
-  // 2. Existing results moved aside, 3. new ones moved in; any failure restores the
+  fs::create_directories(dir_, ec);
+  if (ec)
+    throw std::runtime_error(dir_ + ": cannot create the output folder: " + ec.message());
+}
+
+ResultFileSet::~ResultFileSet() {
+  if (committed_)
+    return;
+  for (const auto& name : names_)
+    removeQuietly(temporaryOf(dir_, name));
+  for (const auto& folder : created_)
+    removeQuietly(folder);  // only removes empty folders
+}
+
+std::string ResultFileSet::stage(const std::string& name) {
+  if (committed_)
+    throw std::logic_error("ResultFileSet::stage: already committed");
+  names_.push_back(name);
+  return temporaryOf(dir_, name).string();
+}
+
+void ResultFileSet::commit() {
+  const fs::path folder(dir_);
+  const std::size_t n = names_.size();
+  auto target = [&](std::size_t i) { return folder / names_[i]; };
+  std::error_code ec;
+  // 1. Existing results moved aside, 2. new ones moved in; any failure restores the
   // folder as it was (old results back, no new or temporary files).
-  std::vector<bool> backedUp(files.size(), false), placed(files.size(), false);
+  std::vector<bool> backedUp(n, false), placed(n, false);
   auto rollBack = [&](const std::string& why) {
-    for (std::size_t k = 0; k < files.size(); ++k) {
-      if (placed[k]) removeQuietly(target(k));
+    for (std::size_t k = 0; k < n; ++k) {
+      if (placed[k])
+        removeQuietly(target(k));
       if (backedUp[k]) {
         std::error_code ignored;
-        fs::rename(backup(k), target(k), ignored);
+        fs::rename(backupOf(folder, names_[k]), target(k), ignored);
       }
-      removeQuietly(temporary(k));
+      removeQuietly(temporaryOf(folder, names_[k]));
     }
     throw std::runtime_error(why);
   };
-  for (std::size_t i = 0; i < files.size(); ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!fs::exists(temporaryOf(folder, names_[i]), ec))
+      rollBack(target(i).string() + ": the result was never written");
+  }
+  for (std::size_t i = 0; i < n; ++i) {
     if (fs::exists(target(i), ec)) {
       if (fs::is_directory(target(i), ec)) {
         rollBack(target(i).string() + ": is a folder, cannot write the result there");
       }
-      fs::rename(target(i), backup(i), ec);
-      if (ec) rollBack(target(i).string() + ": cannot replace the old result: " + ec.message());
+      fs::rename(target(i), backupOf(folder, names_[i]), ec);
+      if (ec)
+        rollBack(target(i).string() + ": cannot replace the old result: " + ec.message());
       backedUp[i] = true;
     }
   }
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    fs::rename(temporary(i), target(i), ec);
-    if (ec) rollBack(target(i).string() + ": cannot move the result into place: " + ec.message());
+  for (std::size_t i = 0; i < n; ++i) {
+    fs::rename(temporaryOf(folder, names_[i]), target(i), ec);
+    if (ec)
+      rollBack(target(i).string() + ": cannot move the result into place: " + ec.message());
     placed[i] = true;
   }
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    if (backedUp[i]) removeQuietly(backup(i));
+  for (std::size_t i = 0; i < n; ++i) {
+    if (backedUp[i])
+      removeQuietly(backupOf(folder, names_[i]));
   }
+  committed_ = true;
+}
+
+void writeFilesAtomically(const std::string& dir,
+                          const std::vector<std::pair<std::string, std::string>>& files) {
+  ResultFileSet set(dir);
+  for (const auto& [name, content] : files) {
+    const std::string path = set.stage(name);
+    std::ofstream out(path, std::ios::binary);
+    out << content;
+    out.close();
+    if (!out)
+      throw std::runtime_error((fs::path(dir) / name).string() + ": write failed");
+  }
+  set.commit();
 }
 
 }  // namespace pistondyn::io

@@ -1,8 +1,11 @@
 // Liner models selected from a deck through the registry: the built-in ideal guide, a
 // user's element registered by its program and selected by the deck or by --set, the
-// section's keys read by the model's factory (unknown ones still reported).
+// section's keys read by the model's factory (unknown ones still reported), and its
+// inputs in summary.json.
 
 #include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <stdexcept>
@@ -11,6 +14,7 @@
 #include "../../examples/custom_element/SpringLinerGuide.h"
 #include "ScratchDeck.h"
 #include "pistondyn/io/LinerRegistry.h"
+#include "pistondyn/io/RunDeck.h"
 #include "pistondyn/plugin/IdealLinerGuide.h"
 
 namespace fs = std::filesystem;
@@ -145,6 +149,23 @@ TEST_F(LinerDeck, AnElementThatRejectsItsParametersIsBadInput) {
   EXPECT_NE(m.find("liner: the liner model 'picky' rejected its parameters: Picky: clearance"),
             std::string::npos)
       << m;
+}
+
+// summary.json lists the liner model's inputs as its factory resolved them, in SI.
+TEST_F(LinerDeck, SummaryListsTheLinerInputsInSI) {
+  const auto d =
+      io::loadEngineDeck(deck(),
+                         {"liner.model=spring_guide", "liner.lateral_stiffness_N_per_mm=3e4",
+                          "simulation.output_step_deg=10"},
+                         springRegistry());
+  const fs::path out = dir_ / "results";
+  const io::RunOutcome o = io::runDeck(d, out.string());
+  std::ifstream in(out / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["inputs"]["liner_model"], "spring_guide");
+  EXPECT_EQ(j["inputs"]["liner"]["lateral_stiffness_N_per_m"].get<double>(), 3e7);
+  EXPECT_EQ(j["inputs"]["liner"]["axial_damping_Ns_per_m"].get<double>(), 2e3);
+  EXPECT_EQ(j["results"]["side_force_max_N"].get<double>(), o.summary.liner->sideForceMax_N);
 }
 
 }  // namespace

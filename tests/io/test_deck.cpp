@@ -3,12 +3,10 @@
 // what is wrong. The program-level checks (exit codes, no result files) are in tests/app.
 
 #include <gtest/gtest.h>
-#include <yaml-cpp/yaml.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 
@@ -189,58 +187,6 @@ TEST_F(ScratchDeck, DeckPathThatIsAFolderIsRejected) {
   } catch (const pistondyn::io::DeckError& e) {
     EXPECT_NE(std::string(e.what()).find("cannot"), std::string::npos) << e.what();
   }
-}
-
-// Process level: exit code 1, a message naming the key, and no result files.
-TEST_F(ScratchDeck, ProgramRejectsBadInputWithoutWritingAnything) {
-  editDeck("bore_mm: 74.5", "bore_mm: -74.5");
-  const fs::path out = dir_ / "results";
-  EXPECT_EQ(runProgram("", out), 1);
-  EXPECT_NE(programStderr().find("geometry.bore_mm: must be positive"), std::string::npos)
-      << programStderr();
-  EXPECT_FALSE(fs::exists(out));
-}
-
-TEST_F(ScratchDeck, ProgramUsageErrorsExitWithTwo) {
-  const std::string cmd = std::string(PISTONDYN_EXE) + " run " + deck() + " > /dev/null 2>&1";
-  const int status = std::system(cmd.c_str());
-  EXPECT_EQ(WEXITSTATUS(status), 2);  // no --out
-}
-
-// Process level, good deck: required columns with units, TDC convention stated,
-// summary.json with SI inputs, imep and wall time; --set reaches the run.
-TEST_F(ScratchDeck, ProgramWritesCycleAndSummary) {
-  const fs::path out = dir_ / "results";
-  ASSERT_EQ(runProgram("--set simulation.output_step_deg=2 --set drive.speed_rpm=2500", out), 0)
-      << programStderr();
-  const std::string csv = readFile(out / "cycle.csv");
-  EXPECT_NE(csv.find("crank angle 0 deg = firing TDC"), std::string::npos);
-  for (const char* col : {"crank_angle_deg", "piston_y_m", "piston_vy_mps", "piston_ay_mps2",
-                          "gas_force_N", "side_force_N", "conrod_force_N", "crank_torque_Nm"}) {
-    EXPECT_TRUE(std::regex_search(csv, std::regex(std::string("(^|\n|,)") + col + "(,|\n)")))
-        << col;
-  }
-  const YAML::Node summary = YAML::LoadFile((out / "summary.json").string());
-  EXPECT_NEAR(summary["inputs"]["drive"]["speed_rad_per_s"].as<double>(), 2500 * M_PI / 30, 1e-9);
-  EXPECT_NEAR(summary["inputs"]["geometry"]["bore_m"].as<double>(), 0.0745, 1e-15);
-  EXPECT_NEAR(summary["results"]["imep_kPa"].as<double>(), 598.0, 0.005 * 598.0);
-  EXPECT_GT(summary["wall_time_s"].as<double>(), 0.0);
-  EXPECT_NE(summary["crank_angle_convention"].as<std::string>().find("firing TDC"),
-            std::string::npos);
-  EXPECT_EQ(summary["overrides"].size(), 2u);
-  // No temporary files left next to the results.
-  for (const auto& entry : fs::directory_iterator(out)) {
-    EXPECT_TRUE(entry.path().filename() == "cycle.csv" || entry.path().filename() == "summary.json")
-        << entry.path();
-  }
-}
-
-TEST_F(ScratchDeck, ProgramRefusesAnOutputPathThatIsAFileBeforeSimulating) {
-  const fs::path out = dir_ / "a_file";
-  std::ofstream(out) << "keep me";
-  EXPECT_EQ(runProgram("", out), 2);
-  EXPECT_NE(programStderr().find("is not a folder"), std::string::npos) << programStderr();
-  EXPECT_EQ(readFile(out), "keep me");
 }
 
 }  // namespace

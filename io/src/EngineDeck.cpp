@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "pistondyn/common/Validation.h"
 #include "pistondyn/io/DeckError.h"
 #include "pistondyn/io/DeckSection.h"
 #include "pistondyn/io/PressureTableCsv.h"
@@ -159,7 +160,7 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
       d.addProblem("geometry.conrod_length_mm",
                    "the rod must be longer than half the stroke plus |pin offset + crank "
                    "offset| = " +
-                       std::to_string(reach / kMm) + " mm");
+                       common::formatNumber(reach / kMm) + " mm");
     }
     if (e.piston.skirtTopAbovePin_m > e.piston.compressionHeight_m) {
       d.addProblem("piston.skirt_top_above_pin_mm",
@@ -199,9 +200,9 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
     if (!(rel <= 0.005)) {
       throw DeckError(deckPath + ": gas.stated_imep_kPa: the pressure table " +
                       deck.cylinderPressureFile + " gives an imep of " +
-                      std::to_string(imep / 1e3) + " kPa, " + std::to_string(rel * 100.0) +
-                      " % away from the stated " + std::to_string(*deck.statedImep_Pa / 1e3) +
-                      " kPa (tolerance 0.5 %)");
+                      common::formatNumber(imep / 1e3) + " kPa, " +
+                      common::formatNumber(rel * 100.0) + " % away from the stated " +
+                      common::formatNumber(*deck.statedImep_Pa / 1e3) + " kPa (tolerance 0.5 %)");
     }
   }
   return deck;

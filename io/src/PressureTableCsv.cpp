@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "CsvText.h"
+#include "pistondyn/common/Validation.h"
 #include "pistondyn/io/DeckError.h"
 
 namespace pistondyn::io {
@@ -57,7 +58,7 @@ mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath) {
       throw DeckError(at + "pressure '" + f[1] + "' is not a number");
     if (!angle.empty() && !(a > angle.back())) {
       throw DeckError(at + "crank angle " + f[0] + " deg is not greater than the previous row's (" +
-                      std::to_string(angle.back()) + " deg); angles must increase");
+                      common::formatNumber(angle.back()) + " deg); angles must increase");
     }
     if (!(p > 0.0)) {
       throw DeckError(at + "pressure " + f[1] + " must be positive (absolute pressure)");

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <fstream>
 #include <set>
-#include <sstream>
 
+#include "pistondyn/common/Validation.h"
 #include "pistondyn/io/DeckError.h"
 #include "pistondyn/io/DeckSection.h"
 
@@ -241,10 +241,9 @@ std::string foundKind(const YAML::Node& n) {
   return std::string(n.IsMap() ? "section" : "list");
 }
 
+// Numbers in messages: the shortest text that reads back to the same double.
 std::string formatBound(double v) {
-  std::ostringstream m;
-  m << v;
-  return m.str();
+  return common::formatNumber(v);
 }
 
 // The problem with a number outside `bounds`, in the words the deck has always used.

@@ -30,12 +30,13 @@ foreach(line IN LISTS lines)
   endif()
 endforeach()
 
-# Direct dependencies of `target` that are pistondyn's own libraries.
+# Direct dependencies of `target` that are pistondyn's own libraries (but the header-only
+# pistondyn_common, which every module may use).
 function(own_deps target out)
   string(MAKE_C_IDENTIFIER "${target}" id)
   set(own "")
   foreach(d IN LISTS deps_${id})
-    if(d MATCHES "^pistondyn_")
+    if(d MATCHES "^pistondyn_" AND NOT d STREQUAL "pistondyn_common")
       list(APPEND own "${d}")
     endif()
   endforeach()

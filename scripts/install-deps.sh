@@ -8,7 +8,9 @@ PACKAGES=(
   libsimbody-dev          # multibody engine (3.7)
   libeigen3-dev           # dense/sparse linear algebra for the numerics
   libsuitesparse-dev      # CHOLMOD / UMFPACK / KLU sparse direct solvers
-  libyaml-cpp-dev         # YAML engine decks (command-line program only)
+  libyaml-cpp-dev         # YAML engine decks (pistondyn::io)
+  nlohmann-json3-dev      # summary.json (pistondyn::io, header-only, build time)
+  libcli11-dev            # command line of the pistondyn program (app/, header-only)
   libgtest-dev googletest # test suite
   libbenchmark-dev        # bench/
 )

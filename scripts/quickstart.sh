@@ -5,5 +5,5 @@ cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"
-./build/examples/cli/pistondyn run examples/engines/gasoline_1400_2000rpm/engine.yaml \
+./build/app/pistondyn run examples/engines/gasoline_1400_2000rpm/engine.yaml \
   --out results/gasoline_1400_2000rpm

@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "pistondyn/cli/EngineDeck.h"
+#include "pistondyn/io/EngineDeck.h"
 #include "pistondyn/plugin/CycleSimulation.h"
 
 namespace {
 
-using pistondyn::cli::EngineDeck;
+using pistondyn::io::EngineDeck;
 
 struct V2 {
   double x, y;
@@ -138,7 +138,7 @@ std::string deckPath(const Engine& e) {
 // The passenger-car example deck (the thesis' parameter-study operating point), with --set
 // overrides.
 EngineDeck loadGasolineDeck(const std::vector<std::string>& overrides) {
-  return pistondyn::cli::loadEngineDeck(
+  return pistondyn::io::loadEngineDeck(
       std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm/engine.yaml",
       overrides);
 }
@@ -160,10 +160,9 @@ double maxAbs(const std::vector<double>& v) {
 }
 
 TEST_P(ClosedFormEngines, KinematicsLoadsAndPowerOver720Degrees) {
-  const EngineDeck deck =
-      pistondyn::cli::loadEngineDeck(deckPath(GetParam()), GetParam().overrides);
+  const EngineDeck deck = pistondyn::io::loadEngineDeck(deckPath(GetParam()), GetParam().overrides);
   ASSERT_EQ(deck.engine.drive.mode, pistondyn::mbd::CrankDrive::Mode::ConstantSpeed);
-  auto model = pistondyn::cli::buildModel(deck);
+  auto model = pistondyn::io::buildModel(deck);
   pistondyn::plugin::SimulationSettings settings = deck.simulation;
   settings.outputStep_deg = 1.0;
   settings.cycles = 1;
@@ -298,7 +297,7 @@ INSTANTIATE_TEST_SUITE_P(
 // average to zero over a period). imep from the pressure table, torque from Simbody.
 TEST(CycleEnergy, MeanCrankTorqueEqualsIndicatedWork) {
   const EngineDeck deck = loadGasolineDeck({});
-  auto model = pistondyn::cli::buildModel(deck);
+  auto model = pistondyn::io::buildModel(deck);
   pistondyn::plugin::SimulationSettings settings = deck.simulation;
   settings.outputStep_deg = 0.5;
   const auto table = pistondyn::plugin::CycleSimulation(*model, settings).run();
@@ -307,8 +306,7 @@ TEST(CycleEnergy, MeanCrankTorqueEqualsIndicatedWork) {
   for (std::size_t i = 0; i + 1 < torque.size(); ++i)
     mean += torque[i];
   mean /= static_cast<double>(torque.size() - 1);
-  const double expected =
-      pistondyn::cli::calcDeckImep_Pa(deck) * displacement_m3(deck) / (4 * M_PI);
+  const double expected = pistondyn::io::calcDeckImep_Pa(deck) * displacement_m3(deck) / (4 * M_PI);
   std::printf("  mean crank torque %.9f N m, imep * Vd / 4pi %.9f N m\n", mean, expected);
   EXPECT_NEAR(mean, expected, 1e-6 * std::abs(expected));
 }
@@ -318,7 +316,7 @@ TEST(CycleEnergy, FiredTableImepMatchesThesisValue) {
   const EngineDeck deck = loadGasolineDeck({});
   ASSERT_TRUE(deck.statedImep_Pa.has_value());
   EXPECT_DOUBLE_EQ(*deck.statedImep_Pa, 598e3);
-  EXPECT_NEAR(pistondyn::cli::calcDeckImep_Pa(deck), 598e3, 0.005 * 598e3);
+  EXPECT_NEAR(pistondyn::io::calcDeckImep_Pa(deck), 598e3, 0.005 * 598e3);
 }
 
 }  // namespace
@@ -334,7 +332,7 @@ TEST(FreeCrank, CycleEnergyBalanceWithGasAndLoad) {
   const EngineDeck deck = loadGasolineDeck(
       {"drive.mode=free", "drive.flywheel_inertia_kg_m2=0.08", "drive.load_torque_Nm=10",
        "simulation.output_step_deg=2", "simulation.accuracy=1e-11"});
-  auto model = pistondyn::cli::buildModel(deck);
+  auto model = pistondyn::io::buildModel(deck);
   std::vector<double> energy;
   const auto& system = model->getSystem();
   auto observer = [&](const SimTK::State& s) {
@@ -342,7 +340,7 @@ TEST(FreeCrank, CycleEnergyBalanceWithGasAndLoad) {
   };
   pistondyn::plugin::CycleSimulation sim(*model, deck.simulation);
   const auto table = sim.run({}, observer);
-  const double gasWork = pistondyn::cli::calcDeckImep_Pa(deck) * displacement_m3(deck);
+  const double gasWork = pistondyn::io::calcDeckImep_Pa(deck) * displacement_m3(deck);
   const double loadWork = 10.0 * 4.0 * M_PI;
   // The potential energy also holds the gravity of the reciprocating parts; it returns
   // with the configuration, so the total mechanical energy change is the same.

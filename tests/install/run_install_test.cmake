@@ -1,5 +1,6 @@
 # Installs the build tree into a scratch prefix, builds tests/install/downstream against
-# it (Release) and runs it, then runs the installed bin/pistondyn on an example deck.
+# it (Release) and runs its two programs (a C++ model on pistondyn::pistondyn, a deck run
+# on pistondyn::io), then runs the installed bin/pistondyn on an example deck.
 # Variables: BUILD_DIR, SOURCE_DIR, WORK_DIR, GENERATOR.
 file(REMOVE_RECURSE "${WORK_DIR}")
 set(prefix "${WORK_DIR}/prefix")
@@ -12,7 +13,9 @@ function(run what)
 endfunction()
 run("install" ${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
 foreach(f bin/pistondyn lib/cmake/pistondyn/pistondynConfig.cmake
-          include/pistondyn/plugin/ForceElement.h include/pistondyn/mbd_models/CrankTrain.h)
+          include/pistondyn/plugin/ForceElement.h include/pistondyn/mbd_models/CrankTrain.h
+          include/pistondyn/io/RunDeck.h include/pistondyn/io/DeckSection.h
+          include/pistondyn/io/LinerRegistry.h)
   if(NOT EXISTS "${prefix}/${f}")
     message(FATAL_ERROR "install is missing ${f}")
   endif()
@@ -22,6 +25,13 @@ run("configure downstream" ${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/install/down
     "-DCMAKE_PREFIX_PATH=${prefix}")
 run("build downstream" ${CMAKE_COMMAND} --build "${WORK_DIR}/build")
 run("run downstream" "${WORK_DIR}/build/downstream")
+run("run downstream run_deck" "${WORK_DIR}/build/run_deck"
+    "${SOURCE_DIR}/examples/engines/briggs_stratton_500/engine.yaml" "${WORK_DIR}/user_results"
+    simulation.output_step_deg=5)
+if(NOT EXISTS "${WORK_DIR}/user_results/cycle.csv" OR
+   NOT EXISTS "${WORK_DIR}/user_results/summary.json")
+  message(FATAL_ERROR "run_deck (pistondyn::io) wrote no results")
+endif()
 run("installed pistondyn" "${prefix}/bin/pistondyn" run
     "${SOURCE_DIR}/examples/engines/briggs_stratton_500/engine.yaml"
     --out "${WORK_DIR}/results" --quiet --set simulation.output_step_deg=5)

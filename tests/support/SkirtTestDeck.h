@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "pistondyn/cli/EngineDeck.h"
+#include "pistondyn/io/EngineDeck.h"
 #include "pistondyn/lubrication/OilGrades.h"
 #include "pistondyn/mbd_models/SliderCrank.h"
 #include "pistondyn/plugin/GasForceElement.h"
@@ -68,7 +68,7 @@ inline plugin::LubricatedSkirtParameters exampleSkirtParameters(int nPhi, int nY
 
 inline SkirtModel makeGasolineSkirtModel(
     int nPhi, int nY, const plugin::LubricatedSkirtParameters* custom = nullptr) {
-  const cli::EngineDeck deck = cli::loadEngineDeck(
+  const io::EngineDeck deck = io::loadEngineDeck(
       std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm/engine.yaml",
       {});
   SkirtModel m;

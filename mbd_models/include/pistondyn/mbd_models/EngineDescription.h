@@ -1,7 +1,7 @@
 #pragma once
 // Plain description of one cylinder's crank train: geometry, mass properties, crank
 // drive. Everything in SI. Input decks in engineering units are converted at the edge
-// (examples/cli); nothing here parses files.
+// (pistondyn::io); nothing here parses files.
 //
 // Frames (README "Frames and signs"): ground y along the cylinder axis towards the
 // head, x perpendicular to the pin axis towards the THRUST side, z along the pin axis

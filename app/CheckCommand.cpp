@@ -1,0 +1,45 @@
+// pistondyn check DECK.yaml [--set key.path=value]...
+
+#include <iostream>
+
+#include "CommandSupport.h"
+#include "Subcommand.h"
+
+namespace pistondyn::app {
+namespace {
+
+class CheckCommand final : public Subcommand {
+ public:
+  explicit CheckCommand(CLI::App& program)
+      : Subcommand(program.add_subcommand(
+            "check", "read and check a deck and its pressure table; simulates nothing")) {
+    app_->add_option("DECK", deck_, "engine deck (YAML; every key names its unit, e.g. bore_mm)")
+        ->required()
+        ->type_name("DECK.yaml");
+    addSetOption(*app_, overrides_);
+    app_->set_help_flag("-h,--help", "print this help and exit");
+    app_->footer(deckHelpFooter());
+  }
+
+  int execute() override {
+    const auto deck = loadDeckOrReport(deck_, overrides_);
+    if (!deck)
+      return kExitBadInput;
+    std::cout << "pistondyn: " << deck_
+              << " is valid (imep from its pressure table: " << io::calcDeckImep_Pa(*deck) / 1e3
+              << " kPa)\n";
+    return kExitOk;
+  }
+
+ private:
+  std::string deck_;
+  std::vector<std::string> overrides_;
+};
+
+}  // namespace
+
+std::unique_ptr<Subcommand> addCheckCommand(CLI::App& program) {
+  return std::make_unique<CheckCommand>(program);
+}
+
+}  // namespace pistondyn::app

@@ -1,0 +1,72 @@
+// pistondyn command-line program: parses the command line (CLI11) and dispatches to one
+// subcommand per file (RunCommand.cpp, CheckCommand.cpp), each over pistondyn::io.
+//
+//   pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--quiet]
+//   pistondyn check DECK.yaml [--set key.path=value]...
+//   pistondyn --help | --version          (and pistondyn <command> --help)
+//
+// Exit codes: 0 success; 1 bad input (deck, table, override) - nothing written;
+// 2 bad command line; 3 the simulation or writing failed - nothing written.
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <memory>
+#include <vector>
+
+#include "Subcommand.h"
+#include "pistondyn/io/Version.h"
+
+namespace {
+
+const char* kSynopsis =
+    "usage: pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--quiet]\n"
+    "       pistondyn check DECK.yaml [--set key.path=value]...\n"
+    "       pistondyn --help | --version | <command> --help\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace pistondyn::app;
+  CLI::App program(
+      "pistondyn: piston-assembly dynamics and tribology over whole engine cycles.\n"
+      "Crank angle 0 deg = firing TDC. Deck keys and units: README.md.",
+      "pistondyn");
+  program.set_version_flag("--version", "pistondyn " + pistondyn::io::getVersion(),
+                           "print the version and exit");
+  program.set_help_flag("-h,--help",
+                        "print this help and exit (pistondyn <command> --help: "
+                        "that command's options)");
+  program.require_subcommand(1);
+  program.footer(
+      "Exit codes: 0 ok; 1 bad input, nothing written; 2 bad command line; 3 run failed, "
+      "nothing written.");
+  std::vector<std::unique_ptr<Subcommand>> commands;
+  commands.push_back(addRunCommand(program));
+  commands.push_back(addCheckCommand(program));
+
+  // An unknown first word is an unknown command (CLI11 would only say one is required).
+  if (argc >= 2 && argv[1][0] != '-') {
+    bool known = false;
+    for (const auto& c : commands)
+      known = known || c->getName() == argv[1];
+    if (!known) {
+      std::cerr << "pistondyn: unknown command " << argv[1] << "\n\n" << kSynopsis;
+      return kExitUsage;
+    }
+  }
+  try {
+    program.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0)
+      return program.exit(e);  // --help, --version: printed on stdout
+    std::cerr << "pistondyn: " << e.what() << "\n\n" << kSynopsis;
+    return kExitUsage;
+  }
+  for (const auto& c : commands) {
+    if (c->wasSelected())
+      return c->execute();
+  }
+  std::cerr << "pistondyn: missing command\n\n" << kSynopsis;
+  return kExitUsage;
+}

@@ -1,0 +1,93 @@
+#pragma once
+// The figures summary.json reports for the last simulated 720 deg cycle, and the row
+// sink that accumulates them while the simulation runs (no table is kept in memory).
+//
+// Where each figure comes from:
+//   - imep, displacement, stroke, peak cylinder pressure: the deck (pressure table and
+//     geometry), not the rows;
+//   - side force (and, if the liner provides them, minimum film thickness and friction
+//     work): the model's liner element through its role interface plugin::LinerElement,
+//     evaluated on each row's state; without a liner element these figures are absent,
+//     never invented from a column;
+//   - conrod force, crank and drive torque, crank speed: the crank-train columns, which
+//     CycleSimulation::crankTrainColumns() fixes, found by their index in that list.
+
+#include <optional>
+#include <vector>
+
+#include "pistondyn/io/EngineDeck.h"
+#include "pistondyn/plugin/CycleSimulation.h"
+#include "pistondyn/plugin/LinerElement.h"
+
+namespace pistondyn::io {
+
+struct CycleSummary {
+  double imep_Pa = 0.0;  // from the pressure table
+  double displacement_m3 = 0.0;
+  double kinematicStroke_m = 0.0;
+  double peakCylinderPressure_Pa = 0.0, peakCylinderPressureAngle_deg = 0.0;
+
+  // From the liner element's role interface (absent if the model has none).
+  struct LinerFigures {
+    double sideForceMax_N = 0.0, sideForceMaxAngle_deg = 0.0;  // towards thrust
+    double sideForceMin_N = 0.0, sideForceMinAngle_deg = 0.0;  // towards anti-thrust (< 0)
+    // Only if the liner reports them at every row of the cycle.
+    std::optional<double> minFilmThicknessThrust_m, minFilmThicknessThrustAngle_deg;
+    std::optional<double> minFilmThicknessAntiThrust_m, minFilmThicknessAntiThrustAngle_deg;
+    std::optional<double> frictionWork_J;  // dissipated over the cycle, >= 0
+  };
+  std::optional<LinerFigures> liner;
+
+  double conrodForceMax_N = 0.0, conrodForceMin_N = 0.0;  // compression > 0
+  double meanCrankTorque_Nm = 0.0;                        // rod on crank, cycle mean
+  double meanDriveTorque_Nm = 0.0;
+  double indicatedPower_W = 0.0;  // mean crank torque x mean speed
+};
+
+// The deck-level figures (imep, displacement, stroke, peak pressure) of a summary.
+void addDeckFigures(const EngineDeck& deck, CycleSummary& summary);
+
+// Accumulates the figures of the last cycle of a run of `model` with `settings`: at
+// every beginCycle() it starts again, so after endRun() it holds the last cycle's (also
+// in a run to periodic steady state, whose earlier cycles are discarded). The row that
+// closes the last cycle (crank angle start + 720 * cycles) is not part of the means or
+// extremes, as the first row of the cycle already stands for that angle.
+class CycleSummarySink final : public plugin::RowSink {
+ public:
+  // `model` must outlive the sink; its liner element (if any) is looked up at beginRun().
+  CycleSummarySink(const EngineDeck& deck, const plugin::PistonAssemblyModel& model);
+  void beginRun(const std::vector<std::string>& columns) override;
+  void beginCycle(int cycle) override;
+  void consumeRow(const SimTK::State& state, const std::vector<double>& values) override;
+  void discardRows() override;
+  // Throws std::runtime_error if the run did not complete a cycle.
+  void endRun() override;
+
+  // Valid after endRun().
+  const CycleSummary& getSummary() const { return summary_; }
+  // Rows kept (consumed since the start or the last discardRows()).
+  long getRowCount() const { return rows_; }
+
+ private:
+  struct FilmMinimum {
+    bool valid = true;  // the liner reported a value at every row so far
+    double value_m = 0.0, angle_deg = 0.0;
+  };
+  void resetCycle();
+
+  const EngineDeck& deck_;
+  const plugin::PistonAssemblyModel& model_;
+  const plugin::LinerElement* liner_ = nullptr;
+  long perCycle_;
+  long rows_ = 0;
+  long rowInCycle_ = -1;  // -1 before the first beginCycle()
+  CycleSummary summary_;
+  // Running figures of the current cycle.
+  double torque_ = 0.0, drive_ = 0.0, speed_ = 0.0;
+  double conrodMax_ = 0.0, conrodMin_ = 0.0;
+  double sideMax_ = 0.0, sideMaxAngle_ = 0.0, sideMin_ = 0.0, sideMinAngle_ = 0.0;
+  FilmMinimum filmThrust_, filmAntiThrust_;
+  std::optional<double> workAtCycleStart_J_, workAtCycleEnd_J_;
+};
+
+}  // namespace pistondyn::io

@@ -1,0 +1,23 @@
+#pragma once
+// Reads a cylinder-pressure table: CSV, '#' comment lines allowed, a header naming the
+// two columns with their units, then one row per crank angle:
+//
+//   # any comment
+//   crank_angle_deg,pressure_bar
+//   0,41.3
+//   0.5,41.9
+//
+// The pressure column may be pressure_Pa, pressure_kPa, pressure_bar or pressure_MPa
+// (absolute). Angles: crank angle from firing TDC, strictly increasing, covering 720
+// deg (see mbd::CylinderPressureCurve). Errors name the file and line.
+
+#include <string>
+
+#include "pistondyn/mbd_models/CylinderPressureCurve.h"
+
+namespace pistondyn::io {
+
+// Throws DeckError "<file>:<line>: ..." on any problem.
+mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath);
+
+}  // namespace pistondyn::io

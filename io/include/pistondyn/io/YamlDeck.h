@@ -1,0 +1,124 @@
+#pragma once
+// A YAML engine deck with a schema enforced by use: every getter marks its key as
+// known; finish() reports every key that nobody asked for as unknown. Problems are
+// collected (not thrown one by one) so the user sees all of them at once, each as
+//   <file>:<line>: <key.path>: <what is wrong and what is expected>
+// Values overridden on the command line (--set a.b.c=value) are reported as
+//   --set <key.path>: ...
+//
+// Getters here take the full key path ("geometry.bore_mm"). Code that reads one section
+// (a liner model's factory) uses a DeckSection (DeckSection.h) instead: the same getters
+// relative to the section, plus SI conversion by the key's unit, file paths, lists and
+// nested sections.
+
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace pistondyn::io {
+
+class DeckSection;
+
+// Accepted values of a number, in the unit written in its key. Converts from Sign so
+// that getters take either.
+struct Bounds {
+  static constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  double minimum = -kInfinity;
+  double maximum = kInfinity;
+  bool excludeMinimum = false;
+
+  static Bounds any() { return {}; }
+  static Bounds positive() { return {0.0, kInfinity, true}; }
+  static Bounds nonNegative() { return {0.0, kInfinity, false}; }
+  static Bounds between(double minimum, double maximum) { return {minimum, maximum, false}; }
+  bool contains(double v) const {
+    return (excludeMinimum ? v > minimum : v >= minimum) && v <= maximum;
+  }
+};
+
+// A value read through a DeckSection, as resolved (defaults included), for summaries:
+// siPath is the key with its unit replaced by the SI one when the getter converted it
+// ("liner.film.viscosity_mPas" -> "liner.film.viscosity_Pas"), else the key itself.
+struct ResolvedInput {
+  using Value = std::variant<double, bool, std::string, std::vector<double>>;
+  std::string path;
+  std::string siPath;
+  Value value;
+};
+
+class YamlDeck {
+ public:
+  // Loads and parses the file; throws DeckError (with line) on unreadable/invalid YAML.
+  explicit YamlDeck(std::string filePath);
+  ~YamlDeck();
+  YamlDeck(YamlDeck&&) noexcept;
+  YamlDeck& operator=(YamlDeck&&) noexcept;
+
+  // "a.b.c=value": value parsed as a YAML scalar. Creates missing maps on the path
+  // (a misspelt key is then reported as unknown by finish()). Throws DeckError.
+  void applyOverride(const std::string& assignment);
+
+  const std::string& getFilePath() const;
+  // Directory of the deck file, for resolving relative paths ("" = current directory).
+  std::string getDirectory() const;
+  // `path` as written in the deck, resolved against getDirectory() unless absolute.
+  std::string resolvePath(const std::string& path) const;
+
+  // ---- schema getters: record a problem and return a harmless value on failure ----
+  enum class Sign { Any, Positive, NonNegative };
+  double getNumber(const std::string& path, Sign sign = Sign::Any);
+  std::optional<double> getOptionalNumber(const std::string& path, Sign sign = Sign::Any);
+  double getNumberOr(const std::string& path, double fallback, Sign sign = Sign::Any);
+  long getIntegerOr(const std::string& path, long fallback, long minimum, long maximum);
+  // A number that must lie in [minimum, maximum] (the unit is named in the message);
+  // nullopt when absent or out of range (the latter recorded as a problem).
+  std::optional<double> getNumberInRange(const std::string& path, bool required, double minimum,
+                                         double maximum, const std::string& unit);
+  std::string getString(const std::string& path);
+  std::string getChoiceOr(const std::string& path, const std::vector<std::string>& choices,
+                          const std::string& fallback);
+  bool has(const std::string& path) const;
+
+  // The general number reader behind the getters: nullopt when absent (a problem if
+  // `required`) or invalid (always a problem). `unit` is named in range messages.
+  std::optional<double> readNumber(const std::string& path, const Bounds& bounds, bool required,
+                                   const std::string& unit = {});
+  // true/false; nullopt when absent (a problem if `required`) or not a boolean.
+  std::optional<bool> readBool(const std::string& path, bool required);
+  // Text; nullopt when absent (a problem if `required`) or not a scalar.
+  std::optional<std::string> readString(const std::string& path, bool required);
+  // A list of numbers ([1, 2, 3] or one item per line); nullopt when absent (a problem if
+  // `required`) or invalid.
+  std::optional<std::vector<double>> readNumberList(const std::string& path, const Bounds& bounds,
+                                                    bool required, const std::string& unit = {});
+
+  // A view of the section at `path` (e.g. "liner", "liner.film"; "" = the whole deck).
+  // Records a problem if `path` holds a value instead of a section.
+  DeckSection getSection(const std::string& path);
+  // Keys below `path` are never reported as unknown (e.g. the section of a model that
+  // could not be selected: its keys are not the problem).
+  void ignoreSection(const std::string& path);
+  // Marks `path` (and the sections above it) as part of the schema.
+  void markKnown(const std::string& path);
+
+  // Values read through DeckSection getters, in the order they were read.
+  const std::vector<ResolvedInput>& getResolvedInputs() const;
+  void recordInput(ResolvedInput input);
+
+  // "<file>:<line>: key" (the key's line, else its nearest section's) or "--set ...".
+  std::string where(const std::string& path) const;
+  // Adds a problem about `path` found by a later, cross-key check (e.g. rod too short).
+  void addProblem(const std::string& path, const std::string& message);
+  bool hasProblems() const;
+  // Reports unknown keys, then throws DeckError listing every problem (if any).
+  void finish();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace pistondyn::io

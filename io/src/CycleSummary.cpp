@@ -1,0 +1,148 @@
+#include "pistondyn/io/CycleSummary.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace pistondyn::io {
+namespace {
+
+// Index of a crank-train column in the fixed list CycleSimulation::crankTrainColumns().
+std::size_t crankTrainColumn(const std::string& name) {
+  static const std::vector<std::string> columns = plugin::CycleSimulation::crankTrainColumns();
+  for (std::size_t j = 0; j < columns.size(); ++j) {
+    if (columns[j] == name)
+      return j;
+  }
+  throw std::logic_error("CycleSummarySink: no crank-train column '" + name + "'");
+}
+
+const std::size_t kAngle = crankTrainColumn("crank_angle_deg");
+const std::size_t kSpeed = crankTrainColumn("crank_speed_rpm");
+const std::size_t kConrod = crankTrainColumn("conrod_force_N");
+const std::size_t kCrankTorque = crankTrainColumn("crank_torque_Nm");
+const std::size_t kDriveTorque = crankTrainColumn("drive_torque_Nm");
+
+}  // namespace
+
+void addDeckFigures(const EngineDeck& deck, CycleSummary& s) {
+  const mbd::SliderCrank kin(deck.engine.geometry);
+  const mbd::CylinderVolume vol(kin, deck.engine.piston.bore_m,
+                                deck.engine.geometry.compressionRatio);
+  s.imep_Pa = mbd::calcImep_Pa(*deck.cylinderPressure, vol);
+  // Peak of the table itself (not of the output rows, which may step over it).
+  s.peakCylinderPressure_Pa = deck.cylinderPressure->getPeakPressure_Pa();
+  s.peakCylinderPressureAngle_deg = deck.cylinderPressure->getPeakPressureAngle_deg();
+  s.displacement_m3 = vol.displacement_m3();
+  s.kinematicStroke_m = kin.stroke_m();
+}
+
+CycleSummarySink::CycleSummarySink(const EngineDeck& deck, const plugin::PistonAssemblyModel& model)
+    : deck_(deck), model_(model), perCycle_(deck.simulation.stepsPerCycle()) {}
+
+void CycleSummarySink::beginRun(const std::vector<std::string>& columns) {
+  const std::vector<std::string> crank = plugin::CycleSimulation::crankTrainColumns();
+  if (columns.size() < crank.size() || !std::equal(crank.begin(), crank.end(), columns.begin())) {
+    throw std::logic_error("CycleSummarySink: the rows do not start with the crank-train columns");
+  }
+  liner_ = model_.findLinerElement();
+  summary_ = CycleSummary();
+  rows_ = 0;
+  rowInCycle_ = -1;
+}
+
+void CycleSummarySink::resetCycle() {
+  torque_ = drive_ = speed_ = 0.0;
+  conrodMax_ = sideMax_ = -INFINITY;
+  conrodMin_ = sideMin_ = INFINITY;
+  sideMaxAngle_ = sideMinAngle_ = 0.0;
+  filmThrust_ = filmAntiThrust_ = FilmMinimum();
+  workAtCycleStart_J_.reset();
+  workAtCycleEnd_J_.reset();
+}
+
+void CycleSummarySink::discardRows() {
+  rows_ = 0;  // the figures start again at the next beginCycle()
+}
+
+void CycleSummarySink::beginCycle(int) {
+  resetCycle();
+  rowInCycle_ = 0;
+}
+
+void CycleSummarySink::consumeRow(const SimTK::State& state, const std::vector<double>& r) {
+  ++rows_;
+  if (rowInCycle_ < 0)
+    return;  // rows before the first cycle (none with CycleSimulation)
+  const long k = rowInCycle_++;
+  if (k > perCycle_)
+    return;
+  if (liner_ != nullptr && (k == 0 || k == perCycle_)) {
+    (k == 0 ? workAtCycleStart_J_ : workAtCycleEnd_J_) = liner_->getFrictionWork_J(state);
+  }
+  if (k == perCycle_)
+    return;  // the row closing the cycle: same crank angle as its first row
+
+  const double angle = std::fmod(r[kAngle], 720.0);
+  if (liner_ != nullptr) {
+    const double side = liner_->getSideForce_N(state);
+    if (side > sideMax_) {
+      sideMax_ = side;
+      sideMaxAngle_ = angle;
+    }
+    if (side < sideMin_) {
+      sideMin_ = side;
+      sideMinAngle_ = angle;
+    }
+    for (const plugin::SkirtSide sideOfSkirt :
+         {plugin::SkirtSide::Thrust, plugin::SkirtSide::AntiThrust}) {
+      FilmMinimum& m = sideOfSkirt == plugin::SkirtSide::Thrust ? filmThrust_ : filmAntiThrust_;
+      const std::optional<double> h = liner_->getMinFilmThickness_m(state, sideOfSkirt);
+      if (!h) {
+        m.valid = false;
+      } else if (m.valid && (k == 0 || *h < m.value_m)) {
+        m.value_m = *h;
+        m.angle_deg = angle;
+      }
+    }
+  }
+  conrodMax_ = std::max(conrodMax_, r[kConrod]);
+  conrodMin_ = std::min(conrodMin_, r[kConrod]);
+  torque_ += r[kCrankTorque];
+  drive_ += r[kDriveTorque];
+  speed_ += r[kSpeed] * M_PI / 30.0;
+}
+
+void CycleSummarySink::endRun() {
+  if (rowInCycle_ != perCycle_ + 1) {
+    throw std::runtime_error("CycleSummarySink: the run ended without completing a 720 deg cycle");
+  }
+  CycleSummary& s = summary_;
+  addDeckFigures(deck_, s);
+  const double n = static_cast<double>(perCycle_);
+  s.conrodForceMax_N = conrodMax_;
+  s.conrodForceMin_N = conrodMin_;
+  s.meanCrankTorque_Nm = torque_ / n;
+  s.meanDriveTorque_Nm = drive_ / n;
+  s.indicatedPower_W = s.meanCrankTorque_Nm * speed_ / n;
+  if (liner_ != nullptr) {
+    CycleSummary::LinerFigures f;
+    f.sideForceMax_N = sideMax_;
+    f.sideForceMaxAngle_deg = sideMaxAngle_;
+    f.sideForceMin_N = sideMin_;
+    f.sideForceMinAngle_deg = sideMinAngle_;
+    if (filmThrust_.valid) {
+      f.minFilmThicknessThrust_m = filmThrust_.value_m;
+      f.minFilmThicknessThrustAngle_deg = filmThrust_.angle_deg;
+    }
+    if (filmAntiThrust_.valid) {
+      f.minFilmThicknessAntiThrust_m = filmAntiThrust_.value_m;
+      f.minFilmThicknessAntiThrustAngle_deg = filmAntiThrust_.angle_deg;
+    }
+    if (workAtCycleStart_J_ && workAtCycleEnd_J_)
+      f.frictionWork_J = *workAtCycleEnd_J_ - *workAtCycleStart_J_;
+    s.liner = f;
+  }
+}
+
+}  // namespace pistondyn::io

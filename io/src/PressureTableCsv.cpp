@@ -1,0 +1,82 @@
+#include "pistondyn/io/PressureTableCsv.h"
+
+#include <fstream>
+#include <map>
+#include <vector>
+
+#include "CsvText.h"
+#include "pistondyn/common/Validation.h"
+#include "pistondyn/io/DeckError.h"
+
+namespace pistondyn::io {
+
+using detail::parseDouble;
+using detail::splitCsv;
+using detail::trim;
+
+mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath) {
+  std::ifstream in(filePath);
+  if (!in)
+    throw DeckError(filePath + ": cannot open the cylinder-pressure table");
+  static const std::map<std::string, double> kUnits = {
+      {"pressure_Pa", 1.0}, {"pressure_kPa", 1e3}, {"pressure_bar", 1e5}, {"pressure_MPa", 1e6}};
+
+  std::vector<double> angle, pressure;
+  std::vector<int> lineOfRow;
+  double toPa = 0.0;
+  bool haveHeader = false;
+  std::string line;
+  int lineNo = 0;
+  while (std::getline(in, line)) {
+    ++lineNo;
+    if (lineNo == 1)
+      detail::stripBom(line);
+    const std::string t = trim(line);
+    if (t.empty() || t[0] == '#')
+      continue;
+    const std::vector<std::string> f = splitCsv(t);
+    const std::string at = filePath + ":" + std::to_string(lineNo) + ": ";
+    if (!haveHeader) {
+      if (f.size() != 2 || f[0] != "crank_angle_deg" || kUnits.count(f[1]) == 0) {
+        throw DeckError(at +
+                        "expected the header 'crank_angle_deg,pressure_<unit>' with unit "
+                        "Pa, kPa, bar or MPa (absolute), found '" +
+                        t + "'");
+      }
+      toPa = kUnits.at(f[1]);
+      haveHeader = true;
+      continue;
+    }
+    if (f.size() != 2) {
+      throw DeckError(at + "expected 2 columns (crank angle, pressure), found " +
+                      std::to_string(f.size()));
+    }
+    double a = 0.0, p = 0.0;
+    if (!parseDouble(f[0], a))
+      throw DeckError(at + "crank angle '" + f[0] + "' is not a number");
+    if (!parseDouble(f[1], p))
+      throw DeckError(at + "pressure '" + f[1] + "' is not a number");
+    if (!angle.empty() && !(a > angle.back())) {
+      throw DeckError(at + "crank angle " + f[0] + " deg is not greater than the previous row's (" +
+                      common::formatNumber(angle.back()) + " deg); angles must increase");
+    }
+    if (!(p > 0.0)) {
+      throw DeckError(at + "pressure " + f[1] + " must be positive (absolute pressure)");
+    }
+    angle.push_back(a);
+    pressure.push_back(p * toPa);
+    lineOfRow.push_back(lineNo);
+  }
+  if (!haveHeader)
+    throw DeckError(filePath + ": empty table (no header line)");
+  try {
+    return mbd::CylinderPressureCurve(std::move(angle), std::move(pressure));
+  } catch (const mbd::PressureTableError& e) {
+    // The curve counts 0-based data rows; name this file's line instead.
+    if (e.row() && *e.row() < lineOfRow.size())
+      throw DeckError(filePath + ":" + std::to_string(lineOfRow[*e.row()]) + ": " + e.what());
+    throw DeckError(filePath + ": " + e.what());
+  }
+}
+
+}  // namespace pistondyn::io

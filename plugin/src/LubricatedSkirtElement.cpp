@@ -208,6 +208,7 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     side.boundaryShare = out.boundaryShare;
     side.wettedShare = out.wettedShare;
     side.wearRate_m3ps = out.wearRate_m3ps;
+    side.filmOilVolume_m3 = out.filmOilVolume_m3;
     side.filmIterations = out.film.iterations;
     side.filmUsedFallback = out.film.usedFallback;
     total.force_N += out.totalLoads.force_N;
@@ -427,6 +428,9 @@ ElementOutputs LubricatedSkirtElement::getOutputs() const {
     o.push_back({"wetted_share_" + n, "1",
                  "area share with oil (fill fraction > 0), " + n + " side",
                  [side, k](S s) { return side(s, k).wettedShare; }});
+    o.push_back({"film_oil_volume_" + n, "mm3",
+                 "oil held in the film (area x fill fraction x gap), " + n + " side",
+                 [side, k](S s) { return 1e9 * side(s, k).filmOilVolume_m3; }});
   }
   o.push_back({"secondary_kinetic_energy", "mJ",
                "1/2 m v_G^2 + 1/2 I (dalpha/dt)^2 of the secondary motion (piston + pin)",

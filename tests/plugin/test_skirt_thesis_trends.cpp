@@ -67,12 +67,15 @@ Outcome run(const plugin::LubricatedSkirtParameters& p, int maxCycles) {
   o.lastCycle = table.releaseTable();
   o.stats = sim.getStats();
   o.asperityWork_J = asperityNow - asperityAtStart;
-  for (double f : o.stats.cycleFmep_Pa) std::printf("    cycle fmep %.3f kPa\n", f / 1e3);
+  for (double f : o.stats.cycleFmep_Pa)
+    std::printf("    cycle fmep %.3f kPa\n", f / 1e3);
   o.totalWork_J = totalNow - totalAtStart;
   return o;
 }
 
-double fmep_kPa(const Outcome& o) { return o.stats.cycleFmep_Pa.back() / 1e3; }
+double fmep_kPa(const Outcome& o) {
+  return o.stats.cycleFmep_Pa.back() / 1e3;
+}
 
 // Mean tilt [mrad] over the expansion stroke, 20 .. 160 deg after firing TDC.
 double meanExpansionTilt_mrad(const Outcome& o) {

@@ -28,17 +28,12 @@ struct SkirtModel {
   }
 };
 
-// Radial drop [m] of the example barrel profile at height y above the pin [m]: parabolic
-// about y0 = -8 mm (0.08 um/mm^2 below, 0.12 above) plus 15 um quadratic reliefs over the
-// last 2 mm of the 30 mm skirt (from -22 to +8 mm).
+// Radial drop [m] of the example barrel profile at height y above the pin [m]: a parabola
+// about y0 = -6 mm, 0.12 um/mm^2 (17 um at the skirt bottom, 39 um at its top). Mirrored
+// about the pin it is the same barrel with its minimum at +6 mm (the thesis' study).
 inline double exampleProfileDrop_m(double y_m) {
-  const double y = y_m * 1e3, d = y + 8.0;
-  double drop = (d > 0 ? 0.12 : 0.08) * d * d;
-  if (y < -20.0)
-    drop += 15.0 * ((-20.0 - y) / 2.0) * ((-20.0 - y) / 2.0);
-  if (y > 6.0)
-    drop += 15.0 * ((y - 6.0) / 2.0) * ((y - 6.0) / 2.0);
-  return drop * 1e-6;
+  const double d = y_m * 1e3 + 6.0;
+  return 0.12 * d * d * 1e-6;
 }
 
 inline plugin::LubricatedSkirtParameters exampleSkirtParameters(int nPhi, int nY) {

@@ -415,6 +415,7 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   out.mixedShare = mixed / area;
   out.boundaryShare = boundary / area;
   out.wettedShare = wetted / area;
+  out.filmOilVolume_m3 = (w * film.fillFraction() * p.gap_m).sum();
   const double speed = p.slidingVelocity_mps.norm();
   out.wearRate_m3ps = m.parameters.wearCoefficient_m2pN * contactLoad_N * speed;
   out.maxWearDepthRate_mps = m.parameters.wearCoefficient_m2pN * maxPc * speed;

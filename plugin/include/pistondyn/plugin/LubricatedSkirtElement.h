@@ -90,6 +90,7 @@ struct LubricatedSkirtResults {
     double minFilmThickness_m = 0, minGapOverSigma = 0;
     double hydrodynamicShare = 0, mixedShare = 0, boundaryShare = 0, wettedShare = 0;
     double wearRate_m3ps = 0;
+    double filmOilVolume_m3 = 0;
     int filmIterations = 0;
     bool filmUsedFallback = false;
   };

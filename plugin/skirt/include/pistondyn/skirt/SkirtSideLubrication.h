@@ -140,7 +140,9 @@ struct SkirtSideResults {
   // Shares of the side's area by regime of the nominal gap (contact_forces' classification:
   // hydrodynamic h/sigma > 3, mixed 1 < h/sigma <= 3, boundary <= 1); they sum to 1.
   double hydrodynamicShare = 0.0, mixedShare = 0.0, boundaryShare = 0.0;
-  double wettedShare = 0.0;           // share of the area with oil (fill fraction > 0)
+  double wettedShare = 0.0;  // share of the area with oil (fill fraction > 0)
+  // Oil held in the film on the side, sum of area x fill fraction x film gap [m^3].
+  double filmOilVolume_m3 = 0.0;
   double wearRate_m3ps = 0.0;         // Archard wear volume rate k/H * integral p_c |U| dA [m^3/s]
   double maxWearDepthRate_mps = 0.0;  // k/H * max p_c |U| [m/s]
 };

@@ -62,8 +62,10 @@ void validate(const EngineDescription& engine) {
   validateBody(engine.mass.conrod, "mass.conrod");
   validateBody(engine.mass.pin, "mass.pin");
   validateBody(engine.mass.piston, "mass.piston");
-  require(engine.mass.pin.comX_m == 0.0 && engine.mass.pin.comY_m == 0.0, "mass.pin.comX_m/comY_m",
-          engine.mass.pin.comX_m + engine.mass.pin.comY_m, "must be 0 (pin COM on its axis)");
+  require(engine.mass.pin.comX_m == 0.0, "mass.pin.comX_m", engine.mass.pin.comX_m,
+          "must be 0 (pin COM on its axis)");
+  require(engine.mass.pin.comY_m == 0.0, "mass.pin.comY_m", engine.mass.pin.comY_m,
+          "must be 0 (pin COM on its axis)");
 
   requirePositive(engine.drive.speed_radps, "drive.speed_radps");
   requireNonNegative(engine.drive.flywheelInertia_kgm2, "drive.flywheelInertia_kgm2");

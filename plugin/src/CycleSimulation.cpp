@@ -194,7 +194,14 @@ class StepperAdvancer final : public Advancer {
     // A restart (the free crank's landing) begins a new BDF history from s.
     if (stepper_)
       accumulate();
-    stepper_ = std::make_unique<LinearlyImplicitStepper>(model_, options_);
+    // The step budget is the run's: a restart gets what the earlier steppers left.
+    LinearlyImplicitStepperOptions o = options_;
+    o.maxSteps = std::max(1L, options_.maxSteps - before_.steps);
+    if (before_.steps >= options_.maxSteps) {
+      throw std::runtime_error("the step budget of " + std::to_string(options_.maxSteps) +
+                               " integrator steps is used up");
+    }
+    stepper_ = std::make_unique<LinearlyImplicitStepper>(model_, o);
     stepper_->initialize(s);
   }
   void advanceTo(double t) override { stepper_->stepTo(t); }

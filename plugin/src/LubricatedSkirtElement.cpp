@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "pistondyn/common/Validation.h"
 #include "pistondyn/mbd_models/SliderCrank.h"
 #include "pistondyn/plugin/PistonPose.h"
 
@@ -183,9 +184,10 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     try {
       workspace_->lubrication[k]->solve(fields, in, out);
     } catch (const std::runtime_error& e) {
-      throw std::runtime_error("lubricated skirt at crank angle " +
-                               std::to_string(std::fmod(crankAngle_deg, 720.0)) +
-                               " deg: " + e.what());
+      double inCycle = std::fmod(crankAngle_deg, 720.0);
+      if (inCycle < 0.0) inCycle += 720.0;
+      throw std::runtime_error(common::message("lubricated skirt at crank angle ", inCycle,
+                                               " deg: ", e.what()));
     }
     ++filmSolves_;
     if (out.film.usedFallback)

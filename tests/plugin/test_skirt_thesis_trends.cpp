@@ -1,15 +1,15 @@
 // The thesis' parameter study (thesis summary §4) as tests on the passenger-car example
 // engine at its operating point (2,000 rpm, imep 598 kPa, SAE 0W-30 at 105 C, f_dry 0.1,
 // rigid piston and liner, ideal cylindrical liner, no tertiary motion), on a coarse
-// 32 x 24 grid per side (the trends, not the figures, are checked here; the grid study is
-// a separate, slow test):
+// 32 x 24 grid per side (the trends, not the figures, are checked here; the default grid is
+// checked in test_skirt_numerics under the `slow` label):
 //  (a) a partially flooded skirt has a higher fmep than a fully flooded one (thesis:
 //      2.712 -> 4.533 kPa), with asperity contact only in the starved case;
 //  (b) mirroring the skirt profile about the pin axis (minimum-clearance line above instead
 //      of below the pin) reverses the sign of the tilt in the expansion stroke, where the
 //      side force pushes the piston towards the thrust side;
-//  fmep of the example within 1-10 kPa, as the thesis' values are; and the mass-conserving
-//  model against the Reynolds model fully flooded, where both should carry the same loads.
+//  and fmep of the example within 1-10 kPa, as the thesis' values are. (The mass-conserving
+//  model against the Reynolds model is in test_skirt_numerics.)
 
 #include <gtest/gtest.h>
 
@@ -67,8 +67,6 @@ Outcome run(const plugin::LubricatedSkirtParameters& p, int maxCycles) {
   o.lastCycle = table.releaseTable();
   o.stats = sim.getStats();
   o.asperityWork_J = asperityNow - asperityAtStart;
-  for (double f : o.stats.cycleFmep_Pa)
-    std::printf("    cycle fmep %.3f kPa\n", f / 1e3);
   o.totalWork_J = totalNow - totalAtStart;
   return o;
 }

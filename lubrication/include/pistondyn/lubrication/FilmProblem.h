@@ -50,7 +50,8 @@ enum class CavitationModel {
 
 enum class FilmSolverType {
   ReferenceGaussSeidel,  // the thesis' Gauss-Seidel with over-relaxation (projected / Elrod-Adams)
-  FastActiveSet,         // sparse direct (CHOLMOD / KLU) with a primal-dual active-set iteration
+  FastActiveSet,         // primal-dual active-set iteration; Krylov solves preconditioned by
+                         // multigrid or a lagged CHOLMOD / KLU factorisation (FastLinearSolver)
 };
 
 // One open edge of the film region. Ignored for x edges of an x-periodic grid.

@@ -1,7 +1,7 @@
 #pragma once
 // The "ideal liner": holds the piston exactly on the cylinder axis, upright, and at
-// zero tertiary displacement, by three Simbody constraints (lateral position, tilt,
-// position along the pin axis). It applies no force of its own; its reaction is the
+// zero tertiary displacement, by Simbody constraints (lateral position, tilt, and - when the
+// crank train has the tertiary mobility - the position along the pin axis). It applies no force of its own; its reaction is the
 // side force a rigid, frictionless, zero-clearance liner would carry. Used to verify
 // the crank train against closed forms and as the simplest liner for quick studies;
 // the lubricated skirt element replaces it.

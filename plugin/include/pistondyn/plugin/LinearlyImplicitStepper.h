@@ -31,7 +31,8 @@
 //      err ~ C_bdf / (C_bdf - C_pred) (y_{n+1} - y_p) = (2/7)(y_{n+1} - y_p) for constant
 //      steps (C_bdf = -2/9 of BDF2, C_pred = -1 of quadratic extrapolation), in a weighted
 //      RMS norm over (q_f, u_f) with absolute tolerances per coordinate (below); accept
-//      if err <= 1, and choose the next step from err^(-1/3).
+//      if err <= 1, and choose the next step from err^(-1/3) (err^(-1/2) on the
+//      backward-Euler start-up steps).
 // Linearising about the predictor rather than about y_n makes the linearisation error
 // h W_err (y_{n+1} - y_p) = O(h^4): what W leaves out costs no order. The z (integrals
 // such as friction work) are quadratures of the trajectory: they take the same BDF2

@@ -30,7 +30,9 @@
 // relative to the cylinder axis, grows while the piston crosses the clearance and is
 // absorbed by the film and the asperities when it arrives. An approach towards one side
 // begins when v_G changes sign and ends (the event completes) at the next sign change; its
-// impact kinetic energy is the peak of K over the approach, tracked at every accepted step.
+// impact kinetic energy is the peak of K over the approach: K is evaluated at every force
+// evaluation and the tracker installed once per accepted step (an auto-update variable, so
+// with LinearlyImplicitStepper usually the value at the step's predictor or output row).
 // Events below kMinSlapEnergy_J are not counted (the film's small oscillations).
 //
 // Tertiary motion (along the pin axis) is a switch. Off (the thesis' study): the crank
@@ -67,7 +69,9 @@ struct LubricatedSkirtParameters {
   // Both sides' grids: arc width, node counts, clustering (side, radius and the skirt's
   // height range are filled in from the engine).
   skirt::SkirtSideGridParameters grid;
-  skirt::GapAssemblyParameters gap;    // gap terms (travel and radius from the engine if unset)
+  // Gap terms; the piston travel (BDC/TDC pin heights) and the liner-top height are taken
+  // from the engine when unset (NaN). The grid's radius and skirt range always come from it.
+  skirt::GapAssemblyParameters gap;
   lubrication::OilSpec oil;            // oil data (grade)
   double oilTemperature_degC = 105.0;  // film temperature [degC]
   lubrication::PatirChengParameters roughness;        // rq1 = liner, rq2 = skirt

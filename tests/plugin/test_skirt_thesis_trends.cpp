@@ -67,6 +67,8 @@ Outcome run(const plugin::LubricatedSkirtParameters& p, int maxCycles) {
   o.lastCycle = table.releaseTable();
   o.stats = sim.getStats();
   o.asperityWork_J = asperityNow - asperityAtStart;
+  o.totalWork_J = totalNow - totalAtStart;
+  return o;
 }
 
 double fmep_kPa(const Outcome& o) {

@@ -1,7 +1,7 @@
 // Numerics of whole-cycle skirt runs on the passenger-car example (fully flooded, where the
 // cycle is periodic): the step size, the cavitation model, the periodic steady state, the
-// bound on the lateral motion; and, under the `slow` label, an independent integrator
-// (Simbody's CPodes BDF) and the grid doubling at the default grid.
+// bound on the lateral motion, and the doubling of the film grid (32 x 24 -> the deck's
+// 64 x 48).
 
 #include <gtest/gtest.h>
 
@@ -156,6 +156,23 @@ TEST(SkirtNumerics, LateralMotionStaysWithinClearanceAndAsperityCompliance) {
     EXPECT_GT(minThrust, -2e6 * r.sigma_m);
     EXPECT_GT(minAnti, -2e6 * r.sigma_m);
   }
+}
+
+// Grid convergence (the criterion): doubling the film grid in both directions, from
+// 32 x 24 to the deck's 64 x 48 per side, changes the periodic fully flooded fmep by less
+// than 2 %. (The starved skirt does not pass this yet: plugin/README.md, known limitations.)
+TEST(SkirtNumerics, DoublingTheFilmGridChangesFullyFloodedFmepByLessThanTwoPercent) {
+  plugin::SimulationSettings s = settings(6);
+  s.untilPeriodic = true;
+  const CycleRun coarse = run(ts::exampleSkirtParameters(32, 24), s);
+  const CycleRun fine = run(ts::exampleSkirtParameters(64, 48), s);
+  const double change = std::abs(fmep_kPa(fine) - fmep_kPa(coarse)) / fmep_kPa(fine);
+  std::printf("  fmep %.4f kPa (32 x 24, %d cycles) -> %.4f kPa (64 x 48, %d cycles): %.3f %%\n",
+              fmep_kPa(coarse), coarse.stats.cyclesRun, fmep_kPa(fine), fine.stats.cyclesRun,
+              100 * change);
+  ASSERT_TRUE(coarse.stats.converged);
+  ASSERT_TRUE(fine.stats.converged);
+  EXPECT_LT(change, 0.02);
 }
 
 }  // namespace

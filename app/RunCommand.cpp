@@ -99,7 +99,8 @@ class RunCommand final : public Subcommand {
  public:
   explicit RunCommand(CLI::App& program)
       : Subcommand(program.add_subcommand(
-            "run", "simulate an engine deck and write DIR/cycle.csv and DIR/summary.json")) {
+            "run", "simulate an engine deck and write DIR/cycle.csv, DIR/summary.json and "
+                   "the figures DIR/plots/*.png")) {
     app_->add_option("DECK", deck_, "engine deck (YAML; every key names its unit, e.g. bore_mm)")
         ->required()
         ->type_name("DECK.yaml");

@@ -1,8 +1,9 @@
-// pistondyn check DECK.yaml [--set key.path=value]...
+// pistondyn check DECK.yaml [--set key.path=value]... [--log-level LEVEL]
 
 #include <iostream>
 
 #include "CommandSupport.h"
+#include "Logging.h"
 #include "Subcommand.h"
 
 namespace pistondyn::app {
@@ -17,11 +18,13 @@ class CheckCommand final : public Subcommand {
         ->required()
         ->type_name("DECK.yaml");
     addSetOption(*app_, overrides_);
+    addLogLevelOption(*app_, logLevel_);
     app_->set_help_flag("-h,--help", "print this help and exit");
     app_->footer(deckHelpFooter());
   }
 
   int execute() override {
+    setUpLogging(logLevel_);
     const auto deck = loadDeckOrReport(deck_, overrides_);
     if (!deck)
       return kExitBadInput;
@@ -32,7 +35,7 @@ class CheckCommand final : public Subcommand {
   }
 
  private:
-  std::string deck_;
+  std::string deck_, logLevel_ = "warn";
   std::vector<std::string> overrides_;
 };
 

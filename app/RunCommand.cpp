@@ -1,4 +1,5 @@
-// pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--quiet]
+// pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--quiet] [--no-plot]
+//               [--log-level LEVEL]
 
 #include <cmath>
 #include <cstdio>
@@ -7,8 +8,14 @@
 
 #include <unistd.h>
 
+#include <spdlog/spdlog.h>
+
 #include "CommandSupport.h"
+#include "Logging.h"
+#include "ProgressLine.h"
+#include "ResultPlots.h"
 #include "Subcommand.h"
+#include "pistondyn/io/ResultFolder.h"
 #include "pistondyn/io/RunDeck.h"
 
 namespace pistondyn::app {
@@ -92,7 +99,8 @@ class RunCommand final : public Subcommand {
  public:
   explicit RunCommand(CLI::App& program)
       : Subcommand(program.add_subcommand(
-            "run", "simulate an engine deck and write DIR/cycle.csv and DIR/summary.json")) {
+            "run", "simulate an engine deck and write DIR/cycle.csv, DIR/summary.json and "
+                   "the figures DIR/plots/*.png")) {
     app_->add_option("DECK", deck_, "engine deck (YAML; every key names its unit, e.g. bore_mm)")
         ->required()
         ->type_name("DECK.yaml");
@@ -103,12 +111,20 @@ class RunCommand final : public Subcommand {
         ->required()
         ->type_name("DIR");
     addSetOption(*app_, overrides_);
-    app_->add_flag("--quiet", quiet_, "no progress line (default: progress on a terminal)");
+    app_->add_flag("--quiet", quiet_,
+                   "no progress line (default: runs longer than 1 s show cycle, crank angle "
+                   "and the estimated time left on stderr; rewritten in place on a terminal, "
+                   "a plain line every 15 s otherwise)");
+    app_->add_flag("--no-plot", noPlot_,
+                   "do not draw DIR/plots/*.png after the run (default: drawn with gnuplot, "
+                   "as `pistondyn plot DIR`; a missing gnuplot is a warning, the results stay)");
+    addLogLevelOption(*app_, logLevel_);
     app_->set_help_flag("-h,--help", "print this help and exit");
     app_->footer(deckHelpFooter());
   }
 
   int execute() override {
+    setUpLogging(logLevel_);
     // Refuse an unusable output path now, not after the simulation.
     std::error_code ec;
     if (std::filesystem::exists(outDir_, ec) && !std::filesystem::is_directory(outDir_, ec)) {
@@ -118,24 +134,34 @@ class RunCommand final : public Subcommand {
     const auto deck = loadDeckOrReport(deck_, overrides_);
     if (!deck)
       return kExitBadInput;
+    spdlog::info("run: deck {} ({}), liner {}, {} cycle(s) of {} rows, results to {}", deck_,
+                 deck->engine.name, deck->linerModel, deck->simulation.cycles,
+                 deck->simulation.stepsPerCycle(), outDir_);
+    const bool terminal = isatty(fileno(stderr)) != 0;
+    ProgressLine progress(stderr, terminal, deck->simulation.stepsPerCycle(),
+                          deck->simulation.cycles, deck->simulation.untilPeriodic);
+    std::vector<plugin::RowSink*> sinks;
+    if (!quiet_)
+      sinks.push_back(&progress);
     try {
-      // A progress line only makes sense on a terminal; logs get the summary alone.
-      const bool showProgress = !quiet_ && isatty(fileno(stderr)) != 0;
-      int lastPercent = -1;
-      auto progress = [&](double f) {
-        const int p = static_cast<int>(f * 100.0);
-        if (showProgress && p / 10 != lastPercent / 10) {
-          std::fprintf(stderr, "\rpistondyn: %3d %%", p);
-          lastPercent = p;
-        }
-      };
-      const io::RunOutcome outcome = io::runDeck(*deck, outDir_, progress);
-      if (!quiet_)
-        std::fprintf(stderr, "\r");
+      const io::RunOutcome outcome = io::runDeck(*deck, outDir_, {}, sinks);
+      progress.finish();
       printSummary(*deck, outcome, outDir_);
     } catch (const std::exception& e) {
-      std::cerr << "\npistondyn: the run failed; no results were written: " << e.what() << "\n";
+      progress.finish();
+      std::cerr << "pistondyn: the run failed; no results were written: " << e.what() << "\n";
       return kExitFailed;
+    }
+    if (!noPlot_) {
+      // The results are complete and written: a plot that fails is a warning, not a failed run.
+      try {
+        const auto files = writeResultPlots(io::readResultFolder(outDir_));
+        std::printf("  and %zu figures (%s/plots/*.png)\n", files.size(), outDir_.c_str());
+      } catch (const std::exception& e) {
+        std::fflush(stdout);
+        std::cerr << "pistondyn: warning: no plots (the results are written; `pistondyn plot "
+                  << outDir_ << "` draws them later): " << e.what() << "\n";
+      }
     }
     return kExitOk;
   }
@@ -143,7 +169,8 @@ class RunCommand final : public Subcommand {
  private:
   std::string deck_, outDir_;
   std::vector<std::string> overrides_;
-  bool quiet_ = false;
+  std::string logLevel_ = "warn";
+  bool quiet_ = false, noPlot_ = false;
 };
 
 }  // namespace

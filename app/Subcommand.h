@@ -34,5 +34,7 @@ class Subcommand {
 // Each adds its CLI11 subcommand (options, --help text) to `program`.
 std::unique_ptr<Subcommand> addRunCommand(CLI::App& program);
 std::unique_ptr<Subcommand> addCheckCommand(CLI::App& program);
+std::unique_ptr<Subcommand> addPlotCommand(CLI::App& program);
+std::unique_ptr<Subcommand> addReportCommand(CLI::App& program);
 
 }  // namespace pistondyn::app

@@ -1,8 +1,11 @@
 // pistondyn command-line program: parses the command line (CLI11) and dispatches to one
-// subcommand per file (RunCommand.cpp, CheckCommand.cpp), each over pistondyn::io.
+// subcommand per file (RunCommand.cpp, CheckCommand.cpp, PlotCommand.cpp,
+// ReportCommand.cpp), each over pistondyn::io.
 //
-//   pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--quiet]
+//   pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--quiet] [--no-plot]
 //   pistondyn check DECK.yaml [--set key.path=value]...
+//   pistondyn plot DIR          (figures of a result folder, gnuplot)
+//   pistondyn report DIR        (DIR/report.html, self-contained)
 //   pistondyn --help | --version          (and pistondyn <command> --help)
 //
 // Exit codes: 0 success; 1 bad input (deck, table, override) - nothing written;
@@ -20,8 +23,11 @@
 namespace {
 
 const char* kSynopsis =
-    "usage: pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--quiet]\n"
-    "       pistondyn check DECK.yaml [--set key.path=value]...\n"
+    "usage: pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--quiet] [--no-plot]\n"
+    "                     [--log-level LEVEL]\n"
+    "       pistondyn check DECK.yaml [--set key.path=value]... [--log-level LEVEL]\n"
+    "       pistondyn plot DIR [--log-level LEVEL]\n"
+    "       pistondyn report DIR [--log-level LEVEL]\n"
     "       pistondyn --help | --version | <command> --help\n";
 
 }  // namespace
@@ -44,6 +50,8 @@ int main(int argc, char** argv) {
   std::vector<std::unique_ptr<Subcommand>> commands;
   commands.push_back(addRunCommand(program));
   commands.push_back(addCheckCommand(program));
+  commands.push_back(addPlotCommand(program));
+  commands.push_back(addReportCommand(program));
 
   // An unknown first word is an unknown command (CLI11 would only say one is required).
   if (argc >= 2 && argv[1][0] != '-') {

@@ -11,6 +11,9 @@ PACKAGES=(
   libyaml-cpp-dev         # YAML engine decks (pistondyn::io)
   nlohmann-json3-dev      # summary.json (pistondyn::io, header-only, build time)
   libcli11-dev            # command line of the pistondyn program (app/, header-only)
+  libspdlog-dev           # the program's log (app/, --log-level)
+  gnuplot-nox             # figures: pistondyn plot / report / run (pngcairo, no X)
+  chromium                # tests: report.html rendered headless (skipped without it)
   libgtest-dev googletest # test suite
   libbenchmark-dev        # bench/
 )

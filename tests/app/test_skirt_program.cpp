@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "PlotChecks.h"
 #include "ScratchDeck.h"
 #include "pistondyn/mbd_models/SliderCrank.h"
 
@@ -353,6 +354,32 @@ TEST_F(SkirtScratchDeck, AShortRunWritesEverySkirtFigure) {
   const std::string stdoutText = readFile(dir_ / "stdout.txt");
   for (const char* text : {"fmep", "min h/sigma", "min film", "hot running clearance"})
     EXPECT_NE(stdoutText.find(text), std::string::npos) << text << "\n" << stdoutText;
+
+  // The same folder plotted: every skirt figure and one field map per dumped angle, PNGs
+  // of the stated size (110 px + 360 px per panel; the maps 1200 x 1250).
+  const std::string plot = std::string(PISTONDYN_EXE) + " plot " + out.string() + " > " +
+                           (dir_ / "plot.txt").string() + " 2>&1";
+  ASSERT_EQ(std::system(plot.c_str()), 0) << readFile(dir_ / "plot.txt");
+  const std::vector<std::string> figures = {
+      "crank_train_forces.png", "field_map_0deg.png", "field_map_380deg.png",
+      "film_thickness.png",     "friction.png",       "regime_shares.png",
+      "secondary_motion.png",   "side_force.png"};
+  EXPECT_EQ(listPngs(out / "plots"), figures);
+  for (const auto& f : figures) {
+    const PngSize size = readPngSize(out / "plots" / f);
+    EXPECT_EQ(size.width, 1200) << f;
+    EXPECT_EQ(size.height, f.rfind("field_map", 0) == 0 ? 1250 : 830) << f;
+  }
+  // The report: every figure embedded, the exaggeration a round factor drawing the 40 um
+  // hot clearance as about 8 % of the 74.5 mm bore (0.08 x 74.5 / 0.040 = 149 -> 100).
+  const std::string report = std::string(PISTONDYN_EXE) + " report " + out.string() + " > " +
+                             (dir_ / "report.txt").string() + " 2>&1";
+  ASSERT_EQ(std::system(report.c_str()), 0) << readFile(dir_ / "report.txt");
+  const std::string html = readFile(out / "report.html");
+  checkReportEmbedsThePlots(html, out / "plots");
+  EXPECT_NE(html.find("exaggerated × 100</strong>"), std::string::npos);
+  EXPECT_NE(html.find("{\"factor\":100,"), std::string::npos);
+  renderInChromium(out / "report.html", static_cast<int>(figures.size()));
 }
 
 // `pistondyn check` on both example decks as shipped.

@@ -126,11 +126,12 @@ class ScratchDeck : public ::testing::Test {
     return "";
   }
 #ifdef PISTONDYN_EXE
-  // Runs the real program; returns its exit code.
+  // Runs the real program (no progress line, no plots: tests/app/test_plots_report.cpp
+  // checks those); returns its exit code.
   int runProgram(const std::string& args, const fs::path& out) const {
     const std::string cmd =
-        std::string(PISTONDYN_EXE) + " run " + deck() + " --out " + out.string() + " --quiet " +
-        args + " > " + (dir_ / "stdout.txt").string() + " 2> " + (dir_ / "stderr.txt").string();
+        std::string(PISTONDYN_EXE) + " run " + deck() + " --out " + out.string() +
+        " --quiet --no-plot " + args + " > " + (dir_ / "stdout.txt").string() + " 2> " + (dir_ / "stderr.txt").string();
     const int status = std::system(cmd.c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }

@@ -1,0 +1,78 @@
+// pistondyn report DIR [--log-level LEVEL]
+
+#include <filesystem>
+#include <iostream>
+
+#include <spdlog/spdlog.h>
+
+#include "Gnuplot.h"
+#include "HtmlReport.h"
+#include "Logging.h"
+#include "ResultPlots.h"
+#include "Subcommand.h"
+#include "pistondyn/io/ResultWriters.h"
+
+namespace pistondyn::app {
+namespace {
+
+class ReportCommand final : public Subcommand {
+ public:
+  explicit ReportCommand(CLI::App& program)
+      : Subcommand(program.add_subcommand(
+            "report", "write DIR/report.html: summary, plots, inputs and an animation of the "
+                      "secondary motion, in one self-contained file")) {
+    app_->add_option("DIR", dir_, "a folder `pistondyn run --out DIR` wrote")
+        ->required()
+        ->type_name("DIR");
+    addLogLevelOption(*app_, logLevel_);
+    app_->set_help_flag("-h,--help", "print this help and exit");
+    app_->footer(
+        "report.html needs no network: images are embedded (base64), style and script inline.\n"
+        "It (re)draws DIR/plots/ first (as pistondyn plot); without gnuplot the page says so\n"
+        "and has no figures. The summary table gives every figure of summary.json with its\n"
+        "unit; the inputs are the deck's text (deck_file of summary.json, read from the\n"
+        "current folder if relative) and the resolved inputs in SI. The animation draws the\n"
+        "piston over the last cycle, lateral motion, clearance and tilt exaggerated by the\n"
+        "factor the page states. Exit codes: 0 ok; 1 DIR is not a result folder; 2 bad\n"
+        "command line; 3 writing failed.");
+  }
+
+  int execute() override {
+    setUpLogging(logLevel_);
+    io::ResultFolder folder;
+    try {
+      folder = io::readResultFolder(dir_);
+    } catch (const std::exception& e) {
+      std::cerr << "pistondyn: cannot write a report: " << e.what() << "\n";
+      return kExitBadInput;
+    }
+    std::vector<std::string> pngs;
+    std::string note;
+    try {
+      pngs = writeResultPlots(folder);
+    } catch (const std::exception& e) {
+      note = std::string("No plots: ") + e.what();
+      std::cerr << "pistondyn: the report has no plots: " << e.what() << "\n";
+    }
+    try {
+      io::writeFilesAtomically(dir_, {{"report.html", makeHtmlReport(folder, pngs, note)}});
+    } catch (const std::exception& e) {
+      std::cerr << "pistondyn: the report could not be written: " << e.what() << "\n";
+      return kExitFailed;
+    }
+    std::cout << "pistondyn: wrote " << (std::filesystem::path(dir_) / "report.html").string()
+              << " (" << pngs.size() << " figures)\n";
+    return kExitOk;
+  }
+
+ private:
+  std::string dir_, logLevel_ = "warn";
+};
+
+}  // namespace
+
+std::unique_ptr<Subcommand> addReportCommand(CLI::App& program) {
+  return std::make_unique<ReportCommand>(program);
+}
+
+}  // namespace pistondyn::app

@@ -1,0 +1,498 @@
+#include "ResultPlots.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include <spdlog/spdlog.h>
+
+#include "Gnuplot.h"
+#include "pistondyn/io/ResultWriters.h"
+
+namespace pistondyn::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+// ---- units: a column's unit (from its name) converted to the unit an axis states ----
+
+struct UnitInfo {
+  const char* unit;
+  const char* quantity;
+  double toSI;
+};
+const UnitInfo kUnits[] = {
+    {"N", "force", 1.0},        {"kN", "force", 1e3},     {"Nm", "moment", 1.0},
+    {"m", "length", 1.0},       {"mm", "length", 1e-3},   {"um", "length", 1e-6},
+    {"rad", "angle", 1.0},      {"mrad", "angle", 1e-3},  {"deg", "angle", M_PI / 180.0},
+    {"Pa", "pressure", 1.0},    {"kPa", "pressure", 1e3}, {"MPa", "pressure", 1e6},
+    {"bar", "pressure", 1e5},   {"W", "power", 1.0},      {"kW", "power", 1e3},
+    {"J", "energy", 1.0},       {"mJ", "energy", 1e-3},   {"", "dimensionless", 1.0},
+};
+
+std::optional<double> conversionFactor(const std::string& from, const std::string& to) {
+  const UnitInfo *a = nullptr, *b = nullptr;
+  for (const auto& u : kUnits) {
+    if (from == u.unit)
+      a = &u;
+    if (to == u.unit)
+      b = &u;
+  }
+  if (a == nullptr || b == nullptr || std::string(a->quantity) != b->quantity)
+    return std::nullopt;
+  return a->toSI / b->toSI;
+}
+
+// How an axis label writes a unit.
+std::string displayUnit(const std::string& unit) {
+  if (unit == "um")
+    return "µm";
+  if (unit == "Nm")
+    return "N·m";
+  if (unit == "deg")
+    return "°";
+  if (unit.empty())
+    return "–";
+  return unit;
+}
+
+// The column of output `name` in whatever unit it was written ("side_force" finds
+// side_force_N), with the factor to `unit`; nullopt if absent or not convertible.
+struct Column {
+  std::size_t index;
+  double factor;
+};
+std::optional<Column> findOutput(const io::CsvTable& t, const std::string& name,
+                                 const std::string& unit) {
+  for (std::size_t j = 0; j < t.columns.size(); ++j) {
+    const std::string& c = t.columns[j];
+    std::string written;
+    if (c == name) {
+      written = "";
+    } else if (c.rfind(name + "_", 0) == 0 && io::getColumnUnit(c) == c.substr(name.size() + 1)) {
+      written = c.substr(name.size() + 1);
+    } else {
+      continue;
+    }
+    if (const auto f = conversionFactor(written, unit))
+      return Column{j, *f};
+    spdlog::warn("plot: column {} is not in a unit convertible to '{}'; left out", c, unit);
+    return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+bool hasOutput(const io::CsvTable& t, const std::string& name) {
+  return std::any_of(t.columns.begin(), t.columns.end(), [&](const std::string& c) {
+    return c == name ||
+           (c.rfind(name + "_", 0) == 0 && io::getColumnUnit(c) == c.substr(name.size() + 1));
+  });
+}
+
+// ---- figure descriptions ----------------------------------------------------------
+
+struct Series {
+  std::string output;  // output name without unit
+  std::string title;
+  std::string colour;
+  int dashType = 1;
+};
+struct ReferenceLine {
+  double value;
+  std::string title;
+};
+struct Panel {
+  std::string quantity;  // axis label without unit
+  std::string unit;      // the unit the axis is in
+  std::vector<Series> series;
+  std::vector<ReferenceLine> lines;
+  int stacked = 0;  // the first `stacked` series are drawn as stacked filled areas
+  std::string yrange;
+};
+struct Figure {
+  std::string name;      // file stem
+  std::string title;
+  std::string requiredOutput;  // the figure is drawn only if this output exists
+  std::vector<Panel> panels;
+};
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\')
+      out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+// A gnuplot string of two lines (the second may be empty).
+std::string twoLines(const std::string& first, const std::string& second) {
+  const std::string a = quoted(first), b = quoted(second);
+  return second.empty() ? a : a.substr(0, a.size() - 1) + "\\n" + b.substr(1);
+}
+
+std::string number(double v) { return io::formatNumber(v); }
+
+const char* kBlue = "#1f77b4";
+const char* kOrange = "#ff7f0e";
+const char* kGreen = "#2ca02c";
+const char* kRed = "#d62728";
+const char* kPurple = "#9467bd";
+
+std::vector<Figure> describeFigures(const io::ResultFolder& f) {
+  std::vector<Figure> figures;
+  figures.push_back(
+      {"crank_train_forces",
+       "Crank-train forces",
+       "",
+       {{"force",
+         "kN",
+         {{"gas_force", "gas force on the crown (+ down)", kBlue},
+          {"conrod_force", "conrod force (+ compression)", kOrange},
+          {"side_force", "side force on the liner (+ thrust)", kGreen}},
+         {},
+         0,
+         ""},
+        {"torque",
+         "Nm",
+         {{"crank_torque", "crank torque (indicated)", kBlue},
+          {"drive_torque", "drive torque", kRed, 2}},
+         {},
+         0,
+         ""}}});
+  figures.push_back(
+      {"side_force",
+       "Side force",
+       "side_force",
+       {{"force",
+         "N",
+         {{"side_force", "side force on the liner (+ thrust)", "black"},
+          {"hydrodynamic_normal_force_thrust", "film, thrust side", kBlue},
+          {"hydrodynamic_normal_force_antithrust", "film, anti-thrust side", kOrange},
+          {"asperity_normal_force_thrust", "asperities, thrust side", kBlue, 2},
+          {"asperity_normal_force_antithrust", "asperities, anti-thrust side", kOrange, 2}},
+         {},
+         0,
+         ""},
+        {"moment on the liner about +z",
+         "Nm",
+         {{"guide_moment", "guide moment (about the pin axis)", kPurple},
+          {"liner_moment", "skirt moment (about the pin axis)", kPurple}},
+         {},
+         0,
+         ""}}});
+  std::vector<ReferenceLine> clearance;
+  const std::string hot = f.getSummaryValue("results.hot_clearance_um");
+  if (!hot.empty()) {
+    const double c = std::strtod(hot.c_str(), nullptr);
+    clearance = {{c, "± hot clearance (zero-drop point)"}, {-c, ""}};
+  }
+  figures.push_back({"secondary_motion",
+                     "Secondary motion (+ towards thrust; tilt > 0: crown towards thrust)",
+                     "u_lat_skirt_top",
+                     {{"lateral displacement",
+                       "um",
+                       {{"u_lat_skirt_top", "at the skirt top", kBlue},
+                        {"u_lat", "at the pin axis", "black", 2},
+                        {"u_lat_skirt_bottom", "at the skirt bottom", kOrange}},
+                       clearance,
+                       0,
+                       ""},
+                      {"tilt", "mrad", {{"tilt", "tilt", kGreen}}, {}, 0, ""}}});
+  figures.push_back({"friction",
+                     "Skirt friction",
+                     "friction_force",
+                     {{"friction force on the piston along +y",
+                       "N",
+                       {{"friction_force", "total", "black"},
+                        {"hydrodynamic_friction", "film shear", kBlue},
+                        {"asperity_friction", "asperity (boundary)", kRed}},
+                       {},
+                       0,
+                       ""},
+                      {"friction power", "W", {{"friction_power", "friction power", kPurple}}, {},
+                       0, ""}}});
+  figures.push_back(
+      {"film_thickness",
+       "Minimum film thickness and h/σ",
+       "min_film_thickness_thrust",
+       {{"minimum film thickness",
+         "um",
+         {{"min_film_thickness_thrust", "thrust side", kBlue},
+          {"min_film_thickness_antithrust", "anti-thrust side", kOrange}},
+         {{0.0, ""}},
+         0,
+         ""},
+        {"minimum h/σ",
+         "",
+         {{"min_h_over_sigma_thrust", "thrust side", kBlue},
+          {"min_h_over_sigma_antithrust", "anti-thrust side", kOrange}},
+         {{1.0, "h/σ = 1 and 3 (regime limits)"}, {3.0, ""}},
+         0,
+         ""}}});
+  Figure regimes{"regime_shares", "Lubrication regimes: area shares of each skirt side",
+                 "hydrodynamic_share_thrust", {}};
+  for (const auto& [side, label] : {std::pair<std::string, std::string>{"thrust", "thrust side"},
+                                    {"antithrust", "anti-thrust side"}}) {
+    regimes.panels.push_back({"area share, " + label,
+                              "",
+                              {{"boundary_share_" + side, "boundary (h/σ ≤ 1)", kRed},
+                               {"mixed_share_" + side, "mixed (1 < h/σ ≤ 3)", kOrange},
+                               {"hydrodynamic_share_" + side, "hydrodynamic (h/σ > 3)", kBlue},
+                               {"wetted_share_" + side, "wetted (fill fraction > 0)", "black"}},
+                              {},
+                              3,
+                              "[0:1.05]"});
+  }
+  figures.push_back(regimes);
+  return figures;
+}
+
+// ---- writing data and scripts ---------------------------------------------------------
+
+void writeTdcMarks(std::ostream& gp) {
+  gp << "set xrange [0:720]\nset xtics 0,90,720 nomirror\nset mxtics 3\n"
+        "set x2range [0:720]\n"
+        "set x2tics (\"firing TDC\" 0, \"gas-exchange TDC\" 360, \"firing TDC\" 720) "
+        "nomirror scale 0\n"
+        "unset arrow\n";
+  for (int a : {0, 360, 720}) {
+    gp << "set arrow from first " << a << ", graph 0 to first " << a
+       << ", graph 1 nohead dt 2 lw 1.2 lc rgb 'gray30'\n";
+  }
+  gp << "set xlabel \"crank angle (°), 0° = firing TDC\"\n";
+}
+
+// One crank-angle figure: its data file and its part of the script.
+bool writeFigure(const Figure& fig, const io::ResultFolder& folder, const io::CycleWindow& w,
+                 const fs::path& work, const std::string& pngPath, std::ostream& gp) {
+  const io::CsvTable& t = folder.cycle;
+  if (!fig.requiredOutput.empty() && !hasOutput(t, fig.requiredOutput))
+    return false;
+  // Columns of the data file: angle, then every series found, panel by panel.
+  std::vector<Column> columns;
+  std::vector<std::vector<std::pair<const Series*, int>>> present(fig.panels.size());
+  for (std::size_t p = 0; p < fig.panels.size(); ++p) {
+    for (const Series& s : fig.panels[p].series) {
+      if (const auto c = findOutput(t, s.output, fig.panels[p].unit)) {
+        columns.push_back(*c);
+        present[p].push_back({&s, static_cast<int>(columns.size()) + 1});
+      }
+    }
+  }
+  std::vector<std::size_t> panels;
+  for (std::size_t p = 0; p < fig.panels.size(); ++p) {
+    const bool complete =
+        fig.panels[p].stacked == 0 ||
+        static_cast<int>(present[p].size()) == static_cast<int>(fig.panels[p].series.size());
+    if (!present[p].empty() && complete)
+      panels.push_back(p);
+  }
+  if (panels.empty())
+    return false;
+  const fs::path data = work / (fig.name + ".dat");
+  {
+    std::ofstream out(data);
+    for (std::size_t i = 0; i < w.rows.size(); ++i) {
+      out << number(w.angle_deg[i]);
+      for (const Column& c : columns)
+        out << ' ' << number(t.rows[w.rows[i]][c.index] * c.factor);
+      out << '\n';
+    }
+    if (!out)
+      throw std::runtime_error(data.string() + ": write failed");
+  }
+  const int height = 110 + 360 * static_cast<int>(panels.size());
+  gp << "\nset terminal pngcairo size 1200," << height << " noenhanced font 'Sans,11'\n"
+     << "set output " << quoted(pngPath) << "\n";
+  const std::string engine = folder.getSummaryValue("inputs.engine_name");
+  gp << "set multiplot layout " << panels.size() << ",1 title "
+     << twoLines(fig.title + "   (last cycle)", engine) << " font 'Sans,13'\n";
+  for (std::size_t p : panels) {
+    const Panel& panel = fig.panels[p];
+    writeTdcMarks(gp);
+    gp << "set ylabel " << quoted(panel.quantity + " (" + displayUnit(panel.unit) + ")") << "\n";
+    gp << "set yrange " << (panel.yrange.empty() ? "[*:*]" : panel.yrange) << "\n";
+    std::string plot;
+    auto add = [&](const std::string& item) { plot += (plot.empty() ? "plot " : ", \\\n  ") + item; };
+    const std::string file = quoted(data.string());
+    std::string below = "0";
+    int k = 0;
+    for (const auto& [s, col] : present[p]) {
+      const std::string style = "lc rgb '" + s->colour + "'";
+      if (k++ < panel.stacked) {
+        const std::string top = below + "+$" + std::to_string(col);
+        add(file + " using 1:(" + below + "):(" + top + ") with filledcurves fs solid 0.45 " +
+            style + " title " + quoted(s->title));
+        below = top;
+      } else {
+        add(file + " using 1:" + std::to_string(col) + " with lines lw 2 dt " +
+            std::to_string(s->dashType) + " " + style + " title " + quoted(s->title));
+      }
+    }
+    for (const ReferenceLine& l : panel.lines) {
+      add(number(l.value) + " with lines dt 3 lw 1.2 lc rgb 'gray40' " +
+          (l.title.empty() ? std::string("notitle") : "title " + quoted(l.title)));
+    }
+    gp << plot << "\n";
+  }
+  gp << "unset multiplot\nunset output\n";
+  return true;
+}
+
+// A field-dump map: film pressure, fill fraction and gap, thrust and anti-thrust side.
+void writeFieldMap(double angle_deg, const std::vector<const io::FieldDumpFile*>& sides,
+                   const std::string& engine, const fs::path& work, const std::string& pngPath,
+                   std::ostream& gp) {
+  struct Field {
+    const char* output;
+    const char* label;
+    const char* unit;
+  };
+  const Field fields[] = {{"film_pressure", "film pressure (gauge)", "MPa"},
+                          {"fill_fraction", "fill fraction", ""},
+                          {"gap", "gap (nominal, all seven terms)", "um"}};
+  std::vector<fs::path> data;
+  std::vector<double> lo(3, INFINITY), hi(3, -INFINITY);
+  for (const io::FieldDumpFile* d : sides) {
+    const io::CsvTable t = io::readCsvTable(d->path, {"phi_deg", "y_mm"});
+    std::vector<Column> cols;
+    for (const Field& fld : fields) {
+      const auto c = findOutput(t, fld.output, fld.unit);
+      if (!c)
+        throw std::runtime_error(d->path + ": no column for " + fld.output);
+      cols.push_back(*c);
+    }
+    const std::size_t phi = t.columnIndex("phi_deg"), y = t.columnIndex("y_mm");
+    data.push_back(work / ("field_" + number(angle_deg) + "_" + d->side + ".dat"));
+    std::ofstream out(data.back());
+    for (std::size_t i = 0; i < t.rows.size(); ++i) {
+      // pm3d reads one scan per height: phi runs fastest, a blank line between heights.
+      if (i > 0 && t.rows[i][y] != t.rows[i - 1][y])
+        out << '\n';
+      out << number(t.rows[i][phi]) << ' ' << number(t.rows[i][y]);
+      for (std::size_t k = 0; k < cols.size(); ++k) {
+        const double v = t.rows[i][cols[k].index] * cols[k].factor;
+        lo[k] = std::min(lo[k], v);
+        hi[k] = std::max(hi[k], v);
+        out << ' ' << number(v);
+      }
+      out << '\n';
+    }
+  }
+  gp << "\nset terminal pngcairo size 1200,1250 noenhanced font 'Sans,11'\n"
+     << "set output " << quoted(pngPath) << "\n"
+     << "unset arrow\nunset x2tics\nset xtics autofreq mirror\nset mxtics default\n"
+     << "set xrange [*:*]\nset yrange [*:*]\nset autoscale xfix\nset autoscale yfix\n"
+     << "set view map\nset pm3d map corners2color mean\nunset key\n"
+     << "set multiplot layout 3," << sides.size() << " title "
+     << twoLines("Skirt fields at crank angle " + number(angle_deg) +
+                     "° of the last cycle (0° = firing TDC), unwrapped skirt",
+                 engine)
+     << " font 'Sans,13'\n";
+  for (std::size_t k = 0; k < 3; ++k) {
+    // One colour scale for both sides, so that they compare.
+    const double span = hi[k] - lo[k];
+    const double a = lo[k], b = span > 0 ? hi[k] : lo[k] + 1.0;
+    gp << (k == 1 ? "set palette defined (0 '#ffffff', 1 '#c6dbef', 2 '#6baed6', 3 '#08519c')\n"
+                  : "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', "
+                    "4 '#fde725')\n");
+    gp << "set cbrange [" << number(a) << ":" << number(b) << "]\n";
+    for (std::size_t s = 0; s < sides.size(); ++s) {
+      const std::string side = sides[s]->side == "thrust" ? "thrust side" : "anti-thrust side";
+      gp << "set title " << quoted(std::string(fields[k].label) + ", " + side) << "\n"
+         << "set xlabel \"circumferential angle φ from the thrust axis (°)\"\n"
+         << "set ylabel \"height above the pin axis (mm)\"\n"
+         << "set cblabel " << quoted(std::string(fields[k].label) + " (" +
+                                     displayUnit(fields[k].unit) + ")") << "\n"
+         << "splot " << quoted(data[s].string()) << " using 1:2:" << (3 + k) << " with pm3d\n";
+    }
+  }
+  gp << "unset multiplot\nunset output\nunset view\nunset pm3d\nunset title\nunset cblabel\n"
+     << "set key\n";
+}
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::string tmpl = (fs::temp_directory_path() / "pistondyn_plot_XXXXXX").string();
+    if (::mkdtemp(tmpl.data()) == nullptr)
+      throw std::runtime_error("cannot create a temporary folder for gnuplot's data");
+    path = tmpl;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+}  // namespace
+
+std::vector<std::string> writeResultPlots(const io::ResultFolder& folder) {
+  const std::string gnuplot = findGnuplot();
+  const io::CycleWindow window = io::selectLastCycle(folder.cycle);
+  const fs::path plotDir = fs::path(folder.directory) / "plots";
+  TempDir work;
+  io::ResultFileSet files(plotDir.string());
+  std::vector<std::string> names;
+  const fs::path script = work.path / "plots.gp";
+  {
+    std::ofstream gp(script);
+    gp << "set encoding utf8\nset grid xtics ytics lc rgb 'gray85' lt 1\n"
+          "set key outside right top vertical Left reverse\n"
+          "set lmargin 12\nset rmargin 40\n";
+    for (const Figure& fig : describeFigures(folder)) {
+      const std::string name = fig.name + ".png";
+      std::ostringstream part;
+      const std::string staged = fs::path(files.getDirectory()) / ("." + name + ".partial");
+      if (writeFigure(fig, folder, window, work.path, staged, part)) {
+        if (files.stage(name) != staged)
+          throw std::logic_error("writeResultPlots: staged name differs from ResultFileSet's");
+        names.push_back(name);
+        gp << part.str();
+      }
+    }
+    std::vector<double> angles;
+    for (const auto& d : folder.fieldDumps) {
+      if (angles.empty() || angles.back() != d.crankAngle_deg)
+        angles.push_back(d.crankAngle_deg);
+    }
+    for (double a : angles) {
+      std::vector<const io::FieldDumpFile*> sides;
+      for (const auto& d : folder.fieldDumps) {
+        if (d.crankAngle_deg == a)
+          sides.push_back(&d);
+      }
+      const std::string name = "field_map_" + number(a) + "deg.png";
+      const std::string staged = files.stage(name);
+      names.push_back(name);
+      gp << "set lmargin -1\nset rmargin -1\n";
+      writeFieldMap(a, sides, folder.getSummaryValue("inputs.engine_name"), work.path, staged, gp);
+    }
+    if (!gp)
+      throw std::runtime_error(script.string() + ": write failed");
+  }
+  spdlog::debug("plot: running {} {}", gnuplot, script.string());
+  runGnuplot(gnuplot, script.string(), (work.path / "gnuplot.log").string());
+  files.commit();
+  // The folder holds this run's figures only.
+  std::set<std::string> keep(names.begin(), names.end());
+  for (const auto& e : fs::directory_iterator(plotDir)) {
+    const std::string n = e.path().filename().string();
+    if (e.path().extension() == ".png" && !keep.count(n))
+      fs::remove(e.path());
+  }
+  std::vector<std::string> paths;
+  for (const auto& n : names)
+    paths.push_back((plotDir / n).string());
+  return paths;
+}
+
+}  // namespace pistondyn::app

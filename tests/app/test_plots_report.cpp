@@ -1,0 +1,179 @@
+// Plots, report, progress line and log of the pistondyn program, at process level on the
+// ideal-guide scratch deck (a run takes a second): which figures appear and that they are
+// real PNGs of the stated size, a missing gnuplot, the report rendered by headless
+// Chromium (skipped without it) with its images decoded here and compared byte for byte,
+// the progress line on a terminal and off it, --log-level.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "PlotChecks.h"
+#include "ScratchDeck.h"
+
+namespace fs = std::filesystem;
+using namespace pistondyn_test;
+
+namespace {
+
+class ProgramPlots : public ScratchDeck {
+ protected:
+  // Runs `pistondyn <args>` with `env` before it; stdout and stderr to files in dir_.
+  int program(const std::string& args, const std::string& env = "") const {
+    const std::string cmd = env + " " + std::string(PISTONDYN_EXE) + " " + args + " > " +
+                            (dir_ / "stdout.txt").string() + " 2> " +
+                            (dir_ / "stderr.txt").string();
+    const int status = std::system(cmd.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  std::string stdoutText() const { return readFile(dir_ / "stdout.txt"); }
+  std::string err() const { return readFile(dir_ / "stderr.txt"); }
+  std::string runArgs(const fs::path& out) const {
+    return "run " + deck() + " --out " + out.string();
+  }
+};
+
+TEST_F(ProgramPlots, ARunDrawsTheCrankTrainFiguresOfTheIdealGuide) {
+  const fs::path out = dir_ / "results";
+  ASSERT_EQ(program(runArgs(out) + " --quiet"), 0) << err();
+  // The ideal guide has no skirt columns: the two crank-train figures only, each a PNG of
+  // 1200 px by 110 + 360 px per panel (two panels).
+  EXPECT_EQ(listPngs(out / "plots"),
+            (std::vector<std::string>{"crank_train_forces.png", "side_force.png"}));
+  for (const char* f : {"crank_train_forces.png", "side_force.png"}) {
+    const PngSize size = readPngSize(out / "plots" / f);
+    EXPECT_EQ(size.width, 1200) << f;
+    EXPECT_EQ(size.height, 830) << f;
+  }
+  EXPECT_NE(stdoutText().find("2 figures"), std::string::npos) << stdoutText();
+  // --no-plot: none; `plot` draws them afterwards.
+  const fs::path bare = dir_ / "bare";
+  ASSERT_EQ(program(runArgs(bare) + " --quiet --no-plot"), 0) << err();
+  EXPECT_FALSE(fs::exists(bare / "plots"));
+  ASSERT_EQ(program("plot " + bare.string()), 0) << err();
+  EXPECT_EQ(listPngs(bare / "plots").size(), 2u);
+  // Figures of another run in the folder are replaced, stale ones removed.
+  std::ofstream(bare / "plots" / "field_map_90deg.png") << "stale";
+  ASSERT_EQ(program("plot " + bare.string()), 0) << err();
+  EXPECT_EQ(listPngs(bare / "plots").size(), 2u);
+}
+
+TEST_F(ProgramPlots, AMissingGnuplotIsAClearMessage) {
+  const fs::path out = dir_ / "results";
+  // run: the results are written, a warning says why there are no plots, exit 0.
+  ASSERT_EQ(program(runArgs(out) + " --quiet", "PISTONDYN_GNUPLOT=/no/such/gnuplot"), 0) << err();
+  EXPECT_TRUE(fs::exists(out / "cycle.csv"));
+  EXPECT_TRUE(fs::exists(out / "summary.json"));
+  EXPECT_FALSE(fs::exists(out / "plots"));
+  EXPECT_NE(err().find("warning: no plots"), std::string::npos) << err();
+  EXPECT_NE(err().find("PISTONDYN_GNUPLOT=/no/such/gnuplot is not an executable file"),
+            std::string::npos)
+      << err();
+  // plot: exit 3, no figure. Without PISTONDYN_GNUPLOT and no gnuplot on PATH: what to install.
+  EXPECT_EQ(program("plot " + out.string(), "env -u PISTONDYN_GNUPLOT PATH=/nonexistent"), 3);
+  EXPECT_NE(err().find("gnuplot was not found on PATH: install it"), std::string::npos) << err();
+  EXPECT_FALSE(fs::exists(out / "plots"));
+  // A gnuplot that fails (false exits 1): exit 3, its complaint passed on, nothing written.
+  EXPECT_EQ(program("plot " + out.string(), "PISTONDYN_GNUPLOT=/bin/false"), 3);
+  EXPECT_NE(err().find("gnuplot failed"), std::string::npos) << err();
+  EXPECT_FALSE(fs::exists(out / "plots"));
+}
+
+TEST_F(ProgramPlots, PlotAndReportRejectAFolderThatHoldsNoResults) {
+  fs::create_directories(dir_ / "empty");
+  EXPECT_EQ(program("plot " + (dir_ / "empty").string()), 1);
+  EXPECT_NE(err().find("cycle.csv: missing"), std::string::npos) << err();
+  EXPECT_EQ(program("report " + (dir_ / "nowhere").string()), 1);
+  EXPECT_NE(err().find("not a folder"), std::string::npos) << err();
+  EXPECT_FALSE(fs::exists(dir_ / "nowhere"));
+}
+
+// The report: self-contained (no address it would fetch), every figure embedded (decoded
+// here and compared with the PNG), and, in headless Chromium, a page whose script ran to
+// the end without an error, filled in the animation's status and shows every image.
+TEST_F(ProgramPlots, ReportIsSelfContainedAndRendersInChromium) {
+  const fs::path out = dir_ / "results";
+  ASSERT_EQ(program(runArgs(out) + " --quiet --no-plot"), 0) << err();
+  ASSERT_EQ(program("report " + out.string()), 0) << err();
+  const std::string html = readFile(out / "report.html");
+  checkReportEmbedsThePlots(html, out / "plots");
+  EXPECT_NE(html.find("Gasoline passenger-car engine"), std::string::npos);
+  EXPECT_NE(html.find("imep"), std::string::npos);
+  EXPECT_NE(html.find("<pre id=\"deck\">"), std::string::npos);  // the deck's text
+  EXPECT_NE(html.find("holds the piston on the bore axis"), std::string::npos);
+  renderInChromium(out / "report.html", 2);
+}
+
+// The progress line: on a terminal (a pseudo-terminal from script(1)) a line with the
+// cycle, crank angle and time left, rewritten with carriage returns; off a terminal no
+// carriage return at all; --quiet: none.
+TEST_F(ProgramPlots, ProgressLineOnATerminalOnlyAndNeverWithQuiet) {
+  if (std::system("command -v script > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "script(1) (util-linux) is not installed: no pseudo-terminal";
+  // Four ideal-guide cycles: about two seconds, longer than the one second before the line.
+  const std::string longer = " --no-plot --set simulation.cycles=4";
+  const fs::path tty = dir_ / "tty.txt";
+  const std::string inner = std::string(PISTONDYN_EXE) + " " + runArgs(dir_ / "r1") + longer +
+                            " > /dev/null";
+  const std::string cmd = "script -qefc '" + inner + "' " + tty.string() + " > /dev/null 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << readFile(tty);
+  const std::string shown = readFile(tty);
+  EXPECT_TRUE(std::regex_search(shown, std::regex("\rpistondyn: cycle [1-4] of 4, crank angle +"
+                                                  "[0-9.]+ deg, +[0-9]+ % done, about [0-9]+ s left")))
+      << shown;
+  // Off a terminal (stderr to a file), the same run: no carriage return.
+  ASSERT_EQ(program(runArgs(dir_ / "r2") + longer), 0) << err();
+  EXPECT_EQ(err().find('\r'), std::string::npos) << err();
+  // --quiet on a terminal: no progress line.
+  const std::string quiet = "script -qefc '" + inner + " --quiet' " + tty.string() +
+                            " > /dev/null 2>&1";
+  ASSERT_EQ(std::system(quiet.c_str()), 0) << readFile(tty);
+  EXPECT_EQ(readFile(tty).find("crank angle"), std::string::npos) << readFile(tty);
+}
+
+TEST_F(ProgramPlots, LogLevel) {
+  ASSERT_EQ(program(runArgs(dir_ / "r") + " --quiet --no-plot --log-level info"), 0) << err();
+  EXPECT_NE(err().find("pistondyn [info] run: deck " + deck()), std::string::npos) << err();
+  ASSERT_EQ(program("plot " + (dir_ / "r").string() + " --log-level debug"), 0) << err();
+  EXPECT_NE(err().find("pistondyn [debug] plot: running"), std::string::npos) << err();
+  // The default (warn) says nothing on a good run.
+  ASSERT_EQ(program("plot " + (dir_ / "r").string()), 0) << err();
+  EXPECT_EQ(err(), "");
+  EXPECT_EQ(program("plot " + (dir_ / "r").string() + " --log-level loud"), 2);
+  EXPECT_NE(err().find("usage: pistondyn"), std::string::npos) << err();
+}
+
+// --help names the new options with their defaults, and the new commands.
+TEST(ProgramHelp, NamesPlotReportAndTheirOptions) {
+  const fs::path log = fs::temp_directory_path() / ("pistondyn_help_" + std::to_string(::getpid()));
+  auto help = [&](const std::string& args) {
+    const std::string cmd = std::string(PISTONDYN_EXE) + " " + args + " > " + log.string();
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << args;
+    return readFile(log);
+  };
+  const std::string top = help("--help");
+  for (const char* text : {"plot", "report"})
+    EXPECT_NE(top.find(text), std::string::npos) << text << "\n" << top;
+  const std::string run = help("run --help");
+  for (const char* text : {"--no-plot", "--quiet", "--log-level", "default: warn", "gnuplot",
+                           "1 s", "15 s"})
+    EXPECT_NE(run.find(text), std::string::npos) << text << "\n" << run;
+  const std::string plot = help("plot --help");
+  for (const char* text : {"DIR", "--log-level", "firing TDC", "kN", "um", "mrad", "MPa",
+                           "PISTONDYN_GNUPLOT", "Exit codes"})
+    EXPECT_NE(plot.find(text), std::string::npos) << text << "\n" << plot;
+  const std::string report = help("report --help");
+  for (const char* text : {"DIR", "self-contained", "base64", "exaggerated", "Exit codes"})
+    EXPECT_NE(report.find(text), std::string::npos) << text << "\n" << report;
+  fs::remove(log);
+}
+
+}  // namespace

@@ -220,7 +220,12 @@ std::shared_ptr<const Row> parseRow(const SweepCaseResult& r) {
   try {
     const Json j = Json::parse(r.summaryJson);
     for (const auto& [key, value] : j.at("results").items()) {
-      if (const auto t = numberText(value))
+      // The run's own figures have their columns at the end (one column per name).
+      if (key == "wall_time_s" || key == "integrator_steps")
+        continue;
+      if (value.is_boolean())
+        row->figures.emplace_back(key, value.get<bool>() ? "true" : "false");
+      else if (const auto t = numberText(value))
         row->figures.emplace_back(key, *t);
     }
     if (j.contains("wall_time_s"))

@@ -77,11 +77,12 @@ SweepCaseResult runSweepCase(const SweepPlan& plan, const std::string& dir, int 
 // The text of sweep.csv for the results given (any order, at most one per case): '#'
 // comment lines (program, sweep, conventions), a header, then one row per case in index
 // order:
-//   case, <one column per swept key>, status, <every numeric key under summary.json's
-//   results, named after it>, wall_time_s, integrator_steps, message
+//   case, <one column per swept key>, status, <every numeric or true/false key under
+//   summary.json's results, named after it>, wall_time_s, integrator_steps, message
 // status is ok or failed; message is the failure (quoted). Numbers are copied as
 // summary.json has them (shortest text reading back to the same double); a case that does
-// not set a key or lacks a figure leaves its cell empty (never nan or inf).
+// not set a key or lacks a figure leaves its cell empty (never nan or inf). wall_time_s
+// and integrator_steps are the run's (summary.json's top level), one column each.
 std::string makeSweepCsv(const SweepPlan& plan, const std::vector<SweepCaseResult>& results);
 
 // Collects the results of a sweep and keeps DIR/sweep.csv up to date: rewritten (all-or-

@@ -13,6 +13,7 @@ PACKAGES=(
   libcli11-dev            # command line of the pistondyn program (app/, header-only)
   libgtest-dev googletest # test suite
   libbenchmark-dev        # bench/
+  libopenmpi-dev openmpi-bin  # optional: `mpirun -np K pistondyn sweep` (PISTONDYN_WITH_MPI)
 )
 
 missing=()

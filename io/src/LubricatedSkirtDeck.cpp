@@ -436,6 +436,10 @@ void readSurfaces(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
       lubrication::FilmSolverType::FastActiveSet);
   p.lubrication.solver.tolerance =
       film.getNumberOr("tolerance", 1e-8, Bounds::between(1e-14, 1e-3));
+  // The fill fraction's storage term in time (mass-conserving model): BDF2 converges with
+  // the step where backward Euler smears a starved film's oil (plugin/README.md).
+  p.fillFractionHistoryOrder = film.getChoiceOr<int>(
+      "fill_fraction_history", {{"backward_euler", 1}, {"bdf2", 2}}, 1);
 }
 
 void readFieldDumps(DeckSection& liner, LinerDeckContext& context) {

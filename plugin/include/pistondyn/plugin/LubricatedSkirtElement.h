@@ -185,7 +185,7 @@ class LubricatedSkirtElement final : public LinerElement {
   ElementZ work_;  // [0] friction work, [1] hydrodynamic, [2] asperity, [3..4] wear volume
   // The mass-conserving film's history per side: the fill fraction at the last two accepted
   // steps and the step between them, so that the film's time derivative is second order
-  // (BDF2) like LinearlyImplicitStepper's.
+  // (BDF2, when fillFractionHistoryOrder is 2) like LinearlyImplicitStepper's.
   struct FillHistory {
     Eigen::ArrayXd current;       // theta_n (empty: full film, the initial state)
     Eigen::ArrayXd previous;      // theta_{n-1} (empty until two steps are accepted)

@@ -15,6 +15,8 @@ enum ExitCode : int {
   kExitBadInput = 1,  // deck, pressure table or override rejected; nothing written
   kExitUsage = 2,     // bad command line
   kExitFailed = 3,    // the simulation or writing failed; nothing written
+  // sweep: every case was tried, some failed (sweep.csv lists them with their messages)
+  kExitSomeCasesFailed = 4,
 };
 
 class Subcommand {
@@ -36,5 +38,6 @@ std::unique_ptr<Subcommand> addRunCommand(CLI::App& program);
 std::unique_ptr<Subcommand> addCheckCommand(CLI::App& program);
 std::unique_ptr<Subcommand> addPlotCommand(CLI::App& program);
 std::unique_ptr<Subcommand> addReportCommand(CLI::App& program);
+std::unique_ptr<Subcommand> addSweepCommand(CLI::App& program);
 
 }  // namespace pistondyn::app

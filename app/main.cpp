@@ -1,15 +1,17 @@
 // pistondyn command-line program: parses the command line (CLI11) and dispatches to one
 // subcommand per file (RunCommand.cpp, CheckCommand.cpp, PlotCommand.cpp,
-// ReportCommand.cpp), each over pistondyn::io.
+// ReportCommand.cpp, SweepCommand.cpp), each over pistondyn::io.
 //
 //   pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--quiet] [--no-plot]
 //   pistondyn check DECK.yaml [--set key.path=value]...
 //   pistondyn plot DIR          (figures of a result folder, gnuplot)
 //   pistondyn report DIR        (DIR/report.html, self-contained)
+//   pistondyn sweep SWEEP.yaml --out DIR [--jobs N] [--set key.path=value]... [--list] [--quiet]
 //   pistondyn --help | --version          (and pistondyn <command> --help)
 //
 // Exit codes: 0 success; 1 bad input (deck, table, override) - nothing written;
-// 2 bad command line; 3 the simulation or writing failed - nothing written.
+// 2 bad command line; 3 the simulation or writing failed - nothing written;
+// 4 (sweep) some cases failed - listed in sweep.csv, the others written.
 
 #include <CLI/CLI.hpp>
 
@@ -28,6 +30,8 @@ const char* kSynopsis =
     "       pistondyn check DECK.yaml [--set key.path=value]... [--log-level LEVEL]\n"
     "       pistondyn plot DIR [--log-level LEVEL]\n"
     "       pistondyn report DIR [--log-level LEVEL]\n"
+    "       pistondyn sweep SWEEP.yaml --out DIR [--jobs N] [--set key.path=value]... [--list]\n"
+    "                       [--quiet]           (also under mpirun -np K)\n"
     "       pistondyn --help | --version | <command> --help\n";
 
 }  // namespace
@@ -46,12 +50,13 @@ int main(int argc, char** argv) {
   program.require_subcommand(1);
   program.footer(
       "Exit codes: 0 ok; 1 bad input, nothing written; 2 bad command line; 3 run failed, "
-      "nothing written.");
+      "nothing written; 4 (sweep) some cases failed, listed in sweep.csv.");
   std::vector<std::unique_ptr<Subcommand>> commands;
   commands.push_back(addRunCommand(program));
   commands.push_back(addCheckCommand(program));
   commands.push_back(addPlotCommand(program));
   commands.push_back(addReportCommand(program));
+  commands.push_back(addSweepCommand(program));
 
   // An unknown first word is an unknown command (CLI11 would only say one is required).
   if (argc >= 2 && argv[1][0] != '-') {

@@ -16,6 +16,7 @@ PACKAGES=(
   chromium                # tests: report.html rendered headless (skipped without it)
   libgtest-dev googletest # test suite
   libbenchmark-dev        # bench/
+  libopenmpi-dev openmpi-bin  # optional: `mpirun -np K pistondyn sweep` (PISTONDYN_WITH_MPI)
 )
 
 missing=()

@@ -6,4 +6,5 @@ cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"
-ctest --test-dir build --output-on-failure -j"$(nproc)"
+# Labels outside the default run: bench (whole-cycle timings), slow (FE regeneration).
+ctest --test-dir build --output-on-failure -j"$(nproc)" -LE "bench|slow"

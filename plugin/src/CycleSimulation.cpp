@@ -27,6 +27,12 @@ void validate(const SimulationSettings& s) {
   if (!std::isfinite(s.startAngle_deg) || std::abs(s.startAngle_deg) > 720.0) {
     fail("startAngle_deg must be within [-720, 720] deg");
   }
+  if (!std::isfinite(s.initialLateral_m) || std::abs(s.initialLateral_m) > 1e-3)
+    fail("initialLateral_m must be within [-1, 1] mm");
+  if (!std::isfinite(s.initialTilt_rad) || std::abs(s.initialTilt_rad) > 0.05)
+    fail("initialTilt_rad must be within [-0.05, 0.05] rad");
+  if (!std::isfinite(s.initialTransverse_m) || std::abs(s.initialTransverse_m) > 5e-3)
+    fail("initialTransverse_m must be within [-5, 5] mm");
   if (s.cycles < 1 || s.cycles > SimulationSettings::kMaxCycles) {
     fail(common::message("cycles must be between 1 and ", SimulationSettings::kMaxCycles));
   }
@@ -326,7 +332,12 @@ void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& pr
   // Constant speed: the Motion prescribes theta = omega t, so setPose puts the state at
   // t0 = theta0 / omega; a free crank starts at t = 0.
   const bool prescribed = drive.mode == mbd::CrankDrive::Mode::ConstantSpeed;
-  ct.setPose(state, theta0);
+  if (settings_.initialTransverse_m != 0.0 && !engine.tertiaryMotion) {
+    throw std::invalid_argument(
+        "SimulationSettings: initialTransverse_m needs a crank train with tertiary motion");
+  }
+  ct.setPose(state, theta0, settings_.initialLateral_m, settings_.initialTilt_rad,
+             settings_.initialTransverse_m);
   const double t0 = state.getTime();
   ct.setRates(state, omega);
 

@@ -40,6 +40,12 @@ struct SimulationSettings {
   static constexpr double kMaxRows = 1e7;  // rows are kept in memory
 
   double startAngle_deg = 0.0;  // crank angle of the first row [deg]
+  // The piston's secondary pose at the start (CrankTrain::setPose), at rest relative to the
+  // primary motion: lateral displacement [m], tilt [rad], tertiary displacement [m] (needs
+  // EngineDescription::tertiaryMotion). Default: centred and upright.
+  double initialLateral_m = 0.0;
+  double initialTilt_rad = 0.0;
+  double initialTransverse_m = 0.0;
   int cycles = 1;               // number of 720 deg cycles (the maximum if untilPeriodic), >= 1
   double outputStep_deg = 1.0;  // output interval [deg], > 0, must divide 720
   enum class Integrator {

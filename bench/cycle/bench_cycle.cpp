@@ -1,0 +1,180 @@
+// bench_cycle: wall time and cost breakdown of whole engine cycles with the lubricated
+// skirt (issue 10's record, issue 12's cycle benchmark). A timing program, not a test: it
+// asserts nothing about speed. Figures and machine go to BENCHMARKS.md.
+//
+//   bench_cycle DECK [--set key=value]... [--configs fast,reference_gauss_seidel]
+//
+// Each configuration is the deck with liner.film.solver set to that solver, run until
+// periodic (or the deck's cycle count) in this process, one after the other, so that the
+// fast solver and the thesis' Gauss-Seidel baseline are compared in the same run. For the
+// last simulated cycle it prints: wall time, film solves and force evaluations, the time
+// share of gap / film / contact / loads (the element's own clocks) and of the rest
+// (Simbody realizations, the integrator, row output), the mean in-cycle film solve and the
+// ratio cycle time / (film solves x mean solve). Peak RSS is the process' high-water mark
+// (getrusage) after each configuration; run one configuration per process to read it alone.
+#include <sys/resource.h>
+#include <time.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "pistondyn/io/EngineDeck.h"
+#include "pistondyn/io/RunDeck.h"
+#include "pistondyn/plugin/LubricatedSkirtElement.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using pistondyn::plugin::LubricatedSkirtElement;
+
+// What the element and the clock say at one instant; a cycle is the difference of two.
+struct Snapshot {
+  double wall_s = 0.0;
+  double cpu_s = 0.0;  // this thread's CPU time: the figure that survives a loaded machine
+  LubricatedSkirtElement::Timings timings;
+  long filmSolves = 0;
+  long fallbacks = 0;
+};
+
+// Takes a snapshot at the start of every cycle and at the end of the run.
+class CycleClock final : public pistondyn::plugin::RowSink {
+ public:
+  explicit CycleClock(const LubricatedSkirtElement& element) : element_(element) {}
+  void beginCycle(int /*cycle*/) override { snapshots_.push_back(take()); }
+  void consumeRow(const SimTK::State&, const std::vector<double>&) override {}
+  void discardRows() override {}
+  void endRun() override { snapshots_.push_back(take()); }
+  const std::vector<Snapshot>& getSnapshots() const { return snapshots_; }
+
+ private:
+  Snapshot take() const {
+    Snapshot s;
+    s.wall_s = std::chrono::duration<double>(Clock::now() - start_).count();
+    timespec cpu{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &cpu);
+    s.cpu_s = static_cast<double>(cpu.tv_sec) + 1e-9 * static_cast<double>(cpu.tv_nsec);
+    s.timings = element_.getTimings();
+    s.filmSolves = element_.getFilmSolveCount().value_or(0);
+    s.fallbacks = element_.getFilmFallbackCount().value_or(0);
+    return s;
+  }
+  const LubricatedSkirtElement& element_;
+  Clock::time_point start_ = Clock::now();
+  std::vector<Snapshot> snapshots_;
+};
+
+double peakRss_MB() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux: kilobytes
+}
+
+const LubricatedSkirtElement* findSkirt(const pistondyn::plugin::PistonAssemblyModel& model) {
+  for (const std::string& name : model.getElementNames()) {
+    if (const auto* e = dynamic_cast<const LubricatedSkirtElement*>(&model.getElement(name)))
+      return e;
+  }
+  return nullptr;
+}
+
+std::vector<std::string> splitCommas(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty())
+      out.push_back(item);
+  return out;
+}
+
+int runConfiguration(const std::string& deckPath, std::vector<std::string> overrides,
+                     const std::string& solver) {
+  overrides.push_back("liner.film.solver=" + solver);
+  const auto deck = pistondyn::io::loadEngineDeck(deckPath, overrides);
+  auto model = pistondyn::io::buildModel(deck);
+  const LubricatedSkirtElement* skirt = findSkirt(*model);
+  if (!skirt) {
+    std::fprintf(stderr, "bench_cycle: %s has no lubricated skirt (liner.model)\n",
+                 deckPath.c_str());
+    return 1;
+  }
+  CycleClock clock(*skirt);
+  const auto outcome = pistondyn::io::runModel(deck, *model, "", {}, {&clock});
+  const auto& snaps = clock.getSnapshots();
+  if (snaps.size() < 2) {
+    std::fprintf(stderr, "bench_cycle: no whole cycle was simulated\n");
+    return 1;
+  }
+  const Snapshot& a = snaps[snaps.size() - 2];
+  const Snapshot& b = snaps.back();
+  const double wall = b.wall_s - a.wall_s;
+  const double gap = b.timings.gap_s - a.timings.gap_s;
+  const double film = b.timings.film_s - a.timings.film_s;
+  const double contact = b.timings.contact_s - a.timings.contact_s;
+  const double loads = b.timings.loads_s - a.timings.loads_s;
+  const long solves = b.filmSolves - a.filmSolves;
+  const long evaluations = b.timings.evaluations - a.timings.evaluations;
+  const double meanSolve = solves > 0 ? film / static_cast<double>(solves) : 0.0;
+  const double rest = wall - gap - film - contact - loads;
+  const auto pct = [wall](double t) { return wall > 0.0 ? 100.0 * t / wall : 0.0; };
+
+  const auto& s = outcome.stats;
+  std::printf("solver %s: %d cycle(s) run, %s after %d; last cycle:\n", solver.c_str(),
+              s.cyclesRun, s.converged ? "periodic" : "NOT periodic", s.cyclesToConverge);
+  std::printf("  wall %.3f s (CPU %.3f s)   fmep %.4f kPa   film solves %ld (fallbacks %ld)   force "
+              "evaluations %ld\n",
+              wall, b.cpu_s - a.cpu_s, s.cycleFmep_Pa.empty() ? 0.0 : s.cycleFmep_Pa.back() / 1e3, solves,
+              b.fallbacks - a.fallbacks, evaluations);
+  std::printf("  shares: film %.1f %%  contact %.1f %%  gap %.1f %%  loads %.1f %%  rest "
+              "(Simbody, integrator, output) %.1f %%\n",
+              pct(film), pct(contact), pct(gap), pct(loads), pct(rest));
+  std::printf("  mean film solve %.3f ms   cycle / (solves x mean solve) = %.2f\n",
+              meanSolve * 1e3, solves > 0 && meanSolve > 0 ? wall / film : 0.0);
+  std::printf("  whole run: %ld integrator steps, %ld rejected, %.1f s   peak RSS %.1f MB\n",
+              s.integratorSteps, s.rejectedSteps, s.wallTime_s, peakRss_MB());
+  std::fflush(stdout);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string deckPath;
+  std::vector<std::string> overrides;
+  std::vector<std::string> solvers{"fast", "reference_gauss_seidel"};
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--set" && i + 1 < argc) {
+      overrides.push_back(argv[++i]);
+    } else if (arg == "--configs" && i + 1 < argc) {
+      solvers = splitCommas(argv[++i]);
+    } else if (arg == "-h" || arg == "--help") {
+      std::printf("usage: bench_cycle DECK [--set key=value]... [--configs "
+                  "fast,reference_gauss_seidel]\n");
+      return 0;
+    } else if (deckPath.empty() && arg.rfind("--", 0) != 0) {
+      deckPath = arg;
+    } else {
+      std::fprintf(stderr, "bench_cycle: unexpected argument '%s' (see --help)\n", arg.c_str());
+      return 2;
+    }
+  }
+  if (deckPath.empty()) {
+    std::fprintf(stderr, "bench_cycle: give the engine deck (see --help)\n");
+    return 2;
+  }
+  try {
+    for (const std::string& solver : solvers)
+      if (const int rc = runConfiguration(deckPath, overrides, solver); rc != 0)
+        return rc;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_cycle: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -29,8 +29,11 @@ std::string deckHelpFooter() {
   return "Deck keys carry their units (bore_mm, speed_rpm, crankcase_pressure_bar, "
          "inertia_kg_mm2, ...);\n--set values are in the key's unit. Crank angle 0 deg = "
          "firing TDC. Defaults of the\nsimulation section: start_angle_deg 0, cycles 1, "
-         "output_step_deg 1 (must divide 720),\nintegrator rk_merson, accuracy 1e-9, "
-         "gravity_mps2 9.80665. Full deck reference: README.md.\n"
+         "output_step_deg 1 (must divide 720),\nintegrator rk_merson (rk_feldberg, cpodes_bdf, "
+         "linearly_implicit_bdf2: the lubricated skirt\nneeds an implicit one), accuracy "
+         "1e-9, pose_tolerance_nm 10, max_step_deg 0.5, until_periodic false,\n"
+         "periodic_fmep_tolerance 0.005, periodic_pose_tolerance_um 0.2, gravity_mps2 "
+         "9.80665.\nFull deck reference: README.md.\n"
          "liner.model (default ideal_guide):" +
          models +
          "\nExit codes: 0 ok; 1 bad input, nothing written; 2 bad command line; 3 run failed, "

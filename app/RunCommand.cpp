@@ -14,18 +14,66 @@
 namespace pistondyn::app {
 namespace {
 
+// The figures a lubricated liner reports (each line only when it reports them).
+void printLinerFigures(const io::CycleSummary::LinerFigures& f, const io::CycleSummary& s,
+                       const plugin::SimulationStats& stats) {
+  if (!stats.cycleFmep_Pa.empty()) {
+    std::printf("  fmep %.3f kPa", stats.cycleFmep_Pa.back() / 1e3);
+    if (f.frictionPowerMean_W)
+      std::printf("   mean friction power %.1f W", *f.frictionPowerMean_W);
+    if (stats.cycleFmep_Pa.size() > 1) {
+      std::printf("   (per cycle:");
+      for (double v : stats.cycleFmep_Pa)
+        std::printf(" %.3f", v / 1e3);
+      std::printf(" kPa)");
+    }
+    std::printf("\n");
+  }
+  if (f.minGapOverSigmaThrust && f.minGapOverSigmaAntiThrust) {
+    std::printf("  min h/sigma %.2f at %.1f deg (thrust), %.2f at %.1f deg (anti-thrust)\n",
+                *f.minGapOverSigmaThrust, *f.minGapOverSigmaThrustAngle_deg,
+                *f.minGapOverSigmaAntiThrust, *f.minGapOverSigmaAntiThrustAngle_deg);
+  }
+  if (f.minFilmThicknessThrust_m && f.minFilmThicknessAntiThrust_m) {
+    std::printf("  min film %.3f um at %.1f deg (thrust), %.3f um at %.1f deg (anti-thrust)\n",
+                *f.minFilmThicknessThrust_m * 1e6, *f.minFilmThicknessThrustAngle_deg,
+                *f.minFilmThicknessAntiThrust_m * 1e6, *f.minFilmThicknessAntiThrustAngle_deg);
+    std::printf("  max |u_lat| %.2f um   max |tilt| %.4f deg", s.maxAbsLateralDisplacement_m * 1e6,
+                s.maxAbsTilt_rad * 180.0 / M_PI);
+    if (f.slapEnergyMax_J)
+      std::printf("   largest slap %.4f mJ", *f.slapEnergyMax_J * 1e3);
+    std::printf("\n");
+  }
+  if (f.hotRunningClearance_m)
+    std::printf("  hot running clearance %.2f um\n", *f.hotRunningClearance_m * 1e6);
+  if (f.filmSolves) {
+    std::printf("  %ld film solves (%ld with the reference-solver fallback), %ld rejected steps\n",
+                *f.filmSolves, f.filmFallbacks.value_or(0), stats.rejectedSteps);
+  }
+}
+
 void printSummary(const io::EngineDeck& deck, const io::RunOutcome& o, const std::string& outDir) {
   const auto& s = o.summary;
   std::printf("pistondyn: %s\n", deck.engine.name.c_str());
   std::printf("  %d cycle(s) at %.0f rpm, %ld rows, %.3f s wall time, %ld integrator steps\n",
-              deck.simulation.cycles, deck.engine.drive.speed_radps * 30.0 / M_PI, o.rows,
+              o.stats.cyclesRun, deck.engine.drive.speed_radps * 30.0 / M_PI, o.rows,
               o.stats.wallTime_s, o.stats.integratorSteps);
+  if (deck.simulation.untilPeriodic) {
+    if (o.stats.converged) {
+      std::printf("  periodic after %d cycles (of at most %d)\n", o.stats.cyclesToConverge,
+                  deck.simulation.cycles);
+    } else {
+      std::printf("  NOT periodic after %d cycles: the figures are those of the last one\n",
+                  o.stats.cyclesRun);
+    }
+  }
   std::printf("  imep %.1f kPa   peak cylinder pressure %.2f bar at %.1f deg\n", s.imep_Pa / 1e3,
               s.peakCylinderPressure_Pa / 1e5, s.peakCylinderPressureAngle_deg);
   if (s.liner) {
     std::printf("  side force %+.0f N at %.1f deg (thrust), %+.0f N at %.1f deg (anti-thrust)\n",
                 s.liner->sideForceMax_N, s.liner->sideForceMaxAngle_deg, s.liner->sideForceMin_N,
                 s.liner->sideForceMinAngle_deg);
+    printLinerFigures(*s.liner, s, o.stats);
   } else {
     std::printf("  side force: the model has no liner element\n");
   }
@@ -34,6 +82,10 @@ void printSummary(const io::EngineDeck& deck, const io::RunOutcome& o, const std
               s.indicatedPower_W / 1e3);
   std::printf("  wrote %s/cycle.csv and %s/summary.json (crank angle 0 = firing TDC)\n",
               outDir.c_str(), outDir.c_str());
+  if (!deck.fieldDumpAngles_deg.empty()) {
+    std::printf("  and %zu field dumps (%s/field_dump_*deg_{thrust,antithrust}.csv)\n",
+                2 * deck.fieldDumpAngles_deg.size(), outDir.c_str());
+  }
 }
 
 class RunCommand final : public Subcommand {

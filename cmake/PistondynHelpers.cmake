@@ -61,8 +61,19 @@ function(pistondyn_add_gtest name)
   target_link_libraries(${name} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gtest_main)
   gtest_discover_tests(${name}
     WORKING_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}
-    DISCOVERY_TIMEOUT 120
-    PROPERTIES LABELS "${ARG_LABELS}")
+    DISCOVERY_TIMEOUT 120)
+  # Labels are set by a script CTest includes after the discovered tests: the PROPERTIES
+  # option of gtest_discover_tests writes a list unquoted, so "plugin;cycle" became LABELS
+  # plugin and a property named "cycle" (every label after the first was lost and
+  # `ctest -LE cycle` ran the slow tests).
+  if(ARG_LABELS)
+    set(script "${CMAKE_CURRENT_BINARY_DIR}/${name}_labels.cmake")
+    file(WRITE "${script}"
+      "foreach(t IN LISTS ${name}_TESTS)\n"
+      "  set_tests_properties(\"\${t}\" PROPERTIES LABELS \"${ARG_LABELS}\")\n"
+      "endforeach()\n")
+    set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${script}")
+  endif()
 endfunction()
 
 # pistondyn_add_benchmark(<name> SOURCES <files...> LIBS <targets...>)

@@ -23,6 +23,14 @@ const std::size_t kConrod = crankTrainColumn("conrod_force_N");
 const std::size_t kCrankTorque = crankTrainColumn("crank_torque_Nm");
 const std::size_t kDriveTorque = crankTrainColumn("drive_torque_Nm");
 
+// A crank angle of the cycle in [0, 720) deg (rows carry the unwrapped angle).
+double cycleAngle_deg(double angle_deg) {
+  double a = std::fmod(angle_deg, 720.0);
+  if (a < 0.0)
+    a += 720.0;
+  return a < 720.0 ? a : 0.0;
+}
+
 }  // namespace
 
 void addDeckFigures(const EngineDeck& deck, CycleSummary& s) {
@@ -38,7 +46,12 @@ void addDeckFigures(const EngineDeck& deck, CycleSummary& s) {
 }
 
 CycleSummarySink::CycleSummarySink(const EngineDeck& deck, const plugin::PistonAssemblyModel& model)
-    : deck_(deck), model_(model), perCycle_(deck.simulation.stepsPerCycle()) {}
+    : deck_(deck), model_(model), perCycle_(deck.simulation.stepsPerCycle()) {
+  if (const plugin::LinerElement* liner = model_.findLinerElement()) {
+    solvesAtStart_ = liner->getFilmSolveCount();
+    fallbacksAtStart_ = liner->getFilmFallbackCount();
+  }
+}
 
 void CycleSummarySink::beginRun(const std::vector<std::string>& columns) {
   const std::vector<std::string> crank = plugin::CycleSimulation::crankTrainColumns();
@@ -56,7 +69,10 @@ void CycleSummarySink::resetCycle() {
   conrodMax_ = sideMax_ = -INFINITY;
   conrodMin_ = sideMin_ = INFINITY;
   sideMaxAngle_ = sideMinAngle_ = 0.0;
-  filmThrust_ = filmAntiThrust_ = FilmMinimum();
+  filmThrust_ = filmAntiThrust_ = sigmaThrust_ = sigmaAntiThrust_ = FilmMinimum();
+  slap_ = SlapEvents();
+  maxLateral_ = maxTilt_ = 0.0;
+  timeAtCycleStart_s_ = timeAtCycleEnd_s_ = 0.0;
   workAtCycleStart_J_.reset();
   workAtCycleEnd_J_.reset();
 }
@@ -77,13 +93,30 @@ void CycleSummarySink::consumeRow(const SimTK::State& state, const std::vector<d
   const long k = rowInCycle_++;
   if (k > perCycle_)
     return;
-  if (liner_ != nullptr && (k == 0 || k == perCycle_)) {
-    (k == 0 ? workAtCycleStart_J_ : workAtCycleEnd_J_) = liner_->getFrictionWork_J(state);
+  if (k == 0 || k == perCycle_) {
+    (k == 0 ? timeAtCycleStart_s_ : timeAtCycleEnd_s_) = state.getTime();
+    if (liner_ != nullptr)
+      (k == 0 ? workAtCycleStart_J_ : workAtCycleEnd_J_) = liner_->getFrictionWork_J(state);
+  }
+  // Slap events: a change of the last completed event's energy since the previous row is
+  // an event completed in between (the closing row's change belongs to this cycle).
+  if (liner_ != nullptr && slap_.valid) {
+    const std::optional<double> last = liner_->getLastSlapEnergy_J(state);
+    if (!last) {
+      slap_.valid = false;
+    } else {
+      if (k > 0 && *last != slap_.previous_J)
+        slap_.max_J = std::max(slap_.max_J, *last);
+      slap_.previous_J = *last;
+    }
   }
   if (k == perCycle_)
     return;  // the row closing the cycle: same crank angle as its first row
 
-  const double angle = std::fmod(r[kAngle], 720.0);
+  const double angle = cycleAngle_deg(r[kAngle]);
+  const mbd::CrankTrain& ct = model_.getCrankTrain();
+  maxLateral_ = std::max(maxLateral_, std::abs(ct.getLateralDisplacement_m(state)));
+  maxTilt_ = std::max(maxTilt_, std::abs(ct.getTilt_rad(state)));
   if (liner_ != nullptr) {
     const double side = liner_->getSideForce_N(state);
     if (side > sideMax_) {
@@ -94,16 +127,21 @@ void CycleSummarySink::consumeRow(const SimTK::State& state, const std::vector<d
       sideMin_ = side;
       sideMinAngle_ = angle;
     }
-    for (const plugin::SkirtSide sideOfSkirt :
-         {plugin::SkirtSide::Thrust, plugin::SkirtSide::AntiThrust}) {
-      FilmMinimum& m = sideOfSkirt == plugin::SkirtSide::Thrust ? filmThrust_ : filmAntiThrust_;
-      const std::optional<double> h = liner_->getMinFilmThickness_m(state, sideOfSkirt);
-      if (!h) {
+    auto track = [&](FilmMinimum& m, const std::optional<double>& v) {
+      if (!v) {
         m.valid = false;
-      } else if (m.valid && (k == 0 || *h < m.value_m)) {
-        m.value_m = *h;
+      } else if (m.valid && (k == 0 || *v < m.value_m)) {
+        m.value_m = *v;
         m.angle_deg = angle;
       }
+    };
+    for (const plugin::SkirtSide sideOfSkirt :
+         {plugin::SkirtSide::Thrust, plugin::SkirtSide::AntiThrust}) {
+      const bool thrust = sideOfSkirt == plugin::SkirtSide::Thrust;
+      track(thrust ? filmThrust_ : filmAntiThrust_,
+            liner_->getMinFilmThickness_m(state, sideOfSkirt));
+      track(thrust ? sigmaThrust_ : sigmaAntiThrust_,
+            liner_->getMinGapOverSigma(state, sideOfSkirt));
     }
   }
   conrodMax_ = std::max(conrodMax_, r[kConrod]);
@@ -125,6 +163,8 @@ void CycleSummarySink::endRun() {
   s.meanCrankTorque_Nm = torque_ / n;
   s.meanDriveTorque_Nm = drive_ / n;
   s.indicatedPower_W = s.meanCrankTorque_Nm * speed_ / n;
+  s.maxAbsLateralDisplacement_m = maxLateral_;
+  s.maxAbsTilt_rad = maxTilt_;
   if (liner_ != nullptr) {
     CycleSummary::LinerFigures f;
     f.sideForceMax_N = sideMax_;
@@ -139,8 +179,29 @@ void CycleSummarySink::endRun() {
       f.minFilmThicknessAntiThrust_m = filmAntiThrust_.value_m;
       f.minFilmThicknessAntiThrustAngle_deg = filmAntiThrust_.angle_deg;
     }
-    if (workAtCycleStart_J_ && workAtCycleEnd_J_)
+    if (sigmaThrust_.valid) {
+      f.minGapOverSigmaThrust = sigmaThrust_.value_m;
+      f.minGapOverSigmaThrustAngle_deg = sigmaThrust_.angle_deg;
+    }
+    if (sigmaAntiThrust_.valid) {
+      f.minGapOverSigmaAntiThrust = sigmaAntiThrust_.value_m;
+      f.minGapOverSigmaAntiThrustAngle_deg = sigmaAntiThrust_.angle_deg;
+    }
+    if (workAtCycleStart_J_ && workAtCycleEnd_J_) {
       f.frictionWork_J = *workAtCycleEnd_J_ - *workAtCycleStart_J_;
+      const double duration_s = timeAtCycleEnd_s_ - timeAtCycleStart_s_;
+      if (duration_s > 0.0)
+        f.frictionPowerMean_W = *f.frictionWork_J / duration_s;
+    }
+    if (slap_.valid)
+      f.slapEnergyMax_J = slap_.max_J;
+    f.hotRunningClearance_m = liner_->getHotRunningClearance_m();
+    const std::optional<long> solves = liner_->getFilmSolveCount();
+    const std::optional<long> fallbacks = liner_->getFilmFallbackCount();
+    if (solves)
+      f.filmSolves = *solves - solvesAtStart_.value_or(0);
+    if (fallbacks)
+      f.filmFallbacks = *fallbacks - fallbacksAtStart_.value_or(0);
     s.liner = f;
   }
 }

@@ -28,7 +28,10 @@ mbd::PlanarMassProperties readBody(YamlDeck& d, const std::string& section) {
 
 // liner.model through the registry: the model's factory reads the rest of the section.
 // An unknown model is one problem; its section's keys are then not reported as unknown.
-void readLiner(YamlDeck& d, const LinerRegistry& registry, EngineDeck& deck) {
+// When --set liner.model chose another model than the file names, the file's liner keys
+// are that other model's data: not reported as unknown (keys given by --set still are).
+void readLiner(YamlDeck& d, const LinerRegistry& registry, EngineDeck& deck,
+               LinerDeckContext& context) {
   DeckSection liner = d.getSection("liner");
   const std::string kModelKey = "liner.model";
   const bool given = d.has(kModelKey);
@@ -45,8 +48,13 @@ void readLiner(YamlDeck& d, const LinerRegistry& registry, EngineDeck& deck) {
     return;
   }
   deck.linerModel = requested.value_or("ideal_guide");
+  const std::optional<std::string> inFile = d.getFileValue(kModelKey);
+  if (inFile && *inFile != deck.linerModel)
+    d.ignoreFileKeys("liner");
+  context.engine = &deck.engine;
+  context.engineIsValid = !d.hasProblems();
   try {
-    deck.makeLinerElement = registry.getFactory(deck.linerModel)(liner);
+    deck.makeLinerElement = registry.getFactory(deck.linerModel)(liner, context);
     if (!deck.makeLinerElement)
       d.addProblem(kModelKey,
                    "the liner model '" + deck.linerModel + "' returned no element maker");
@@ -57,6 +65,95 @@ void readLiner(YamlDeck& d, const LinerRegistry& registry, EngineDeck& deck) {
   for (const auto& in : d.getResolvedInputs()) {
     if (in.path.rfind("liner.", 0) == 0)
       deck.linerInputs.push_back(in);
+  }
+  if (context.tertiaryMotion)
+    deck.engine.tertiaryMotion = *context.tertiaryMotion;
+  deck.fieldDumpAngles_deg = context.fieldDumpAngles_deg;
+}
+
+using Settings = plugin::SimulationSettings;
+
+// The simulation section, and its checks against the liner model's needs.
+void readSimulation(YamlDeck& d, const LinerDeckContext& liner, const std::string& linerModel,
+                    EngineDeck& deck) {
+  Settings& s = deck.simulation;
+  s.startAngle_deg =
+      d.getNumberInRange("simulation.start_angle_deg", false, -720.0, 720.0, "deg").value_or(0.0);
+  s.cycles = static_cast<int>(d.getIntegerOr("simulation.cycles", 1, 1, Settings::kMaxCycles));
+  s.outputStep_deg = d.getNumberInRange("simulation.output_step_deg", false,
+                                        Settings::kMinOutputStep_deg, 720.0, "deg")
+                         .value_or(1.0);
+  if (!s.outputStepDividesCycle()) {
+    d.addProblem("simulation.output_step_deg", "must divide 720 deg into a whole number of steps");
+  } else if (s.outputStepsPerCycle() * s.cycles > Settings::kMaxRows) {
+    d.addProblem("simulation.output_step_deg",
+                 "with simulation.cycles this makes more than " +
+                     std::to_string(static_cast<long>(Settings::kMaxRows)) +
+                     " output rows; use a coarser step");
+  }
+  const std::vector<std::pair<std::string, Settings::Integrator>> integrators = {
+      {"rk_merson", Settings::Integrator::RungeKuttaMerson},
+      {"rk_feldberg", Settings::Integrator::RungeKuttaFeldberg},
+      {"cpodes_bdf", Settings::Integrator::CPodesBDF},
+      {"linearly_implicit_bdf2", Settings::Integrator::LinearlyImplicitBDF2}};
+  std::vector<std::string> names;
+  for (const auto& i : integrators)
+    names.push_back(i.first);
+  const std::string integ = d.getChoiceOr("simulation.integrator", names, "rk_merson");
+  for (const auto& i : integrators) {
+    if (i.first == integ)
+      s.integrator = i.second;
+  }
+  s.accuracy = d.getNumberInRange("simulation.accuracy", false, 1e-14, 1e-2, "").value_or(1e-9);
+
+  // The linearly implicit stepper's settings and the run to periodic steady state.
+  DeckSection sim = d.getSection("simulation");
+  s.poseTolerance_m =
+      sim.getSIOr("pose_tolerance_nm", Quantity::Length, 10.0, Bounds::between(1e-3, 1e5));
+  s.maxStep_deg = sim.getNumberOr("max_step_deg", 0.5, Bounds{0.0, 10.0, true});
+  s.maxSteps = sim.getIntegerOr("max_steps", 20000000, 1, 2000000000);
+  s.untilPeriodic = sim.getBoolOr("until_periodic", false);
+  s.periodicFmepTolerance =
+      sim.getNumberOr("periodic_fmep_tolerance", 0.005, Bounds{0.0, 0.5, true});
+  s.periodicPoseTolerance_m =
+      sim.getSIOr("periodic_pose_tolerance_um", Quantity::Length, 0.2, Bounds{0.0, 100.0, true});
+
+  const bool explicitRk = s.integrator == Settings::Integrator::RungeKuttaMerson ||
+                          s.integrator == Settings::Integrator::RungeKuttaFeldberg;
+  if (explicitRk && !liner.stiffReason.empty()) {
+    d.addProblem("simulation.integrator",
+                 "'" + integ + "' is an explicit integrator, but the liner model '" + linerModel +
+                     "' makes the system stiff (" + liner.stiffReason +
+                     "): use linearly_implicit_bdf2 (or cpodes_bdf)");
+  }
+  if (s.integrator == Settings::Integrator::LinearlyImplicitBDF2 && liner.usesConstraints) {
+    d.addProblem("simulation.integrator",
+                 "linearly_implicit_bdf2 integrates models without constraints, but the liner "
+                 "model '" +
+                     linerModel +
+                     "' holds the piston by Simbody constraints: use rk_merson, rk_feldberg "
+                     "or cpodes_bdf");
+  }
+  if (s.untilPeriodic && d.has("simulation.cycles") && s.cycles < 2) {
+    d.addProblem("simulation.cycles",
+                 "with simulation.until_periodic: true this is the most cycles to run, and two "
+                 "cycles are needed to compare (at least 2)");
+  } else if (s.untilPeriodic && s.cycles < 2) {
+    d.addProblem("simulation.until_periodic",
+                 "needs simulation.cycles (the most cycles to run) of at least 2");
+  }
+  // Field dumps are taken at output rows.
+  if (!liner.fieldDumpAngles_deg.empty() && s.outputStepDividesCycle()) {
+    for (const double a : liner.fieldDumpAngles_deg) {
+      const double k = (a - s.startAngle_deg) / s.outputStep_deg;
+      if (std::abs(k - std::round(k)) > 1e-9 * std::max(1.0, std::abs(k))) {
+        d.addProblem(liner.fieldDumpKey,
+                     common::formatNumber(a) +
+                         " deg is not an output crank angle (simulation.start_angle_deg + k * "
+                         "simulation.output_step_deg): fields are dumped at output rows");
+        break;
+      }
+    }
   }
 }
 
@@ -124,33 +221,8 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
   if (const auto imep = d.getOptionalNumber("gas.stated_imep_kPa"))
     deck.statedImep_Pa = *imep * 1e3;
 
-  readLiner(d, registry, deck);
-
-  using Settings = plugin::SimulationSettings;
-  Settings& s = deck.simulation;
-  s.startAngle_deg =
-      d.getNumberInRange("simulation.start_angle_deg", false, -720.0, 720.0, "deg").value_or(0.0);
-  s.cycles = static_cast<int>(d.getIntegerOr("simulation.cycles", 1, 1, Settings::kMaxCycles));
-  s.outputStep_deg = d.getNumberInRange("simulation.output_step_deg", false,
-                                        Settings::kMinOutputStep_deg, 720.0, "deg")
-                         .value_or(1.0);
-  if (!s.outputStepDividesCycle()) {
-    d.addProblem("simulation.output_step_deg", "must divide 720 deg into a whole number of steps");
-  } else if (s.outputStepsPerCycle() * s.cycles > Settings::kMaxRows) {
-    d.addProblem("simulation.output_step_deg",
-                 "with simulation.cycles this makes more than " +
-                     std::to_string(static_cast<long>(Settings::kMaxRows)) +
-                     " output rows; use a coarser step");
-  }
-  const std::string integ = d.getChoiceOr("simulation.integrator",
-                                          {"rk_merson", "rk_feldberg", "cpodes_bdf"}, "rk_merson");
-  s.integrator = integ == "rk_feldberg"  ? Settings::Integrator::RungeKuttaFeldberg
-                 : integ == "cpodes_bdf" ? Settings::Integrator::CPodesBDF
-                                         : Settings::Integrator::RungeKuttaMerson;
-  s.accuracy = d.getNumberInRange("simulation.accuracy", false, 1e-14, 1e-2, "").value_or(1e-9);
-
-  // Cross-key checks, only on values that are individually valid (a failed read
-  // leaves a placeholder that would only produce a second, confusing message).
+  // Cross-key checks of the engine, only on values that are individually valid (a failed
+  // read leaves a placeholder that would only produce a second, confusing message).
   if (!d.hasProblems()) {
     if (g.compressionRatio <= 1.0) {
       d.addProblem("geometry.compression_ratio", "must be greater than 1");
@@ -167,6 +239,11 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
                    "the skirt top cannot be above the crown (compression_height_mm)");
     }
   }
+
+  LinerDeckContext liner;
+  readLiner(d, registry, deck, liner);
+  readSimulation(d, liner, deck.linerModel, deck);
+
   // Every key is read; report unknown keys and all problems together.
   d.finish();
 
@@ -174,7 +251,7 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
   // caught these first, with a key and a line).
   try {
     mbd::validate(e);
-    plugin::validate(s);
+    plugin::validate(deck.simulation);
   } catch (const std::invalid_argument& ex) {
     throw DeckError(deckPath + ": " + ex.what());
   }
@@ -204,6 +281,14 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
                       common::formatNumber(rel * 100.0) + " % away from the stated " +
                       common::formatNumber(*deck.statedImep_Pa / 1e3) + " kPa (tolerance 0.5 %)");
     }
+  }
+  // A trial model: the elements' checks against the engine when they join the crank train
+  // (addToModel: the skirt's gap terms, its hot running clearance, ...) are bad input too.
+  try {
+    buildModel(deck)->buildSystem();
+  } catch (const std::exception& ex) {
+    throw DeckError(deckPath + ": liner: the liner model '" + deck.linerModel +
+                    "' rejected its parameters for this engine: " + ex.what());
   }
   return deck;
 }

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "pistondyn/io/DeckSection.h"
+#include "pistondyn/io/LubricatedSkirtDeck.h"
 #include "pistondyn/plugin/IdealLinerGuide.h"
 
 namespace pistondyn::io {
@@ -23,9 +24,15 @@ bool isModelName(const std::string& name) {
 LinerRegistry::LinerRegistry() {
   add("ideal_guide",
       "rigid, frictionless, zero-clearance guide (three Simbody constraints); no keys",
-      [](DeckSection&) -> LinerElementMaker {
+      [](DeckSection&, LinerDeckContext& context) -> LinerElementMaker {
+        context.usesConstraints = true;
         return [] { return std::make_unique<plugin::IdealLinerGuide>(); };
       });
+  add("lubricated_skirt",
+      "oil film (average Reynolds, cavitation) and asperity contact on both skirt sides; "
+      "keys liner.cold_radial_clearance_um, liner.grid.*, liner.skirt_profile.*, liner.oil.*, "
+      "... (README)",
+      readLubricatedSkirt);
 }
 
 LinerRegistry::LinerRegistry(const LinerRegistry& other) {
@@ -48,6 +55,18 @@ LinerRegistry& LinerRegistry::getGlobal() {
 
 void LinerRegistry::add(const std::string& name, const std::string& description,
                         LinerFactory factory) {
+  if (!factory)
+    throw std::invalid_argument("LinerRegistry::add: '" + name + "': empty factory");
+  add(name, description,
+      [f = std::move(factory)](DeckSection& liner, LinerDeckContext&) { return f(liner); });
+}
+
+void LinerRegistry::add(const std::string& name, const std::string&, std::nullptr_t) {
+  throw std::invalid_argument("LinerRegistry::add: '" + name + "': empty factory");
+}
+
+void LinerRegistry::add(const std::string& name, const std::string& description,
+                        LinerFactoryWithContext factory) {
   if (!isModelName(name)) {
     throw std::invalid_argument("LinerRegistry::add: name '" + name +
                                 "' must be lower-case letters, digits and '_'");
@@ -88,7 +107,7 @@ std::string LinerRegistry::getDescription(const std::string& name) const {
   return it->second.description;
 }
 
-LinerFactory LinerRegistry::getFactory(const std::string& name) const {
+LinerFactoryWithContext LinerRegistry::getFactory(const std::string& name) const {
   std::lock_guard<std::mutex> lock(mutex_);
   const auto it = entries_.find(name);
   if (it == entries_.end())
@@ -98,6 +117,11 @@ LinerFactory LinerRegistry::getFactory(const std::string& name) const {
 
 void registerLinerModel(const std::string& name, const std::string& description,
                         LinerFactory factory) {
+  LinerRegistry::getGlobal().add(name, description, std::move(factory));
+}
+
+void registerLinerModel(const std::string& name, const std::string& description,
+                        LinerFactoryWithContext factory) {
   LinerRegistry::getGlobal().add(name, description, std::move(factory));
 }
 

@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "SkirtFieldDumps.h"
+#include "pistondyn/common/Validation.h"
 #include "pistondyn/io/ResultWriters.h"
 #include "pistondyn/io/Version.h"
 
@@ -41,6 +43,8 @@ const char* integratorName(plugin::SimulationSettings::Integrator i) {
       return "rk_feldberg";
     case plugin::SimulationSettings::Integrator::CPodesBDF:
       return "cpodes_bdf";
+    case plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2:
+      return "linearly_implicit_bdf2";
     case plugin::SimulationSettings::Integrator::RungeKuttaMerson:
     default:
       return "rk_merson";
@@ -108,6 +112,7 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
   m["conrod"] = body(e.mass.conrod);
   m["crank"] = body(e.mass.crank);
   in["pin_joint"] = pinJointName(e.pinJoint);
+  in["tertiary_motion"] = e.tertiaryMotion;
   Json& d = in["drive"];
   d["mode"] = e.drive.mode == mbd::CrankDrive::Mode::Free ? "free" : "constant_speed";
   d["speed_rad_per_s"] = e.drive.speed_radps;
@@ -128,6 +133,14 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
   sim["output_step_rad"] = st.outputStep_deg * M_PI / 180.0;
   sim["accuracy"] = st.accuracy;
   sim["constraint_tolerance"] = st.constraintTolerance;
+  sim["pose_tolerance_m"] = st.poseTolerance_m;
+  sim["max_step_rad"] = st.maxStep_deg * M_PI / 180.0;
+  sim["max_steps"] = st.maxSteps;
+  sim["until_periodic"] = st.untilPeriodic;
+  sim["periodic_fmep_tolerance"] = st.periodicFmepTolerance;
+  sim["periodic_pose_tolerance_m"] = st.periodicPoseTolerance_m;
+  if (!deck.fieldDumpAngles_deg.empty())
+    sim["field_dump_crank_angles_deg"] = deck.fieldDumpAngles_deg;
   sim["gravity_m_per_s2"] = e.gravity_mps2;
 
   const CycleSummary& s = o.summary;
@@ -138,6 +151,13 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
   r["kinematic_stroke_m"] = s.kinematicStroke_m;
   r["peak_cylinder_pressure_Pa"] = s.peakCylinderPressure_Pa;
   r["peak_cylinder_pressure_angle_deg"] = s.peakCylinderPressureAngle_deg;
+  // Every number written is finite: a figure that is not would be a failed run, never a
+  // null in the summary.
+  auto finite = [](const char* key, double v) {
+    if (!std::isfinite(v))
+      throw std::runtime_error(std::string("summary.json: ") + key + " is not finite");
+    return v;
+  };
   if (s.liner) {
     // From the liner element's role interface (plugin::LinerElement), if there is one.
     const CycleSummary::LinerFigures& f = *s.liner;
@@ -145,21 +165,54 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
     r["side_force_max_angle_deg"] = f.sideForceMaxAngle_deg;
     r["side_force_min_N"] = f.sideForceMin_N;
     r["side_force_min_angle_deg"] = f.sideForceMinAngle_deg;
-    auto optional = [&](const char* key, const std::optional<double>& v) {
+    // Figures the liner reports (absent when it does not, e.g. the ideal guide's film).
+    auto optional = [&](const char* key, const std::optional<double>& v, double scale = 1.0) {
       if (v)
-        r[key] = *v;
+        r[key] = finite(key, *v * scale);
     };
-    optional("min_film_thickness_thrust_m", f.minFilmThicknessThrust_m);
-    optional("min_film_thickness_thrust_angle_deg", f.minFilmThicknessThrustAngle_deg);
-    optional("min_film_thickness_anti_thrust_m", f.minFilmThicknessAntiThrust_m);
-    optional("min_film_thickness_anti_thrust_angle_deg", f.minFilmThicknessAntiThrustAngle_deg);
+    if (!o.stats.cycleFmep_Pa.empty())
+      r["fmep_kPa"] = finite("fmep_kPa", o.stats.cycleFmep_Pa.back() / 1e3);
     optional("friction_work_J", f.frictionWork_J);
+    optional("friction_power_mean_W", f.frictionPowerMean_W);
+    optional("min_h_over_sigma_thrust", f.minGapOverSigmaThrust);
+    optional("min_h_over_sigma_thrust_crank_angle_deg", f.minGapOverSigmaThrustAngle_deg);
+    optional("min_h_over_sigma_antithrust", f.minGapOverSigmaAntiThrust);
+    optional("min_h_over_sigma_antithrust_crank_angle_deg", f.minGapOverSigmaAntiThrustAngle_deg);
+    optional("min_film_thickness_thrust_um", f.minFilmThicknessThrust_m, 1e6);
+    optional("min_film_thickness_thrust_crank_angle_deg", f.minFilmThicknessThrustAngle_deg);
+    optional("min_film_thickness_antithrust_um", f.minFilmThicknessAntiThrust_m, 1e6);
+    optional("min_film_thickness_antithrust_crank_angle_deg",
+             f.minFilmThicknessAntiThrustAngle_deg);
+    // The secondary motion matters where the liner has a film (a guide holds the piston on
+    // the axis: its extremes would be the constraint tolerance).
+    if (f.minFilmThicknessThrust_m || f.minFilmThicknessAntiThrust_m) {
+      r["max_abs_u_lat_um"] = finite("max_abs_u_lat_um", s.maxAbsLateralDisplacement_m * 1e6);
+      r["max_abs_tilt_deg"] = finite("max_abs_tilt_deg", s.maxAbsTilt_rad * 180.0 / M_PI);
+    }
+    optional("slap_energy_max_mJ", f.slapEnergyMax_J, 1e3);
+    optional("hot_clearance_um", f.hotRunningClearance_m, 1e6);
+    if (!o.stats.cycleFmep_Pa.empty()) {
+      Json list = Json::array();
+      for (double v : o.stats.cycleFmep_Pa)
+        list.push_back(finite("cycle_fmep_kPa", v / 1e3));
+      r["cycle_fmep_kPa"] = list;
+    }
+    if (f.filmSolves)
+      r["film_solves"] = *f.filmSolves;
+    if (f.filmFallbacks)
+      r["film_fallbacks"] = *f.filmFallbacks;
   }
   r["conrod_force_max_N"] = s.conrodForceMax_N;
   r["conrod_force_min_N"] = s.conrodForceMin_N;
   r["mean_crank_torque_Nm"] = s.meanCrankTorque_Nm;
   r["mean_drive_torque_Nm"] = s.meanDriveTorque_Nm;
   r["indicated_power_W"] = s.indicatedPower_W;
+  // The run itself (SimulationStats).
+  r["cycles_run"] = o.stats.cyclesRun;
+  r["converged"] = o.stats.converged;                  // until_periodic: the last two agreed
+  r["cycles_to_converge"] = o.stats.cyclesToConverge;  // 0 unless converged
+  r["rejected_steps"] = o.stats.rejectedSteps;         // linearly_implicit_bdf2's error test
+  r["wall_time_s"] = o.stats.wallTime_s;
   j["wall_time_s"] = o.stats.wallTime_s;
   j["integrator_steps"] = o.stats.integratorSteps;
   // nlohmann writes doubles in the shortest text that reads back to the same double
@@ -182,6 +235,19 @@ RunOutcome runModel(const EngineDeck& deck, plugin::PistonAssemblyModel& model,
     files.emplace(outDir);
     csv.emplace(files->stage("cycle.csv"), makeCycleCsvComments(deck));
     sinks.push_back(&*csv);
+  }
+  // The lubricated skirt's field dumps, staged with cycle.csv (all-or-nothing).
+  std::optional<detail::SkirtFieldDumpSink> dumps;
+  if (files && !deck.fieldDumpAngles_deg.empty()) {
+    const auto* skirt = dynamic_cast<const plugin::LubricatedSkirtElement*>(
+        static_cast<const plugin::PistonAssemblyModel&>(model).findLinerElement());
+    if (skirt == nullptr) {
+      throw std::runtime_error(
+          "liner.field_dumps: the model's liner is not a lubricated skirt; nothing to dump");
+    }
+    dumps.emplace(*skirt, deck.fieldDumpAngles_deg, deck.simulation.stepsPerCycle(),
+                  makeCycleCsvComments(deck), *files);
+    sinks.push_back(&*dumps);
   }
   sinks.insert(sinks.end(), extraSinks.begin(), extraSinks.end());
   sim.run(sinks, progress);

@@ -88,6 +88,8 @@ const std::vector<UnitSuffix>& allUnits() {
       {"degC", Q::Temperature, 1.0, "K", 273.15},
       {"per_K", Q::ThermalExpansion, 1.0, "per_K"},
       {"um_per_m_K", Q::ThermalExpansion, 1e-6, "per_K"},
+      {"m3_per_N_m", Q::WearCoefficient, 1.0, "m3_per_N_m"},
+      {"mm3_per_N_m", Q::WearCoefficient, 1e-9, "m3_per_N_m"},
   };
   return kUnits;
 }
@@ -159,6 +161,8 @@ std::string getQuantityName(Quantity quantity) {
       return "temperature";
     case Q::ThermalExpansion:
       return "thermal expansion coefficient";
+    case Q::WearCoefficient:
+      return "wear coefficient";
   }
   return "quantity";
 }

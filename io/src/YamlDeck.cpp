@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 
 #include "pistondyn/common/Validation.h"
@@ -37,15 +38,24 @@ std::string lineText(const YAML::Mark& mark) {
 struct YamlDeck::Impl {
   std::string filePath;
   YAML::Node root;
-  std::set<std::string> known;       // every key path a getter asked for (and its parents)
-  std::set<std::string> ignored;     // sections whose keys are never reported as unknown
-  std::set<std::string> overridden;  // key paths set by --set
+  std::set<std::string> known;        // every key path a getter asked for (and its parents)
+  std::set<std::string> ignored;      // sections whose keys are never reported as unknown
+  std::set<std::string> overridden;   // key paths set by --set
+  std::set<std::string> fileIgnored;  // sections whose keys from the file are not checked
+  std::map<std::string, std::string> fileValues;  // plain values --set replaced, as in the file
   std::vector<std::string> problems;
   std::vector<ResolvedInput> resolved;
 
   YAML::Node lookup(const std::string& path) const;                 // invalid node if absent
   std::string overridingAssignment(const std::string& path) const;  // "" if from the file
   void collectUnknown(const YAML::Node& node, const std::string& prefix);
+  bool isBelowFileIgnored(const std::string& path) const {
+    for (const auto& section : fileIgnored) {
+      if (path.rfind(section + ".", 0) == 0)
+        return true;
+    }
+    return false;
+  }
 };
 
 YamlDeck::~YamlDeck() = default;
@@ -109,6 +119,12 @@ void YamlDeck::applyOverride(const std::string& assignment) {
     value = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw DeckError("--set " + path + ": value '" + text + "' is not valid YAML: " + e.msg);
+  }
+  // What the file said, for getFileValue() (the first --set of a key replaces the file's).
+  if (impl_->overridden.count(path) == 0 && impl_->overridingAssignment(path).empty()) {
+    const YAML::Node old = impl_->lookup(path);
+    if (old.IsDefined() && old.IsScalar() && old.Mark().line >= 0)
+      impl_->fileValues.emplace(path, old.Scalar());
   }
   // yaml-cpp nodes are handles: walk with a copy and assign into the last map.
   YAML::Node node = impl_->root;
@@ -197,6 +213,12 @@ void YamlDeck::Impl::collectUnknown(const YAML::Node& node, const std::string& p
       problems.push_back(at + path + ": duplicate key (YAML would keep only one of them)");
       continue;
     }
+    const bool fromFile = kv.first.Mark().line >= 0 && overridingAssignment(path).empty();
+    if (known.count(path) == 0 && fromFile && isBelowFileIgnored(path)) {
+      if (kv.second.IsMap())
+        collectUnknown(kv.second, path);  // keys a --set added below it are still checked
+      continue;
+    }
     if (known.count(path) == 0) {
       // From the file, from a --set of this key or a section above it, or a section
       // that exists only because a --set below it created it.
@@ -225,6 +247,17 @@ void YamlDeck::markKnown(const std::string& path) {
     impl_->known.insert(path.substr(0, pos));
   }
   impl_->known.insert(path);
+}
+
+void YamlDeck::ignoreFileKeys(const std::string& path) {
+  impl_->fileIgnored.insert(path);
+}
+
+std::optional<std::string> YamlDeck::getFileValue(const std::string& path) const {
+  const auto it = impl_->fileValues.find(path);
+  if (it == impl_->fileValues.end())
+    return std::nullopt;
+  return it->second;
 }
 
 void YamlDeck::ignoreSection(const std::string& path) {

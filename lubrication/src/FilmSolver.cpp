@@ -109,6 +109,19 @@ void validate(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm
     if (!(t >= 0.0 && t <= 1.0))
       fail("problem.previousFillFraction[", k, "] = ", t, " must lie in [0, 1]");
   }
+  checkSize(pr.previousFillFraction2.size(), n, "problem.previousFillFraction2", true);
+  if (pr.previousFillFraction2.size() > 0) {
+    if (pr.previousFillFraction.size() != n)
+      fail("problem.previousFillFraction2 needs problem.previousFillFraction");
+    if (!(pr.previousTimeStep_s > 0.0) || !std::isfinite(pr.previousTimeStep_s))
+      fail("problem.previousTimeStep_s = ", pr.previousTimeStep_s,
+           " s must be > 0 and finite with problem.previousFillFraction2");
+    for (Eigen::Index k = 0; k < pr.previousFillFraction2.size(); ++k) {
+      const double t = pr.previousFillFraction2[k];
+      if (!(t >= 0.0 && t <= 1.0))
+        fail("problem.previousFillFraction2[", k, "] = ", t, " must lie in [0, 1]");
+    }
+  }
   if (pr.squeezeBasis.cols() > 0) {
     if (pr.squeezeBasis.rows() != n)
       fail("problem.squeezeBasis has ", pr.squeezeBasis.rows(), " rows, expected ", n,

@@ -154,11 +154,21 @@ void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
 
   const bool transient = jfo && std::isfinite(pr.timeStep_s);
   const bool hasPrev = pr.previousFillFraction.size() > 0;
+  // Backward Euler: capacity = A hT / h, reference theta_n. Variable-step BDF2
+  // (FilmProblem::previousFillFraction2): capacity = c0 A hT / h and the reference
+  // [(1 + w) theta_n - w^2/(1 + w) theta_{n-1}] / c0, so that capacity (theta - reference) is
+  // A hT times the BDF2 derivative. The reference may leave [0, 1]; it only enters here.
+  const bool bdf2 = transient && hasPrev && pr.previousFillFraction2.size() == n;
+  const double w = bdf2 ? pr.timeStep_s / pr.previousTimeStep_s : 0.0;
+  const double c0 = bdf2 ? (1.0 + 2.0 * w) / (1.0 + w) : 1.0;
+  const double cn = bdf2 ? (1.0 + w) / c0 : 1.0, cn1 = bdf2 ? -w * w / (1.0 + w) / c0 : 0.0;
   for (int k = 0; k < n; ++k) {
     const double rate = hasRate ? pr.gapRate_mps[k] : 0.0;
     squeeze[k] = area[k] * dhTdh[k] * rate;
-    capacity[k] = transient ? area[k] * hT[k] / pr.timeStep_s : 0.0;
+    capacity[k] = transient ? c0 * area[k] * hT[k] / pr.timeStep_s : 0.0;
     thetaPrev[k] = (jfo && hasPrev) ? pr.previousFillFraction[k] : 1.0;
+    if (bdf2)
+      thetaPrev[k] = cn * pr.previousFillFraction[k] + cn1 * pr.previousFillFraction2[k];
     thetaCoef[k] = aOut[k] + squeeze[k] + capacity[k];
   }
 

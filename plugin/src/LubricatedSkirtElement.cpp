@@ -1,6 +1,7 @@
 #include "pistondyn/plugin/LubricatedSkirtElement.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -80,6 +81,8 @@ LubricatedSkirtElement::LubricatedSkirtElement(const LubricatedSkirtParameters& 
     badParameter("pinRetainerPlay_m must be positive and finite");
   if (!(p.pinRetainerStiffness_Npm > 0.0) || !std::isfinite(p.pinRetainerStiffness_Npm))
     badParameter("pinRetainerStiffness_Npm must be positive and finite");
+  if (p.fillFractionHistoryOrder != 1 && p.fillFractionHistoryOrder != 2)
+    badParameter("fillFractionHistoryOrder must be 1 (backward Euler) or 2 (BDF2)");
 }
 
 LubricatedSkirtElement::~LubricatedSkirtElement() = default;
@@ -135,8 +138,8 @@ void LubricatedSkirtElement::addToModel(const ModelBuildContext& context) {
 void LubricatedSkirtElement::realizeTopology(SimTK::State&, ElementStateAllocator& alloc) const {
   cache_.allocate(alloc);
   work_.allocate(alloc, SimTK::Vector(5, 0.0));
-  fillThrust_.allocate(alloc, Eigen::ArrayXd());  // empty: full film
-  fillAntiThrust_.allocate(alloc, Eigen::ArrayXd());
+  fillThrust_.allocate(alloc, FillHistory{});  // empty: full film
+  fillAntiThrust_.allocate(alloc, FillHistory{});
   slap_.allocate(alloc, SlapTracker{});
 }
 
@@ -145,6 +148,9 @@ const LubricatedSkirtResults& LubricatedSkirtElement::getResults(const SimTK::St
 }
 
 void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtResults& r) const {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  double gapTime = 0.0;
   const mbd::CrankTrain& ct = *crankTrain_;
   const mbd::EngineDescription& engine = ct.getEngine();
   const PistonPose pose = calcPistonPose(ct, s);
@@ -163,8 +169,10 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
   for (int k : {kThrust, kAntiThrust}) {
     const auto& fill = k == kThrust ? fillThrust_ : fillAntiThrust_;
     skirt::GapFields& fields = workspace_->gapFields[k];
+    const auto gapStart = Clock::now();
     workspace_->gap[k]->calc(skirtPose, skirtRate, pose.pinHeight_m, pose.axialVelocity_mps,
                              fields);
+    gapTime += std::chrono::duration<double>(Clock::now() - gapStart).count();
     skirt::SkirtSideInputs in;
     in.slidingVelocityAxial_mps = -pose.axialVelocity_mps;
     // The skirt's tangential velocity on the side's centre line is +dz_t/dt on the thrust
@@ -174,26 +182,44 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     in.viscosity_Pas = viscosity_Pas_;
     in.supplyFilm_m = r.supplyFilm_m;
     in.squeezeColumns = parameters_.tertiaryMotion ? 3 : 2;
+    double dt = 0.0;
     if (massConserving) {
-      const Eigen::ArrayXd& previous = fill.getValue(s);
-      in.previousFillFraction = previous.size() > 0 ? &previous : nullptr;
-      const double dt = fill.calcTimeSinceLastUpdate(s);
+      const FillHistory& history = fill.getValue(s);
+      in.previousFillFraction = history.current.size() > 0 ? &history.current : nullptr;
+      dt = fill.calcTimeSinceLastUpdate(s);
       in.timeStep_s = dt > 0.0 ? dt : std::numeric_limits<double>::infinity();
+      if (parameters_.fillFractionHistoryOrder == 2 && history.previous.size() > 0 &&
+          history.previousStep_s > 0.0) {
+        in.previousFillFraction2 = &history.previous;
+        in.previousTimeStep_s = history.previousStep_s;
+      }
     }
     skirt::SkirtSideResults& out = workspace_->results[k];
     try {
       workspace_->lubrication[k]->solve(fields, in, out);
     } catch (const std::runtime_error& e) {
       double inCycle = std::fmod(crankAngle_deg, 720.0);
-      if (inCycle < 0.0) inCycle += 720.0;
-      throw std::runtime_error(common::message("lubricated skirt at crank angle ", inCycle,
-                                               " deg: ", e.what()));
+      if (inCycle < 0.0)
+        inCycle += 720.0;
+      throw std::runtime_error(
+          common::message("lubricated skirt at crank angle ", inCycle, " deg: ", e.what()));
     }
     ++filmSolves_;
+    timings_.film_s += out.filmTime_s;
+    timings_.contact_s += out.contactTime_s;
+    timings_.loads_s += out.loadsTime_s;
     if (out.film.usedFallback)
       ++filmFallbacks_;
-    if (massConserving)
-      fill.setUpdateValue(s, out.film.fillFraction());
+    if (massConserving) {
+      // The history this step leads to, if accepted (a zero step keeps the history).
+      const FillHistory& history = fill.getValue(s);
+      if (dt > 0.0) {
+        fill.setUpdateValue(s, FillHistory{out.film.fillFraction(), history.current, dt});
+      } else {
+        fill.setUpdateValue(
+            s, FillHistory{out.film.fillFraction(), history.previous, history.previousStep_s});
+      }
+    }
 
     LubricatedSkirtResults::Side& side = r.sides[k];
     side.hydrodynamic = out.hydrodynamicLoads;
@@ -269,6 +295,9 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     next.peak_J = r.secondaryKineticEnergy_J;
   }
   slap_.setUpdateValue(s, next);
+  timings_.gap_s += gapTime;
+  timings_.total_s += std::chrono::duration<double>(Clock::now() - start).count();
+  ++timings_.evaluations;
 }
 
 void LubricatedSkirtElement::calcForces(const SimTK::State& s, AppliedForces& forces) const {

@@ -25,16 +25,21 @@ run("configure downstream" ${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/install/down
     "-DCMAKE_PREFIX_PATH=${prefix}")
 run("build downstream" ${CMAKE_COMMAND} --build "${WORK_DIR}/build")
 run("run downstream" "${WORK_DIR}/build/downstream")
+# The user's program on the ideal guide (a second), the installed program on the deck's
+# lubricated skirt, one coarse cycle (its skirt profile table beside the deck).
 run("run downstream run_deck" "${WORK_DIR}/build/run_deck"
     "${SOURCE_DIR}/examples/engines/briggs_stratton_500/engine.yaml" "${WORK_DIR}/user_results"
-    simulation.output_step_deg=5)
+    simulation.output_step_deg=5 liner.model=ideal_guide simulation.integrator=rk_merson
+    simulation.until_periodic=false simulation.cycles=1)
 if(NOT EXISTS "${WORK_DIR}/user_results/cycle.csv" OR
    NOT EXISTS "${WORK_DIR}/user_results/summary.json")
   message(FATAL_ERROR "run_deck (pistondyn::io) wrote no results")
 endif()
 run("installed pistondyn" "${prefix}/bin/pistondyn" run
     "${SOURCE_DIR}/examples/engines/briggs_stratton_500/engine.yaml"
-    --out "${WORK_DIR}/results" --quiet --set simulation.output_step_deg=5)
+    --out "${WORK_DIR}/results" --quiet --set simulation.output_step_deg=5
+    --set simulation.cycles=1 --set simulation.until_periodic=false
+    --set liner.grid.nodes_circumferential=16 --set liner.grid.nodes_axial=12)
 if(NOT EXISTS "${WORK_DIR}/results/cycle.csv" OR NOT EXISTS "${WORK_DIR}/results/summary.json")
   message(FATAL_ERROR "installed pistondyn wrote no results")
 endif()

@@ -1,7 +1,12 @@
 #pragma once
-// A scratch copy of the gasoline example engine's deck and table, edited per test
+// A scratch copy of the gasoline example engine's deck and tables, edited per test
 // (tests/io and tests/app). PISTONDYN_SOURCE_DIR (and, for runProgram(), PISTONDYN_EXE)
 // come from the test's CMakeLists.txt.
+//
+// ScratchDeck: the engine on the ideal guide - the deck's liner and simulation sections
+// replaced by `liner: model: ideal_guide` and one cycle with rk_merson (kIdealGuideLiner,
+// kIdealGuideSimulation), the deck the deck-machinery tests were written for; a run takes a
+// second. SkirtScratchDeck: the example deck as it is (the lubricated skirt).
 
 #include <gtest/gtest.h>
 
@@ -11,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -24,6 +30,38 @@ namespace fs = std::filesystem;
 inline const std::string kEngineDir =
     std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm";
 inline const std::string kTable = "cylinder_pressure_fired_imep598kPa.csv";
+inline const std::string kProfileTable = "skirt_profile.csv";
+
+inline const std::string kIdealGuideLiner = "liner:\n  model: ideal_guide\n\n";
+inline const std::string kIdealGuideSimulation =
+    "simulation:\n"
+    "  start_angle_deg: 0\n"
+    "  cycles: 1\n"
+    "  output_step_deg: 1.0\n"
+    "  integrator: rk_merson\n"
+    "  accuracy: 1.0e-9\n"
+    "  gravity_mps2: 9.80665\n";
+
+// `text` with its top-level section `name` (from the line "name:" to the next line that
+// starts a top-level key, or the end) replaced by `section`.
+inline std::string replaceSection(const std::string& text, const std::string& name,
+                                  const std::string& section) {
+  const std::string head = name + ":\n";
+  const std::size_t begin = text.rfind("\n" + head) != std::string::npos
+                                ? text.rfind("\n" + head) + 1
+                                : (text.rfind(head, 0) == 0 ? 0 : std::string::npos);
+  if (begin == std::string::npos)
+    throw std::invalid_argument("replaceSection: no section '" + name + "'");
+  std::size_t end = begin + head.size();
+  while (end < text.size()) {
+    const std::size_t next = text.find('\n', end);
+    const char c = text[end];
+    if (c != ' ' && c != '#' && c != '\n')
+      break;
+    end = next == std::string::npos ? text.size() : next + 1;
+  }
+  return text.substr(0, begin) + section + text.substr(end);
+}
 
 inline std::string readFile(const fs::path& p) {
   std::ifstream in(p);
@@ -43,7 +81,16 @@ class ScratchDeck : public ::testing::Test {
     fs::create_directories(dir_);
     fs::copy_file(kEngineDir + "/engine.yaml", dir_ / "engine.yaml");
     fs::copy_file(kEngineDir + "/" + kTable, dir_ / kTable);
+    fs::copy_file(kEngineDir + "/" + kProfileTable, dir_ / kProfileTable);
+    if (!keepsTheExampleLiner()) {
+      std::string text = readFile(deck());
+      text = replaceSection(text, "liner", kIdealGuideLiner);
+      text = replaceSection(text, "simulation", kIdealGuideSimulation);
+      std::ofstream(deck()) << text;
+    }
   }
+  // SkirtScratchDeck keeps the example's lubricated skirt.
+  virtual bool keepsTheExampleLiner() const { return false; }
   void TearDown() override { fs::remove_all(dir_); }
 
   std::string deck() const { return (dir_ / "engine.yaml").string(); }
@@ -56,6 +103,10 @@ class ScratchDeck : public ::testing::Test {
     std::ofstream(deck()) << text;
   }
   void writeTable(const std::string& text) { std::ofstream(dir_ / kTable) << text; }
+  // Writes a file beside the deck (e.g. a skirt table the deck names).
+  void writeFile(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+  }
   int lineOf(const std::string& needle) const {
     std::ifstream in(deck());
     std::string line;
@@ -89,6 +140,12 @@ class ScratchDeck : public ::testing::Test {
 #endif
 
   fs::path dir_;
+};
+
+// The example deck as it is: the lubricated skirt.
+class SkirtScratchDeck : public ScratchDeck {
+ protected:
+  bool keepsTheExampleLiner() const override { return true; }
 };
 
 // Message shape: "<file>:<line>: <key>: <problem>".

@@ -52,13 +52,15 @@ class LinerDeck : public ScratchDeck {
 TEST(LinerRegistry, IdealGuideIsRegisteredByDefault) {
   const io::LinerRegistry r;
   EXPECT_TRUE(r.has("ideal_guide"));
+  EXPECT_TRUE(r.has("lubricated_skirt"));
   EXPECT_TRUE(io::LinerRegistry::getGlobal().has("ideal_guide"));
   EXPECT_FALSE(r.getDescription("ideal_guide").empty());
 }
 
 TEST(LinerRegistry, NamesAreCheckedAndUnique) {
   io::LinerRegistry r = springRegistry();
-  EXPECT_EQ(r.getNames(), (std::vector<std::string>{"ideal_guide", "spring_guide"}));
+  EXPECT_EQ(r.getNames(),
+            (std::vector<std::string>{"ideal_guide", "lubricated_skirt", "spring_guide"}));
   EXPECT_THROW(pistondyn::examples::registerSpringLinerGuide(r), std::invalid_argument);
   EXPECT_THROW(r.add("Spring Guide", "", pistondyn::examples::readSpringLinerGuide),
                std::invalid_argument);
@@ -132,7 +134,8 @@ TEST_F(LinerDeck, TheFactoryReportsBadValuesLikeTheRestOfTheDeck) {
 TEST_F(LinerDeck, AnUnknownModelIsOneProblemNamingTheRegisteredOnes) {
   const std::string m =
       rejection({"liner.model=my_liner", "liner.clearance_um=20"}, springRegistry());
-  EXPECT_NE(m.find("--set liner.model: 'my_liner' is not one of: ideal_guide, spring_guide"),
+  EXPECT_NE(m.find("--set liner.model: 'my_liner' is not one of: ideal_guide, "
+                   "lubricated_skirt, spring_guide"),
             std::string::npos)
       << m;
   EXPECT_EQ(m.find("clearance_um"), std::string::npos) << m;  // not also "unknown key"

@@ -107,16 +107,20 @@ TEST_F(ScratchDeck, TypedOutputsNameTheColumnsAndTheLinerRoleDrivesTheSummary) {
   EXPECT_NEAR(r["side_force_min_N"].get<double>(), 1000.0, 1e-9);
   EXPECT_NEAR(r["side_force_min_angle_deg"].get<double>(), 0.0, 1e-9);
   // Film: (2 + cos theta) um on the thrust side, smallest at 180 deg; none anti-thrust.
-  EXPECT_NEAR(r["min_film_thickness_thrust_m"].get<double>(), 1e-6, 1e-18);
-  EXPECT_NEAR(r["min_film_thickness_thrust_angle_deg"].get<double>(), 180.0, 1e-9);
-  EXPECT_FALSE(r.contains("min_film_thickness_anti_thrust_m"));
+  EXPECT_NEAR(r["min_film_thickness_thrust_um"].get<double>(), 1.0, 1e-12);
+  EXPECT_NEAR(r["min_film_thickness_thrust_crank_angle_deg"].get<double>(), 180.0, 1e-9);
+  EXPECT_FALSE(r.contains("min_film_thickness_antithrust_um"));
+  // It reports no h/sigma, slap energy, clearance or film solves: none are invented.
+  for (const char* key :
+       {"min_h_over_sigma_thrust", "slap_energy_max_mJ", "hot_clearance_um", "film_solves"})
+    EXPECT_FALSE(r.contains(key)) << key;
   // Friction work: 3 J/rad over 4 pi rad.
   EXPECT_NEAR(r["friction_work_J"].get<double>(), 12.0 * M_PI, 1e-9);
   EXPECT_EQ(r["side_force_max_N"].get<double>(), o.summary.liner->sideForceMax_N);
 }
 
 // The ideal guide reports no film and no friction work: those figures are absent, and
-// the summary has exactly the keys it always had.
+// the summary has exactly the keys it always had, and the run's statistics.
 TEST_F(ScratchDeck, FiguresALinerDoesNotReportAreNotInvented) {
   const auto d = io::loadEngineDeck(deck(), {"simulation.output_step_deg=10"});
   const fs::path out = dir_ / "results";
@@ -126,12 +130,26 @@ TEST_F(ScratchDeck, FiguresALinerDoesNotReportAreNotInvented) {
   for (const auto& kv : r.items())
     keys.push_back(kv.key());
   std::sort(keys.begin(), keys.end());
-  EXPECT_EQ(keys, (std::vector<std::string>{
-                      "conrod_force_max_N", "conrod_force_min_N", "displacement_m3", "imep_kPa",
-                      "indicated_power_W", "kinematic_stroke_m", "mean_crank_torque_Nm",
-                      "mean_drive_torque_Nm", "note", "peak_cylinder_pressure_Pa",
-                      "peak_cylinder_pressure_angle_deg", "side_force_max_N",
-                      "side_force_max_angle_deg", "side_force_min_N", "side_force_min_angle_deg"}));
+  EXPECT_EQ(keys, (std::vector<std::string>{"conrod_force_max_N",
+                                            "conrod_force_min_N",
+                                            "converged",
+                                            "cycles_run",
+                                            "cycles_to_converge",
+                                            "displacement_m3",
+                                            "imep_kPa",
+                                            "indicated_power_W",
+                                            "kinematic_stroke_m",
+                                            "mean_crank_torque_Nm",
+                                            "mean_drive_torque_Nm",
+                                            "note",
+                                            "peak_cylinder_pressure_Pa",
+                                            "peak_cylinder_pressure_angle_deg",
+                                            "rejected_steps",
+                                            "side_force_max_N",
+                                            "side_force_max_angle_deg",
+                                            "side_force_min_N",
+                                            "side_force_min_angle_deg",
+                                            "wall_time_s"}));
 }
 
 // A model without a liner element gets no side-force figures at all.

@@ -182,6 +182,60 @@ TEST(FilmMassConserving, StoredOilChangeEqualsAccumulatedNetInflow) {
   EXPECT_LT(std::abs(defect), 1e-8);
 }
 
+// Time accuracy of the fill fraction's history. A cavitated film (p = p_cav everywhere, no
+// sliding) whose gap opens uniformly, h(t) = h0 (1 + a t), holds its oil: theta h = const, so
+// theta(t) = theta0 / (1 + a t) exactly. Stepping to T = 1 / a with N and 2N steps, backward
+// Euler (previousFillFraction alone) must converge at first order and the variable-step BDF2
+// of previousFillFraction2 / previousTimeStep_s at second order, also with unequal steps.
+TEST(FilmMassConserving, FillFractionHistoryIsFirstOrderByDefaultAndSecondOrderWithBdf2) {
+  const FilmGrid g = FilmGrid::uniform(5, 0.01, 5, 0.01);
+  const double h0 = 20e-6, a = 50.0, theta0 = 0.6, T = 1.0 / a;
+  auto finalError = [&](int steps, bool bdf2, bool unequal) {
+    FilmProblem pr;
+    pr.gap_m.setConstant(g.nodeCount(), h0);
+    pr.gapRate_mps.setConstant(g.nodeCount(), h0 * a);
+    pr.viscosity_Pas = 0.01;
+    pr.cavitation = CavitationModel::MassConserving;
+    pr.previousFillFraction.setConstant(g.nodeCount(), theta0);
+    FilmSolver solver(test::tightOptions(FilmSolverType::FastActiveSet, 1e-12));
+    FilmResult r;
+    double t = 0.0, hPrev = 0.0;
+    Eigen::ArrayXd older;
+    for (int n = 0; n < steps; ++n) {
+      // Unequal steps: alternately 1.5 and 0.5 times the mean step.
+      const double h = (unequal ? (n % 2 ? 0.5 : 1.5) : 1.0) * T / steps;
+      t += h;
+      pr.gap_m.setConstant(g.nodeCount(), h0 * (1.0 + a * t));
+      pr.timeStep_s = h;
+      if (bdf2 && n > 0) {
+        pr.previousFillFraction2 = older;
+        pr.previousTimeStep_s = hPrev;
+      } else {
+        pr.previousFillFraction2.resize(0);
+      }
+      solver.solve(g, pr, n ? &r.state : nullptr, r);
+      EXPECT_TRUE(r.converged);
+      older = pr.previousFillFraction;
+      pr.previousFillFraction = r.fillFraction();
+      hPrev = h;
+    }
+    const int centre = g.nodeIndex(2, 2);
+    return std::abs(r.fillFraction()[centre] - theta0 / (1.0 + a * t));
+  };
+  for (bool unequal : {false, true}) {
+    const double be1 = finalError(20, false, unequal), be2 = finalError(40, false, unequal);
+    const double bd1 = finalError(20, true, unequal), bd2 = finalError(40, true, unequal);
+    const double orderBe = std::log2(be1 / be2), orderBdf = std::log2(bd1 / bd2);
+    std::printf(
+        "  %s steps: backward Euler errors %.3e %.3e (order %.2f), BDF2 %.3e %.3e (order "
+        "%.2f)\n",
+        unequal ? "unequal" : "equal", be1, be2, orderBe, bd1, bd2, orderBdf);
+    EXPECT_NEAR(orderBe, 1.0, 0.15);
+    EXPECT_GT(orderBdf, 1.8);
+    EXPECT_LT(bd2, 0.1 * be2);
+  }
+}
+
 // With a full film everywhere (a flooded converging pad: no cavitation), the mass-conserving
 // model solves the same equations as the Reynolds model (theta = 1 reduces the upwind Couette
 // flux to the central one), steady and transient with squeeze.

@@ -1,19 +1,23 @@
 #pragma once
 // The passenger-car example engine (examples/engines/gasoline_1400_2000rpm) with the
-// lubricated skirt element and the example skirt data, built in code for the element's
-// tests: skirt from 12 mm above to 18 mm below the pin, parabolic barrel profile with its
-// minimum-clearance line 6 mm below the pin (0.12 um/mm^2), elliptic ovality 0.3 mm, Rq
-// 0.4 um (liner) / 0.6 um (skirt), SAE 0W-30 at 105 C, f_dry 0.1, cold radial clearance
-// 40 um, no thermal growth, no tertiary motion, mass-conserving cavitation, fully flooded
-// unless a supply film is set.
+// lubricated skirt element and the example skirt data, for the element's tests. The data
+// come from the example deck itself (liner.model: lubricated_skirt, read by the deck's
+// factory, io/LubricatedSkirtDeck.h): skirt from 12 mm above to 18 mm below the pin,
+// parabolic barrel profile 0.12 um/mm^2 (y + 6 mm)^2 tabulated in skirt_profile.csv
+// (minimum-clearance line 6 mm below the pin), elliptic ovality 0.3 mm, Rq 0.4 um (liner) /
+// 0.6 um (skirt), SAE 0W-30 at 105 C, f_dry 0.1, cold radial clearance 40 um, no thermal
+// growth, no tertiary motion, mass-conserving cavitation. Two things differ from the deck:
+// the grid (the tests' coarse nPhi x nY instead of the deck's 64 x 48) and the oil supply,
+// which is fully flooded here unless a test sets a supply film (the deck's skirt is
+// partially flooded, 0.5 um).
 
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "pistondyn/io/EngineDeck.h"
-#include "pistondyn/lubrication/OilGrades.h"
 #include "pistondyn/mbd_models/SliderCrank.h"
 #include "pistondyn/plugin/GasForceElement.h"
 #include "pistondyn/plugin/LubricatedSkirtElement.h"
@@ -28,48 +32,48 @@ struct SkirtModel {
   }
 };
 
+inline std::string gasolineDeckPath() {
+  return std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm/engine.yaml";
+}
+
+// The example deck with the skirt grid overridden to nPhi x nY nodes per side.
+inline io::EngineDeck loadGasolineSkirtDeck(int nPhi, int nY) {
+  return io::loadEngineDeck(gasolineDeckPath(),
+                            {"liner.grid.nodes_circumferential=" + std::to_string(nPhi),
+                             "liner.grid.nodes_axial=" + std::to_string(nY)});
+}
+
 // Radial drop [m] of the example barrel profile at height y above the pin [m]: a parabola
-// about y0 = -6 mm, 0.12 um/mm^2 (17 um at the skirt bottom, 39 um at its top). Mirrored
-// about the pin it is the same barrel with its minimum at +6 mm (the thesis' study).
+// about y0 = -6 mm, 0.12 um/mm^2 (17 um at the skirt bottom, 39 um at its top), the closed
+// form that examples/engines/gasoline_1400_2000rpm/skirt_profile.csv tabulates (the deck
+// reads the table, not this function). Mirrored about the pin it is the same barrel with
+// its minimum at +6 mm (the thesis' study).
 inline double exampleProfileDrop_m(double y_m) {
   const double d = y_m * 1e3 + 6.0;
   return 0.12 * d * d * 1e-6;
 }
 
+// The example deck's skirt parameters (as its factory read them), on an nPhi x nY grid,
+// fully flooded.
 inline plugin::LubricatedSkirtParameters exampleSkirtParameters(int nPhi, int nY) {
-  plugin::LubricatedSkirtParameters p;
-  p.grid.arcWidth_rad = 80.0 * M_PI / 180.0;
-  p.grid.nPhi = nPhi;
-  p.grid.nY = nY;
-  p.grid.axialClustering = 2.5;
-  p.gap.coldRadialClearance_m = 40e-6;
-  const int n = 101;  // -25 .. +25 mm in 0.5 mm (covers the mirrored skirt too)
-  p.gap.skirtProfile.axial.height_m.resize(n);
-  p.gap.skirtProfile.axial.radialDrop_m.resize(n);
-  for (int i = 0; i < n; ++i) {
-    const double y = (-25.0 + 0.5 * i) * 1e-3;
-    p.gap.skirtProfile.axial.height_m[i] = y;
-    p.gap.skirtProfile.axial.radialDrop_m[i] = exampleProfileDrop_m(y);
-  }
-  p.gap.skirtProfile.ovality.diametralOvality_m = 300e-6;
-  p.oil = lubrication::makeSaeGradeOilSpec(lubrication::SaeGrade::k0W30);
-  p.oilTemperature_degC = 105.0;
-  p.roughness.rq1_m = 0.4e-6;
-  p.roughness.rq2_m = 0.6e-6;
-  p.boundaryFriction.frictionCoefficient = 0.1;
-  p.lubrication.cavitation = lubrication::CavitationModel::MassConserving;
+  const io::EngineDeck deck = loadGasolineSkirtDeck(nPhi, nY);
+  const std::unique_ptr<plugin::LinerElement> liner = deck.makeLinerElement();
+  const auto* skirt = dynamic_cast<const plugin::LubricatedSkirtElement*>(liner.get());
+  if (skirt == nullptr)
+    throw std::logic_error("the gasoline example deck does not select lubricated_skirt");
+  plugin::LubricatedSkirtParameters p = skirt->getParameters();
+  p.supplyFilm = plugin::SupplyFilm();  // fully flooded: the tests set a supply film
   return p;
 }
 
+// The example engine (the deck's, with its skirt range and tertiary motion off) with the
+// gas force and a lubricated skirt of `custom` parameters, or of the example's on an
+// nPhi x nY grid.
 inline SkirtModel makeGasolineSkirtModel(
     int nPhi, int nY, const plugin::LubricatedSkirtParameters* custom = nullptr) {
-  const io::EngineDeck deck = io::loadEngineDeck(
-      std::string(PISTONDYN_SOURCE_DIR) + "/examples/engines/gasoline_1400_2000rpm/engine.yaml",
-      {});
+  const io::EngineDeck deck = loadGasolineSkirtDeck(nPhi, nY);
   SkirtModel m;
   m.engine = deck.engine;
-  m.engine.tertiaryMotion = false;
-  m.engine.piston.skirtTopAbovePin_m = 12e-3;  // the example skirt: +12 .. -18 mm
   m.model = std::make_unique<plugin::PistonAssemblyModel>(m.engine);
   m.model->addElement(
       std::make_unique<plugin::GasForceElement>(*deck.cylinderPressure, deck.crankcasePressure_Pa));

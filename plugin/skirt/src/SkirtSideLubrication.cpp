@@ -1,6 +1,7 @@
 #include "pistondyn/skirt/SkirtSideLubrication.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -311,9 +312,27 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
       p.previousFillFraction.resize(0);
     }
     p.timeStep_s = in.timeStep_s > 0.0 ? in.timeStep_s : std::numeric_limits<double>::infinity();
+    const bool second = in.previousFillFraction2 != nullptr &&
+                        in.previousFillFraction2->size() > 0 &&
+                        p.previousFillFraction.size() == n && std::isfinite(p.timeStep_s);
+    if (second) {
+      if (in.previousFillFraction2->size() != n)
+        badInput("inputs.previousFillFraction2 has ", in.previousFillFraction2->size(),
+                 " entries, expected ", n);
+      if (!(in.previousTimeStep_s > 0.0) || !std::isfinite(in.previousTimeStep_s))
+        badInput("inputs.previousTimeStep_s = ", in.previousTimeStep_s,
+                 " s must be positive and finite with a second history point");
+      p.previousFillFraction2 = *in.previousFillFraction2;
+      p.previousTimeStep_s = in.previousTimeStep_s;
+    } else {
+      p.previousFillFraction2.resize(0);
+    }
   }
 
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
   m.solver.solve(grid.getFilmGrid(), p, m.haveWarmStart ? &m.warmStart : nullptr, out.film);
+  const auto t1 = Clock::now();
   const lubrication::FilmResult& film = out.film;
   if (!film.converged) {
     m.haveWarmStart = false;  // a failed iterate is a poor start
@@ -339,6 +358,7 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   // Asperity pressure: nodal field (for the fields and the nodal interpolant), and the
   // integrals of p_c(h) itself at Gauss points where the contact is active (below).
   m.integrateContact(gap, skirtVelocity, out);
+  const auto t2 = Clock::now();
 
   // Tractions and loads.
   const lubrication::SurfaceShear& shear = film.shearOnSurface2;
@@ -419,6 +439,10 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   const double speed = p.slidingVelocity_mps.norm();
   out.wearRate_m3ps = m.parameters.wearCoefficient_m2pN * contactLoad_N * speed;
   out.maxWearDepthRate_mps = m.parameters.wearCoefficient_m2pN * maxPc * speed;
+  const auto t3 = Clock::now();
+  out.filmTime_s = std::chrono::duration<double>(t1 - t0).count();
+  out.contactTime_s = std::chrono::duration<double>(t2 - t1).count();
+  out.loadsTime_s = std::chrono::duration<double>(t3 - t2).count();
 }
 
 }  // namespace pistondyn::skirt

@@ -5,10 +5,13 @@
 // Where each figure comes from:
 //   - imep, displacement, stroke, peak cylinder pressure: the deck (pressure table and
 //     geometry), not the rows;
-//   - side force (and, if the liner provides them, minimum film thickness and friction
-//     work): the model's liner element through its role interface plugin::LinerElement,
-//     evaluated on each row's state; without a liner element these figures are absent,
-//     never invented from a column;
+//   - side force (and, if the liner provides them, minimum film thickness and h/sigma,
+//     friction work and mean friction power, slap energy, hot running clearance, film
+//     solves): the model's liner element through its role interface plugin::LinerElement,
+//     evaluated on each row's state; without a liner element (or for figures the liner
+//     does not report, like the ideal guide's film) these figures are absent, never
+//     invented from a column;
+//   - the largest |lateral displacement| and |tilt|: the crank train, at each row's state;
 //   - conrod force, crank and drive torque, crank speed: the crank-train columns, which
 //     CycleSimulation::crankTrainColumns() fixes, found by their index in that list.
 
@@ -31,12 +34,29 @@ struct CycleSummary {
   struct LinerFigures {
     double sideForceMax_N = 0.0, sideForceMaxAngle_deg = 0.0;  // towards thrust
     double sideForceMin_N = 0.0, sideForceMinAngle_deg = 0.0;  // towards anti-thrust (< 0)
-    // Only if the liner reports them at every row of the cycle.
+    // Only if the liner reports them at every row of the cycle (angles in [0, 720) deg).
     std::optional<double> minFilmThicknessThrust_m, minFilmThicknessThrustAngle_deg;
     std::optional<double> minFilmThicknessAntiThrust_m, minFilmThicknessAntiThrustAngle_deg;
+    std::optional<double> minGapOverSigmaThrust, minGapOverSigmaThrustAngle_deg;
+    std::optional<double> minGapOverSigmaAntiThrust, minGapOverSigmaAntiThrustAngle_deg;
     std::optional<double> frictionWork_J;  // dissipated over the cycle, >= 0
+    // Friction work over the cycle / the cycle's duration: the exact time average [W].
+    std::optional<double> frictionPowerMean_W;
+    // Largest impact energy of the slap events that completed in the cycle [J] (0: none).
+    // An event is seen where LinerElement::getLastSlapEnergy_J changes from one row to the
+    // next (the closing row of the cycle included), so several events completing within
+    // one output step count as the last of them.
+    std::optional<double> slapEnergyMax_J;
+    std::optional<double> hotRunningClearance_m;  // LinerElement::getHotRunningClearance_m
+    // Film solves (and fallbacks) the liner counted from the sink's construction to the
+    // end of the run.
+    std::optional<long> filmSolves, filmFallbacks;
   };
   std::optional<LinerFigures> liner;
+
+  // Secondary motion over the cycle (crank train, every model).
+  double maxAbsLateralDisplacement_m = 0.0;  // largest |u_lat| [m]
+  double maxAbsTilt_rad = 0.0;               // largest |tilt| [rad]
 
   double conrodForceMax_N = 0.0, conrodForceMin_N = 0.0;  // compression > 0
   double meanCrankTorque_Nm = 0.0;                        // rod on crank, cycle mean
@@ -54,7 +74,8 @@ void addDeckFigures(const EngineDeck& deck, CycleSummary& summary);
 // extremes, as the first row of the cycle already stands for that angle.
 class CycleSummarySink final : public plugin::RowSink {
  public:
-  // `model` must outlive the sink; its liner element (if any) is looked up at beginRun().
+  // `model` must outlive the sink; its liner element (if any) is looked up at beginRun()
+  // (its film-solve counts already at construction).
   CycleSummarySink(const EngineDeck& deck, const plugin::PistonAssemblyModel& model);
   void beginRun(const std::vector<std::string>& columns) override;
   void beginCycle(int cycle) override;
@@ -77,7 +98,12 @@ class CycleSummarySink final : public plugin::RowSink {
 
   const EngineDeck& deck_;
   const plugin::PistonAssemblyModel& model_;
+  struct SlapEvents {
+    bool valid = true;  // the liner reported a value at every row so far
+    double previous_J = 0.0, max_J = 0.0;
+  };
   const plugin::LinerElement* liner_ = nullptr;
+  std::optional<long> solvesAtStart_, fallbacksAtStart_;
   long perCycle_;
   long rows_ = 0;
   long rowInCycle_ = -1;  // -1 before the first beginCycle()
@@ -86,7 +112,10 @@ class CycleSummarySink final : public plugin::RowSink {
   double torque_ = 0.0, drive_ = 0.0, speed_ = 0.0;
   double conrodMax_ = 0.0, conrodMin_ = 0.0;
   double sideMax_ = 0.0, sideMaxAngle_ = 0.0, sideMin_ = 0.0, sideMinAngle_ = 0.0;
-  FilmMinimum filmThrust_, filmAntiThrust_;
+  FilmMinimum filmThrust_, filmAntiThrust_, sigmaThrust_, sigmaAntiThrust_;
+  SlapEvents slap_;
+  double maxLateral_ = 0.0, maxTilt_ = 0.0;
+  double timeAtCycleStart_s_ = 0.0, timeAtCycleEnd_s_ = 0.0;
   std::optional<double> workAtCycleStart_J_, workAtCycleEnd_J_;
 };
 

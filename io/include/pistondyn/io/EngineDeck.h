@@ -27,12 +27,19 @@ struct EngineDeck {
   std::string linerModel = "ideal_guide";  // liner.model, a name in the LinerRegistry
   LinerElementMaker makeLinerElement;      // from that model's factory
   std::vector<ResolvedInput> linerInputs;  // what the factory read (liner.*), SI keys
+  // Crank angles [deg, in [0, 720)] of the last cycle at which a run writes the liner's
+  // nodal fields (liner.field_dumps.crank_angles_deg of the lubricated skirt); output rows.
+  std::vector<double> fieldDumpAngles_deg;
   plugin::SimulationSettings simulation;
 };
 
 // Reads, overrides and checks a deck; the liner model comes from `registry`. Throws
 // DeckError listing every problem found (file:line: key: message); nothing is simulated
-// or written before this succeeds.
+// or written before this succeeds. The last check builds a trial model (buildModel), so
+// an element's own checks against the engine are bad input too. The liner model decides
+// the crank train's tertiary mobility (LinerDeckContext::tertiaryMotion) and whether the
+// integrator fits it (explicit ones are rejected for a stiff liner, linearly_implicit_bdf2
+// for one held by constraints).
 EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::string>& overrides,
                           const LinerRegistry& registry = LinerRegistry::getGlobal());
 

@@ -17,11 +17,22 @@
 //       });
 //   const auto deck = io::loadEngineDeck("engine.yaml", {"liner.model=spring_guide"});
 //
+// A factory may also take a LinerDeckContext (below): the engine the deck describes, for
+// cross-checks of the liner's data against it, and what the liner needs from the rest of
+// the model (the crank train's tertiary mobility, a stiff-capable integrator, field dumps).
+//
 // Factories run while the deck is read (so `pistondyn check` and every problem report see
 // them); the maker runs once at load (a trial construction whose std::exception becomes
-// a deck error) and then once per buildModel(). Registries are safe to use from several
-// threads; register before loading decks.
+// a deck error), once more inside a trial model built from the deck (its addToModel()
+// checks against the engine are bad input too), and then once per buildModel().
+// Registries are safe to use from several threads; register before loading decks.
+//
+// `ideal_guide` reads no keys. When --set liner.model selects another model than the one
+// the deck file names, the file's other liner.* keys belong to the file's model: they are
+// not reported as unknown (keys given by --set still are), so a deck written for the
+// lubricated skirt also runs with --set liner.model=ideal_guide.
 
+#include <cstddef>
 #include <functional>
 #include <map>
 #include <memory>
@@ -29,20 +40,52 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+
+#include "pistondyn/mbd_models/EngineDescription.h"
 #include "pistondyn/plugin/LinerElement.h"
 
 namespace pistondyn::io {
 
 class DeckSection;
 
+// What a liner model's factory knows of the rest of the deck, and what it tells the deck.
+struct LinerDeckContext {
+  // The engine as read from the deck's other sections (SI), never null. Use it for
+  // cross-checks only when engineIsValid: a key that failed to read leaves a placeholder
+  // (and its problem is reported already).
+  const mbd::EngineDescription* engine = nullptr;
+  bool engineIsValid = false;
+
+  // ---- set by the factory -------------------------------------------------------------
+  // The crank train's tertiary (pin-axis) mobility, EngineDescription::tertiaryMotion,
+  // when the liner model decides it (it must agree with the element); unset keeps the
+  // engine's default (on).
+  std::optional<bool> tertiaryMotion;
+  // Why Simbody's explicit integrators (rk_merson, rk_feldberg) cannot integrate this
+  // liner (empty: they can); the deck then rejects them with this reason.
+  std::string stiffReason;
+  // The liner holds the piston by Simbody constraints: linearly_implicit_bdf2, which
+  // integrates models without constraints, is rejected.
+  bool usesConstraints = false;
+  // Crank angles [deg], each in [0, 720), at which the run writes the liner's nodal fields
+  // (the deck checks that they are output rows; the lubricated skirt's field dumps), and
+  // the key that listed them (for that check's message).
+  std::vector<double> fieldDumpAngles_deg;
+  std::string fieldDumpKey;
+};
+
 // Constructs one liner element with the parameters its factory read.
 using LinerElementMaker = std::function<std::unique_ptr<plugin::LinerElement>()>;
 // Reads the liner section; problems go to the section (never thrown for bad input).
 using LinerFactory = std::function<LinerElementMaker(DeckSection& liner)>;
+// The same with the deck context.
+using LinerFactoryWithContext =
+    std::function<LinerElementMaker(DeckSection& liner, LinerDeckContext& context)>;
 
 class LinerRegistry {
  public:
-  // A registry holding the built-in models (ideal_guide).
+  // A registry holding the built-in models (ideal_guide, lubricated_skirt).
   LinerRegistry();
   LinerRegistry(const LinerRegistry& other);
   LinerRegistry& operator=(const LinerRegistry& other);
@@ -53,19 +96,24 @@ class LinerRegistry {
   // Registers `factory` under `name` (lower-case letters, digits and '_'). Throws
   // std::invalid_argument for a bad or already registered name.
   void add(const std::string& name, const std::string& description, LinerFactory factory);
+  void add(const std::string& name, const std::string& description,
+           LinerFactoryWithContext factory);
+  // No factory: throws std::invalid_argument (a null factory is a programming error).
+  void add(const std::string& name, const std::string& description, std::nullptr_t);
   // Removes a model (throws std::invalid_argument if there is none).
   void remove(const std::string& name);
   bool has(const std::string& name) const;
   // Registered names, sorted.
   std::vector<std::string> getNames() const;
   std::string getDescription(const std::string& name) const;
-  // The factory registered as `name`; throws std::invalid_argument if there is none.
-  LinerFactory getFactory(const std::string& name) const;
+  // The factory registered as `name` (a LinerFactory is wrapped to ignore the context);
+  // throws std::invalid_argument if there is none.
+  LinerFactoryWithContext getFactory(const std::string& name) const;
 
  private:
   struct Entry {
     std::string description;
-    LinerFactory factory;
+    LinerFactoryWithContext factory;
   };
   mutable std::mutex mutex_;
   std::map<std::string, Entry> entries_;
@@ -74,5 +122,7 @@ class LinerRegistry {
 // LinerRegistry::getGlobal().add(name, description, factory).
 void registerLinerModel(const std::string& name, const std::string& description,
                         LinerFactory factory);
+void registerLinerModel(const std::string& name, const std::string& description,
+                        LinerFactoryWithContext factory);
 
 }  // namespace pistondyn::io

@@ -41,6 +41,7 @@ enum class Quantity {
   Energy,               // J, kJ, mJ
   Temperature,          // K, degC (converted to K)
   ThermalExpansion,     // per_K, um_per_m_K
+  WearCoefficient,      // m3_per_N_m, mm3_per_N_m (Archard k/H: volume per load and distance)
 };
 
 // One unit a key may end with: "_" + suffix. SI value = value * factor + offset.

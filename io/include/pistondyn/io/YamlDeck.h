@@ -103,6 +103,13 @@ class YamlDeck {
   void ignoreSection(const std::string& path);
   // Marks `path` (and the sections above it) as part of the schema.
   void markKnown(const std::string& path);
+  // Keys below `path` written in the deck file are never reported as unknown, while keys
+  // given by --set still are (the deck's liner section describes another liner model than
+  // the one a --set liner.model chose: its keys are that model's data, not misspellings).
+  void ignoreFileKeys(const std::string& path);
+  // The text a plain value had in the deck file before a --set replaced it; nullopt if the
+  // key was not in the file, was not a plain value or was not overridden.
+  std::optional<std::string> getFileValue(const std::string& path) const;
 
   // Values read through DeckSection getters, in the order they were read.
   const std::vector<ResolvedInput>& getResolvedInputs() const;

@@ -110,6 +110,16 @@ struct FilmProblem {
   // solver then reports non-convergence and falls back). Use a time step there.
   double timeStep_s = std::numeric_limits<double>::infinity();
   Eigen::ArrayXd previousFillFraction;
+  // Optional second history point for a second-order step: the fill fraction one step
+  // earlier (theta_{n-1}, same size) and that step's length h_prev [s] (> 0). With both, the
+  // fill fraction's time derivative in the storage term is variable-step BDF2,
+  //   dtheta/dt ~ [c0 theta - (1 + w) theta_n + w^2/(1 + w) theta_{n-1}] / h,
+  //   w = h / h_prev, c0 = (1 + 2w)/(1 + w),
+  // instead of backward Euler (theta - theta_n)/h; the storage diagnostics follow the same
+  // formula. Empty / NaN (the default): backward Euler. Use it when the caller's own time
+  // integration is second order, so that the film's history does not limit it to first.
+  Eigen::ArrayXd previousFillFraction2;
+  double previousTimeStep_s = std::numeric_limits<double>::quiet_NaN();
 
   // Optional squeeze basis: column m is d(gapRate)/d(v_m) per node ([m/s per unit v_m]) for a
   // generalised velocity v_m. The result then holds d(p)/d(v_m) and the derivatives of load and

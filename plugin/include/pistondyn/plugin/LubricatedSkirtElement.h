@@ -72,13 +72,18 @@ struct LubricatedSkirtParameters {
   // Gap terms; the piston travel (BDC/TDC pin heights) and the liner-top height are taken
   // from the engine when unset (NaN). The grid's radius and skirt range always come from it.
   skirt::GapAssemblyParameters gap;
-  lubrication::OilSpec oil;            // oil data (grade)
-  double oilTemperature_degC = 105.0;  // film temperature [degC]
+  lubrication::OilSpec oil;                           // oil data (grade)
+  double oilTemperature_degC = 105.0;                 // film temperature [degC]
   lubrication::PatirChengParameters roughness;        // rq1 = liner, rq2 = skirt
   contact_forces::GreenwoodTrippParameters asperity;  // its roughness is set from `roughness`
   contact_forces::BoundaryFrictionParameters boundaryFriction;  // f_dry = 0.1
   skirt::SkirtLubricationParameters lubrication;                // cavitation model, solver, wear
   SupplyFilm supplyFilm;                                        // inlet oil film
+  // Mass-conserving model: order of the fill fraction's storage term in time. 1 = backward
+  // Euler over the last accepted step (default; the numerics tests' reference), 2 = variable-
+  // step BDF2 over the last two accepted steps (second order in the film's own history; the
+  // starved skirt's fmep still moves with the step, see plugin/README.md).
+  int fillFractionHistoryOrder = 1;
   bool tertiaryMotion = false;            // must match EngineDescription::tertiaryMotion
   double pinRetainerPlay_m = 0.5e-3;      // tertiary: free axial play each way [m], > 0
   double pinRetainerStiffness_Npm = 2e7;  // tertiary: spring outside the play [N/m], > 0
@@ -135,6 +140,13 @@ class LubricatedSkirtElement final : public LinerElement {
   std::optional<double> getMinGapOverSigma(const SimTK::State& s, SkirtSide side) const override;
   std::optional<double> getLastSlapEnergy_J(const SimTK::State& s) const override;
   std::optional<double> getHotRunningClearance_m() const override;
+  // Time spent in the element's phases since construction [s], both sides (diagnostics for
+  // benchmarks; the counters are mutable workspace and never affect results).
+  struct Timings {
+    double gap_s = 0.0, film_s = 0.0, contact_s = 0.0, loads_s = 0.0, total_s = 0.0;
+    long evaluations = 0;
+  };
+  const Timings& getTimings() const { return timings_; }
   std::optional<long> getFilmSolveCount() const override { return filmSolves_; }
   std::optional<long> getFilmFallbackCount() const override { return filmFallbacks_; }
 
@@ -168,9 +180,18 @@ class LubricatedSkirtElement final : public LinerElement {
   double viscosity_Pas_ = 0.0;
   std::unique_ptr<Workspace> workspace_;
   mutable long filmSolves_ = 0, filmFallbacks_ = 0;
+  mutable Timings timings_;
   ElementCache<LubricatedSkirtResults> cache_;
   ElementZ work_;  // [0] friction work, [1] hydrodynamic, [2] asperity, [3..4] wear volume
-  ElementAutoUpdateVariable<Eigen::ArrayXd> fillThrust_, fillAntiThrust_;
+  // The mass-conserving film's history per side: the fill fraction at the last two accepted
+  // steps and the step between them, so that the film's time derivative is second order
+  // (BDF2) like LinearlyImplicitStepper's.
+  struct FillHistory {
+    Eigen::ArrayXd current;       // theta_n (empty: full film, the initial state)
+    Eigen::ArrayXd previous;      // theta_{n-1} (empty until two steps are accepted)
+    double previousStep_s = 0.0;  // t_n - t_{n-1} [s]
+  };
+  ElementAutoUpdateVariable<FillHistory> fillThrust_, fillAntiThrust_;
   ElementAutoUpdateVariable<SlapTracker> slap_;
 };
 

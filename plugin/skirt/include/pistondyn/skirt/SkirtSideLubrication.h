@@ -109,6 +109,10 @@ struct SkirtSideInputs {
   // empty = full film) and the step [s] (> 0; +inf or <= 0 = steady state; NaN is rejected).
   const Eigen::ArrayXd* previousFillFraction = nullptr;
   double timeStep_s = std::numeric_limits<double>::infinity();
+  // Optional: the fill fraction one step earlier and that step [s] (> 0), for the film's
+  // second-order (BDF2) history (FilmProblem::previousFillFraction2); nullptr = first order.
+  const Eigen::ArrayXd* previousFillFraction2 = nullptr;
+  double previousTimeStep_s = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct SkirtSideResults {
@@ -143,6 +147,10 @@ struct SkirtSideResults {
   double wettedShare = 0.0;  // share of the area with oil (fill fraction > 0)
   // Oil held in the film on the side, sum of area x fill fraction x film gap [m^3].
   double filmOilVolume_m3 = 0.0;
+  // Wall time of this call's phases [s] (diagnostics for benchmarks; results never depend
+  // on them): the film solve, the asperity contact with boundary friction, and the loads
+  // with their derivatives and the figures.
+  double filmTime_s = 0.0, contactTime_s = 0.0, loadsTime_s = 0.0;
   double wearRate_m3ps = 0.0;         // Archard wear volume rate k/H * integral p_c |U| dA [m^3/s]
   double maxWearDepthRate_mps = 0.0;  // k/H * max p_c |U| [m/s]
 };

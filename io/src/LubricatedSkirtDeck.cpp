@@ -1,0 +1,573 @@
+#include "pistondyn/io/LubricatedSkirtDeck.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "pistondyn/common/Validation.h"
+#include "pistondyn/io/DeckSection.h"
+#include "pistondyn/lubrication/OilGrades.h"
+#include "pistondyn/mbd_models/SliderCrank.h"
+#include "pistondyn/plugin/LubricatedSkirtElement.h"
+#include "pistondyn/skirt/HotRunningClearance.h"
+
+namespace pistondyn::io {
+namespace {
+
+using Q = Quantity;
+using common::formatNumber;
+constexpr double kAbsoluteZero_degC = -273.15;
+constexpr double kMm = 1e-3, kUm = 1e-6, kDeg = M_PI / 180.0;
+
+std::string list(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names)
+    out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+// A table takes exactly its columns: one it would not read is reported like an unknown
+// key (often a unit the column does not take, e.g. radial_drop_mm).
+bool hasExactlyColumns(DeckSection& s, const std::string& key, const CsvTable& t,
+                       const std::vector<std::string>& columns) {
+  for (const auto& c : t.columns) {
+    if (std::find(columns.begin(), columns.end(), c) == columns.end()) {
+      s.addProblem(key, t.filePath + ": unexpected column '" + c +
+                            "' (the table takes exactly: " + list(columns) + ")");
+      return false;
+    }
+  }
+  return true;
+}
+
+bool hasRows(DeckSection& s, const std::string& key, const CsvTable& t, std::size_t minimum) {
+  if (t.rows.size() < minimum) {
+    s.addProblem(key, t.filePath + ": needs at least " + std::to_string(minimum) +
+                          " rows of numbers, found " + std::to_string(t.rows.size()));
+    return false;
+  }
+  return true;
+}
+
+// Values strictly increasing down the column (as written, in `unit`).
+bool isIncreasing(DeckSection& s, const std::string& key, const CsvTable& t,
+                  const std::string& column, const std::string& unit) {
+  const std::vector<double> v = t.getColumn(column);
+  for (std::size_t i = 1; i < v.size(); ++i) {
+    if (!(v[i] > v[i - 1])) {
+      s.addProblem(key, t.where(i) + ": " + column + " " + formatNumber(v[i]) +
+                            " is not above the previous row's " + formatNumber(v[i - 1]) + " " +
+                            unit + " (the rows must be in strictly increasing " + column + ")");
+      return false;
+    }
+  }
+  return true;
+}
+
+// Every value of a column inside (lo, hi] or [lo, hi], naming the first row outside.
+bool isWithin(DeckSection& s, const std::string& key, const CsvTable& t, const std::string& column,
+              const Bounds& bounds, const std::string& expected) {
+  const std::vector<double> v = t.getColumn(column);
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (!bounds.contains(v[i])) {
+      s.addProblem(key, t.where(i) + ": " + column + " " + formatNumber(v[i]) + " " + expected);
+      return false;
+    }
+  }
+  return true;
+}
+
+Eigen::VectorXd toVector(const std::vector<double>& v) {
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+}
+
+// Temperatures [degC] a table gives: above absolute zero (and below 1000 degC: a piston or
+// liner hotter than that is a unit mistake).
+bool hasTemperatures(DeckSection& s, const std::string& key, const CsvTable& t) {
+  return isWithin(s, key, t, "temperature_degC", Bounds{kAbsoluteZero_degC, 1000.0, true},
+                  "degC must be above absolute zero (-273.15 degC) and below 1000 degC");
+}
+
+// Table ends as written (for messages: the SI values converted back would show rounding).
+struct WrittenEnds {
+  double profileFirst_mm = 0.0, profileLast_mm = 0.0;
+  double ovalityLast_deg = 0.0;
+};
+
+// ---- grid -----------------------------------------------------------------------------
+
+void readGrid(DeckSection& liner, skirt::SkirtSideGridParameters& g) {
+  DeckSection grid = liner.getSection("grid");
+  g.arcWidth_rad = grid.getSIOr("arc_width_deg", Q::Angle, 80.0, Bounds::positive());
+  const double arc_deg = g.arcWidth_rad / kDeg;
+  if (grid.has("arc_width_deg") && arc_deg > 0.0) {
+    if (arc_deg >= 180.0) {
+      grid.addProblem("arc_width_deg",
+                      formatNumber(arc_deg) +
+                          " deg makes each side's grid wider than the skirt's side: the thrust "
+                          "and anti-thrust grids would overlap; must be below 180 deg");
+    } else if (arc_deg < 10.0) {
+      grid.addProblem("arc_width_deg", "must be at least 10 deg (got " + formatNumber(arc_deg) +
+                                           "; an angle in radians?)");
+    }
+  }
+  g.nPhi = static_cast<int>(grid.getIntegerOr("nodes_circumferential", 64, 3, 1000));
+  g.nY = static_cast<int>(grid.getIntegerOr("nodes_axial", 48, 3, 1000));
+  g.axialClustering = grid.getNumberOr("axial_clustering", 0.0, Bounds::between(0.0, 10.0));
+}
+
+// ---- skirt profile --------------------------------------------------------------------
+
+void readAxialProfile(DeckSection& profile, skirt::AxialProfileParameters& a, WrittenEnds& ends) {
+  const std::string key = "axial_profile_file";
+  const std::vector<std::string> cols = {"height_above_pin_mm", "radial_drop_um"};
+  if (const auto t = profile.getOptionalCsvTable(key, cols)) {
+    if (hasExactlyColumns(profile, key, *t, cols) && hasRows(profile, key, *t, 2) &&
+        isIncreasing(profile, key, *t, "height_above_pin_mm", "mm")) {
+      a.height_m = toVector(t->getColumnSI("height_above_pin_mm", Q::Length));
+      ends.profileFirst_mm = t->rows.front()[t->columnIndex("height_above_pin_mm")];
+      ends.profileLast_mm = t->rows.back()[t->columnIndex("height_above_pin_mm")];
+      a.radialDrop_m = toVector(t->getColumnSI("radial_drop_um", Q::Length));
+    }
+  }
+  a.mirrored = profile.getBoolOr("mirrored", false);
+}
+
+void readOvality(DeckSection& profile, skirt::OvalityParameters& o, WrittenEnds& ends) {
+  const bool law = profile.has("ovality_diametral_um") || profile.has("ovality_cos4_coefficient");
+  const std::string key = "ovality_file";
+  if (!profile.has(key) || law) {
+    o.model = skirt::OvalityModel::Law;
+    o.diametralOvality_m =
+        profile.getSIOr("ovality_diametral_um", Q::Length, 0.0, Bounds::between(-2000.0, 2000.0));
+    o.cos4Coefficient =
+        profile.getNumberOr("ovality_cos4_coefficient", 0.0, Bounds::between(-0.5, 0.5));
+  }
+  if (!profile.has(key))
+    return;
+  if (law) {
+    profile.addProblem(key,
+                       "give the ovality either by the law (ovality_diametral_um, "
+                       "ovality_cos4_coefficient) or by this table, not both");
+    profile.getOptionalFilePath(key);  // read (known), not used
+    return;
+  }
+  const std::vector<std::string> cols = {"angle_from_thrust_deg", "radial_drop_um"};
+  const auto t = profile.getOptionalCsvTable(key, cols);
+  if (!t || !hasExactlyColumns(profile, key, *t, cols) || !hasRows(profile, key, *t, 2) ||
+      !isIncreasing(profile, key, *t, "angle_from_thrust_deg", "deg") ||
+      !isWithin(profile, key, *t, "angle_from_thrust_deg", Bounds::between(0.0, 90.0),
+                "deg is outside one quadrant [0, 90] deg from the thrust axis"))
+    return;
+  const std::vector<double> angle = t->getColumn("angle_from_thrust_deg");
+  const std::vector<double> drop = t->getColumn("radial_drop_um");
+  if (angle[0] != 0.0 || drop[0] != 0.0) {
+    profile.addProblem(key, t->where(0) +
+                                ": the first row must be angle 0 with drop 0 (the ovality is the "
+                                "drop below the thrust-axis radius, from the thrust axis on)");
+    return;
+  }
+  o.model = skirt::OvalityModel::Table;
+  ends.ovalityLast_deg = angle.back();
+  o.tableAngle_rad = toVector(t->getColumnSI("angle_from_thrust_deg", Q::Angle));
+  o.tableRadialDrop_m = toVector(t->getColumnSI("radial_drop_um", Q::Length));
+}
+
+// ---- bore distortion ------------------------------------------------------------------
+
+void readBoreDistortion(DeckSection& bore, skirt::BoreDistortionParameters& b) {
+  const std::string key = "file";
+  const std::vector<std::string> cols = {"depth_mm", "order", "amplitude_um", "phase_deg"};
+  const auto t = bore.getOptionalCsvTable(key, cols);
+  if (!t || !hasExactlyColumns(bore, key, *t, cols) || !hasRows(bore, key, *t, 1) ||
+      !isWithin(bore, key, *t, "depth_mm", Bounds::nonNegative(),
+                "mm is above the liner top (depths are measured down from it, >= 0)"))
+    return;
+  struct Rows {
+    std::vector<double> depth_m, amplitude_m, phase_rad;
+    std::size_t lastRow = 0;
+  };
+  std::map<int, Rows> orders;
+  const std::size_t iDepth = t->columnIndex("depth_mm"), iOrder = t->columnIndex("order"),
+                    iAmp = t->columnIndex("amplitude_um"), iPhase = t->columnIndex("phase_deg");
+  for (std::size_t i = 0; i < t->rows.size(); ++i) {
+    const auto& r = t->rows[i];
+    const double n = r[iOrder];
+    if (n != std::floor(n) || n < 0.0 || n > skirt::kMaxBoreDistortionOrder) {
+      bore.addProblem(key, t->where(i) + ": order " + formatNumber(n) +
+                               " must be a whole number from 0 to " +
+                               std::to_string(skirt::kMaxBoreDistortionOrder));
+      return;
+    }
+    Rows& o = orders[static_cast<int>(n)];
+    if (!o.depth_m.empty() && !(r[iDepth] * kMm > o.depth_m.back())) {
+      bore.addProblem(key, t->where(i) + ": depth_mm " + formatNumber(r[iDepth]) + " of order " +
+                               formatNumber(n) + " is not below that order's previous row (" +
+                               t->where(o.lastRow) +
+                               "): each order's depths must increase strictly");
+      return;
+    }
+    o.depth_m.push_back(r[iDepth] * kMm);
+    o.amplitude_m.push_back(r[iAmp] * kUm);
+    o.phase_rad.push_back(r[iPhase] * kDeg);
+    o.lastRow = i;
+  }
+  for (const auto& [n, o] : orders) {
+    skirt::BoreDistortionOrder order;
+    order.order = n;
+    order.depth_m = toVector(o.depth_m);
+    order.amplitude_m = toVector(o.amplitude_m);
+    order.phase_rad = toVector(o.phase_rad);
+    b.orders.push_back(std::move(order));
+  }
+}
+
+// ---- thermal growth -------------------------------------------------------------------
+
+// One body's expansion coefficient and temperature table; true when a field was read.
+bool readThermalField(DeckSection& thermal, const std::string& alphaKey, const std::string& fileKey,
+                      const std::string& positionColumn, const std::string& typical,
+                      double& alpha_perK, Eigen::VectorXd& position_m,
+                      Eigen::VectorXd& temperature_degC) {
+  const bool hasAlpha = thermal.has(alphaKey), hasFile = thermal.has(fileKey);
+  if (const auto a =
+          thermal.getOptionalSI(alphaKey, Q::ThermalExpansion, Bounds::between(0.0, 1e-4)))
+    alpha_perK = *a;
+  if (hasAlpha && !hasFile) {
+    thermal.addProblem(alphaKey, "has no effect without " + fileKey +
+                                     ": give the temperatures, or remove the key");
+  }
+  if (!hasFile)
+    return false;
+  if (!hasAlpha) {
+    thermal.addProblem(
+        alphaKey, "missing key: required with " + fileKey + " (a number in 1/K, " + typical + ")");
+  }
+  const std::vector<std::string> cols = {positionColumn, "temperature_degC"};
+  const auto t = thermal.getOptionalCsvTable(fileKey, cols);
+  if (!t || !hasExactlyColumns(thermal, fileKey, *t, cols) || !hasRows(thermal, fileKey, *t, 1) ||
+      !isIncreasing(thermal, fileKey, *t, positionColumn, "mm") ||
+      !hasTemperatures(thermal, fileKey, *t))
+    return false;
+  position_m = toVector(t->getColumnSI(positionColumn, Q::Length));
+  temperature_degC = toVector(t->getColumn("temperature_degC"));
+  return true;
+}
+
+void readThermal(DeckSection& liner, skirt::GapAssemblyParameters& gap) {
+  DeckSection thermal = liner.getSection("thermal");
+  readThermalField(thermal, "piston_expansion_per_K", "piston_temperature_file",
+                   "height_above_pin_mm", "e.g. 2.1e-5 for an aluminium skirt",
+                   gap.pistonThermal.expansionCoefficient_perK, gap.pistonThermal.height_m,
+                   gap.pistonThermal.temperature_degC);
+  readThermalField(thermal, "liner_expansion_per_K", "liner_temperature_file", "depth_mm",
+                   "e.g. 1.1e-5 for a cast-iron liner", gap.linerThermal.expansionCoefficient_perK,
+                   gap.linerThermal.depth_m, gap.linerThermal.temperature_degC);
+}
+
+// ---- oil ------------------------------------------------------------------------------
+
+const std::vector<std::string>& gradeNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (auto g : {lubrication::SaeGrade::k0W20, lubrication::SaeGrade::k0W30,
+                   lubrication::SaeGrade::k5W30, lubrication::SaeGrade::k5W40,
+                   lubrication::SaeGrade::k10W40, lubrication::SaeGrade::k15W40})
+      n.push_back(lubrication::toString(g));
+    return n;
+  }();
+  return names;
+}
+
+void readOil(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
+  DeckSection oil = liner.getSection("oil");
+  const char* kNu1 = "kinematic_viscosity_1_mm2_per_s";
+  const char* kNu2 = "kinematic_viscosity_2_mm2_per_s";
+  const std::vector<std::string> userKeys = {kNu1,
+                                             kNu2,
+                                             "viscosity_temperature_1_degC",
+                                             "viscosity_temperature_2_degC",
+                                             "density_kg_per_m3",
+                                             "density_temperature_degC",
+                                             "name"};
+  bool user = false;
+  for (const auto& k : userKeys)
+    user = user || oil.has(k);
+  const bool before = oil.hasProblems();
+  bool haveSpec = false;
+  if (oil.has("grade")) {
+    const std::string text = oil.getString("grade");
+    try {
+      p.oil = lubrication::makeSaeGradeOilSpec(lubrication::parseSaeGrade(text));
+      haveSpec = true;
+    } catch (const std::invalid_argument&) {
+      oil.addProblem("grade", "'" + text + "' is not one of: " + list(gradeNames()) +
+                                  " (or give the oil by two kinematic viscosities)");
+    }
+    if (user) {
+      oil.addProblem("grade", "give the oil either by its grade or by its viscosities (" +
+                                  std::string(kNu1) + ", ...), not both");
+      for (const auto& k : userKeys)
+        oil.getDeck().markKnown(oil.getKeyPath(k));
+      haveSpec = false;
+    }
+  } else if (user) {
+    lubrication::OilSpec& s = p.oil;
+    s.name = oil.getStringOr("name", "user oil");
+    s.kinematicViscosity1_m2ps = oil.getSI(kNu1, Q::KinematicViscosity, Bounds{0.0, 1e5, true});
+    s.temperature1_degC =
+        oil.getNumberOr("viscosity_temperature_1_degC", 40.0, Bounds::between(-60.0, 250.0));
+    s.kinematicViscosity2_m2ps = oil.getSI(kNu2, Q::KinematicViscosity, Bounds{0.0, 1e5, true});
+    s.temperature2_degC =
+        oil.getNumberOr("viscosity_temperature_2_degC", 100.0, Bounds::between(-60.0, 250.0));
+    s.density_kgpm3 = oil.getSI("density_kg_per_m3", Q::Density, Bounds::between(500.0, 2000.0));
+    s.densityReferenceTemperature_degC =
+        oil.getNumberOr("density_temperature_degC", 15.0, Bounds::between(-60.0, 250.0));
+    haveSpec = true;
+  } else {
+    oil.addProblem("grade", "missing key: give the oil's SAE grade (" + list(gradeNames()) +
+                                ") or its kinematic viscosities at two temperatures (" + kNu1 +
+                                ", " + kNu2 + ", density_kg_per_m3)");
+  }
+  p.oilTemperature_degC = oil.getNumberOr("temperature_degC", 105.0, Bounds::between(-60.0, 250.0));
+  if (!haveSpec || oil.hasProblems() != before)
+    return;
+  // The oil's own checks (viscosity falling with temperature, ASTM D341's range) and the
+  // film temperature inside its valid range.
+  std::optional<lubrication::Oil> fitted;
+  try {
+    fitted.emplace(p.oil);
+  } catch (const std::invalid_argument& e) {
+    oil.addProblem(user ? kNu1 : "grade", e.what());
+    return;
+  }
+  try {
+    const double eta = fitted->calcDynamicViscosity_Pas(p.oilTemperature_degC);
+    oil.getDeck().recordInput({oil.getKeyPath("film_dynamic_viscosity_Pas"),
+                               oil.getKeyPath("film_dynamic_viscosity_Pas"), eta});
+  } catch (const std::invalid_argument&) {
+    oil.addProblem("temperature_degC", formatNumber(p.oilTemperature_degC) +
+                                           " degC is outside the oil's valid range [" +
+                                           formatNumber(fitted->getMinTemperature_degC()) + ", " +
+                                           formatNumber(fitted->getMaxTemperature_degC()) +
+                                           "] degC");
+  }
+}
+
+// ---- oil supply -----------------------------------------------------------------------
+
+void readSupply(DeckSection& liner, plugin::SupplyFilm& f) {
+  DeckSection s = liner.getSection("oil_supply");
+  const bool flooded = s.has("fully_flooded") && s.getBoolOr("fully_flooded", false);
+  const int ways = (flooded ? 1 : 0) + (s.has("film_um") ? 1 : 0) + (s.has("film_file") ? 1 : 0);
+  if (ways == 0) {
+    liner.addProblem("oil_supply",
+                     "missing: say how oil reaches the skirt - fully_flooded: true, film_um (a "
+                     "constant oil film on the liner ahead of the skirt) or film_file (a table "
+                     "of it over the cycle)");
+  } else if (ways > 1) {
+    s.addProblem(s.has("film_file") ? "film_file" : "film_um",
+                 "give exactly one of fully_flooded: true, film_um, film_file");
+  }
+  if (const auto film = s.getOptionalSI("film_um", Q::Length, Bounds::positive())) {
+    f.constant_m = *film;
+    if (*film > 1000.0 * kUm)
+      s.addProblem("film_um", "must be at most 1000 um (got " + formatNumber(*film / kUm) + ")");
+  }
+  const std::string key = "film_file";
+  const std::vector<std::string> cols = {"crank_angle_deg", "film_um"};
+  const auto t = s.getOptionalCsvTable(key, cols);
+  if (!t || !hasExactlyColumns(s, key, *t, cols) || !hasRows(s, key, *t, 2) ||
+      !isIncreasing(s, key, *t, "crank_angle_deg", "deg") ||
+      !isWithin(s, key, *t, "crank_angle_deg", Bounds{0.0, 720.0 - 1e-9, false},
+                "deg is outside the cycle [0, 720) deg (the table is periodic)") ||
+      !isWithin(s, key, *t, "film_um", Bounds{0.0, 1000.0, true},
+                "um must be positive (and at most 1000 um)"))
+    return;
+  f.crankAngle_deg = t->getColumn("crank_angle_deg");
+  f.thickness_m = t->getColumnSI("film_um", Q::Length);
+}
+
+// ---- roughness, asperity contact, film ------------------------------------------------
+
+void readSurfaces(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
+  DeckSection rough = liner.getSection("roughness");
+  p.roughness.rq1_m = rough.getSI("liner_rq_um", Q::Length, Bounds::between(0.0, 20.0));
+  p.roughness.rq2_m = rough.getSI("skirt_rq_um", Q::Length, Bounds::between(0.0, 20.0));
+  const double gamma = rough.getNumberOr("peklenik", 1.0, Bounds{0.0, 100.0, true});
+  p.roughness.peklenik1 = p.roughness.peklenik2 = gamma;
+  if (rough.has("liner_rq_um") && rough.has("skirt_rq_um") &&
+      std::hypot(p.roughness.rq1_m, p.roughness.rq2_m) < 0.01 * kUm) {
+    rough.addProblem("skirt_rq_um",
+                     "the composite roughness sqrt(liner_rq^2 + skirt_rq^2) must be at least "
+                     "0.01 um (the asperity contact needs rough surfaces; a unit mistake?)");
+  }
+
+  DeckSection a = liner.getSection("asperity");
+  contact_forces::GreenwoodTrippParameters& gt = p.asperity;
+  gt.roughnessParameter = a.getNumberOr("roughness_parameter", 0.04, Bounds{0.0, 1.0, true});
+  gt.sigmaOverBeta = a.getNumberOr("sigma_over_beta", 0.001, Bounds{0.0, 1.0, true});
+  gt.surface1.youngsModulus_Pa =
+      a.getSIOr("liner_youngs_modulus_GPa", Q::Pressure, 115.0, Bounds::between(1.0, 1000.0));
+  gt.surface1.poissonRatio = a.getNumberOr("liner_poisson_ratio", 0.26, Bounds::between(0.0, 0.49));
+  gt.surface2.youngsModulus_Pa =
+      a.getSIOr("skirt_youngs_modulus_GPa", Q::Pressure, 75.0, Bounds::between(1.0, 1000.0));
+  gt.surface2.poissonRatio = a.getNumberOr("skirt_poisson_ratio", 0.33, Bounds::between(0.0, 0.49));
+  p.boundaryFriction.frictionCoefficient =
+      a.getNumberOr("friction_coefficient", 0.1, Bounds::between(0.0, 1.0));
+  p.boundaryFriction.regularisationSpeed_mps =
+      a.getSIOr("regularisation_speed_mm_per_s", Q::Speed, 1.0, Bounds{0.0, 1000.0, true});
+  p.lubrication.wearCoefficient_m2pN =
+      a.getSIOr("wear_coefficient_mm3_per_N_m", Q::WearCoefficient, 0.0, Bounds::between(0.0, 1.0));
+
+  DeckSection film = liner.getSection("film");
+  p.lubrication.cavitation = film.getChoiceOr<lubrication::CavitationModel>(
+      "cavitation",
+      {{"mass_conserving", lubrication::CavitationModel::MassConserving},
+       {"reynolds", lubrication::CavitationModel::Reynolds}},
+      lubrication::CavitationModel::MassConserving);
+  p.lubrication.solver.solver = film.getChoiceOr<lubrication::FilmSolverType>(
+      "solver",
+      {{"fast", lubrication::FilmSolverType::FastActiveSet},
+       {"reference_gauss_seidel", lubrication::FilmSolverType::ReferenceGaussSeidel}},
+      lubrication::FilmSolverType::FastActiveSet);
+  p.lubrication.solver.tolerance =
+      film.getNumberOr("tolerance", 1e-8, Bounds::between(1e-14, 1e-3));
+}
+
+void readFieldDumps(DeckSection& liner, LinerDeckContext& context) {
+  DeckSection dumps = liner.getSection("field_dumps");
+  const std::string key = "crank_angles_deg";
+  if (!dumps.has(key))
+    return;
+  const std::vector<double> angles = dumps.getNumberList(key, Bounds::between(0.0, 720.0));
+  std::set<double> seen;
+  for (const double a : angles) {
+    if (a >= 720.0) {
+      dumps.addProblem(key, "720 deg is the next cycle's 0 deg: list angles in [0, 720)");
+      return;
+    }
+    if (!seen.insert(a).second) {
+      dumps.addProblem(key, formatNumber(a) + " deg is listed twice");
+      return;
+    }
+  }
+  context.fieldDumpAngles_deg = angles;
+  context.fieldDumpKey = dumps.getKeyPath(key);
+}
+
+// ---- checks against the engine ---------------------------------------------------------
+
+void checkAgainstEngine(DeckSection& liner, const mbd::EngineDescription& e,
+                        const plugin::LubricatedSkirtParameters& p, const WrittenEnds& ends) {
+  const double yTop = e.piston.skirtTopAbovePin_m, yBottom = yTop - e.piston.skirtLength_m;
+  DeckSection profile = liner.getSection("skirt_profile");
+  const skirt::AxialProfileParameters& axial = p.gap.skirtProfile.axial;
+  if (axial.height_m.size() > 0) {
+    const double lo = axial.mirrored ? -yTop : yBottom, hi = axial.mirrored ? -yBottom : yTop;
+    const double slack = 1e-12 * e.piston.skirtLength_m;
+    const double first = axial.height_m[0], last = axial.height_m[axial.height_m.size() - 1];
+    if (first > lo + slack || last < hi - slack) {
+      profile.addProblem(
+          "axial_profile_file",
+          "the table covers heights [" + formatNumber(ends.profileFirst_mm) + ", " +
+              formatNumber(ends.profileLast_mm) + "] mm above the pin, but the skirt (piston." +
+              "skirt_top_above_pin_mm, piston.skirt_length_mm) needs [" + formatNumber(lo / kMm) +
+              ", " + formatNumber(hi / kMm) + "] mm" +
+              (axial.mirrored ? " with the mirrored profile (minus the skirt's heights)" : "") +
+              "; a profile is never extrapolated");
+    }
+  }
+  const skirt::OvalityParameters& ov = p.gap.skirtProfile.ovality;
+  if (ov.model == skirt::OvalityModel::Table && ov.tableAngle_rad.size() > 0) {
+    const double last = ov.tableAngle_rad[ov.tableAngle_rad.size() - 1];
+    const double half = 0.5 * p.grid.arcWidth_rad;
+    if (last < half * (1.0 - 1e-12)) {
+      profile.addProblem("ovality_file", "the table ends at " + formatNumber(ends.ovalityLast_deg) +
+                                             " deg from the thrust axis, but the skirt grid "
+                                             "(liner.grid.arc_width_deg) reaches " +
+                                             formatNumber(half / kDeg) +
+                                             " deg; an ovality table is never extrapolated");
+    }
+  }
+  if (liner.hasProblems())
+    return;
+
+  // The hot running clearance: the thrust side's (the anti-thrust side's centre line has
+  // the same profile and temperatures, so the same clearance).
+  const mbd::SliderCrank kinematics(e.geometry);
+  skirt::GapAssemblyParameters gap = p.gap;
+  gap.travel.lowestPinHeight_m = kinematics.pinHeightAtBdc_m();
+  gap.travel.highestPinHeight_m = kinematics.pinHeightAtTdc_m();
+  if (!std::isfinite(gap.linerTopHeight_m))
+    gap.linerTopHeight_m = kinematics.pinHeightAtTdc_m() + e.piston.compressionHeight_m;
+  skirt::SkirtSideGridParameters g = p.grid;
+  g.side = skirt::SkirtSide::Thrust;
+  g.radius_m = 0.5 * e.piston.bore_m;
+  g.skirtTopHeight_m = yTop;
+  g.skirtLength_m = e.piston.skirtLength_m;
+  try {
+    const skirt::SkirtSideGrid grid(g);
+    const skirt::HotRunningClearance hot = skirt::calcHotRunningClearance(grid, gap);
+    if (hot.clearance_m < 0.0) {
+      liner.addProblem("cold_radial_clearance_um",
+                       "the hot running clearance is " + formatNumber(hot.clearance_m / kUm) +
+                           " um at " + formatNumber(hot.skirtHeight_m / kMm) +
+                           " mm above the pin (pin " + formatNumber(hot.pinHeight_m / kMm) +
+                           " mm above the crank axis): the hot skirt would not fit the hot "
+                           "bore; raise the clearance or check the profile and the thermal "
+                           "data");
+    }
+  } catch (const std::exception& ex) {
+    liner.addProblem("model", std::string("the skirt data do not fit this engine: ") + ex.what());
+  }
+}
+
+}  // namespace
+
+LinerElementMaker readLubricatedSkirt(DeckSection& liner, LinerDeckContext& context) {
+  plugin::LubricatedSkirtParameters p;
+  skirt::GapAssemblyParameters& gap = p.gap;
+  // 1 .. 500 um: a clearance given in mm (0.04) or nm (40000) is rejected.
+  gap.coldRadialClearance_m =
+      liner.getSI("cold_radial_clearance_um", Q::Length, Bounds::between(1.0, 500.0));
+  gap.referenceTemperature_degC =
+      liner.getNumberOr("reference_temperature_degC", 20.0, Bounds::between(-60.0, 200.0));
+  readGrid(liner, p.grid);
+
+  DeckSection profile = liner.getSection("skirt_profile");
+  WrittenEnds ends;
+  readAxialProfile(profile, gap.skirtProfile.axial, ends);
+  readOvality(profile, gap.skirtProfile.ovality, ends);
+
+  DeckSection bore = liner.getSection("bore_distortion");
+  readBoreDistortion(bore, gap.linerShape);
+  if (const auto top =
+          bore.getOptionalSI("liner_top_above_crank_mm", Q::Length, Bounds::between(0.0, 2000.0)))
+    gap.linerTopHeight_m = *top;
+  readThermal(liner, gap);
+
+  readOil(liner, p);
+  readSupply(liner, p.supplyFilm);
+  readSurfaces(liner, p);
+
+  p.tertiaryMotion = liner.getBoolOr("tertiary_motion", false);
+  p.pinRetainerPlay_m =
+      liner.getSIOr("pin_retainer_play_mm", Q::Length, 0.5, Bounds{0.0, 10.0, true});
+  p.pinRetainerStiffness_Npm =
+      liner.getSIOr("pin_retainer_stiffness_N_per_mm", Q::Stiffness, 2e4, Bounds{0.0, 1e9, true});
+  readFieldDumps(liner, context);
+
+  context.tertiaryMotion = p.tertiaryMotion;
+  context.stiffReason =
+      "the squeeze film's damping of the piston's lateral and tilt motion grows like 1/h^3, so "
+      "explicit steps collapse to nanoseconds where the film is thin";
+  if (context.engineIsValid && context.engine != nullptr && !liner.hasProblems())
+    checkAgainstEngine(liner, *context.engine, p, ends);
+  return [p] { return std::make_unique<plugin::LubricatedSkirtElement>(p); };
+}
+
+}  // namespace pistondyn::io

@@ -1,0 +1,305 @@
+// The liner model lubricated_skirt read from a deck (io/LubricatedSkirtDeck.h): the
+// factory turns every key into the element's SI parameters (checked here against hand
+// conversions of the deck's values), the switches that reach beyond the liner section
+// (tertiary motion into the crank train, the integrator the stiff film needs), and the
+// ideal guide selectable from the same deck.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "ScratchDeck.h"
+#include "pistondyn/io/DeckError.h"
+#include "pistondyn/io/EngineDeck.h"
+#include "pistondyn/lubrication/OilGrades.h"
+#include "pistondyn/plugin/LubricatedSkirtElement.h"
+
+using namespace pistondyn_test;
+namespace io = pistondyn::io;
+namespace plugin = pistondyn::plugin;
+
+namespace {
+
+// The element the deck's model builds, and its parameters.
+struct Built {
+  io::EngineDeck deck;
+  std::unique_ptr<plugin::PistonAssemblyModel> model;
+  const plugin::LubricatedSkirtElement& skirt() const {
+    return model->getElementAs<plugin::LubricatedSkirtElement>("lubricated_skirt");
+  }
+};
+
+Built build(const std::string& deckPath, const std::vector<std::string>& overrides = {}) {
+  Built b{io::loadEngineDeck(deckPath, overrides), nullptr};
+  b.model = io::buildModel(b.deck);
+  b.model->buildSystem();  // the element joins the engine (addToModel)
+  return b;
+}
+
+constexpr double kDeg = M_PI / 180.0;
+
+// The example deck's section as the element's parameters, by hand: um -> 1e-6 m, deg ->
+// pi/180 rad, GPa -> 1e9 Pa, mm/s -> 1e-3 m/s (each a single product, compared exactly).
+TEST(SkirtDeck, TheGasolineExampleSectionBecomesTheElementsParametersInSI) {
+  const Built b = build(kEngineDir + "/engine.yaml");
+  EXPECT_EQ(b.deck.linerModel, "lubricated_skirt");
+  const plugin::LubricatedSkirtParameters& p = b.skirt().getParameters();
+  EXPECT_EQ(p.gap.coldRadialClearance_m, 40.0 * 1e-6);
+  EXPECT_EQ(p.gap.referenceTemperature_degC, 20.0);
+  EXPECT_EQ(p.grid.arcWidth_rad, 80.0 * kDeg);
+  EXPECT_EQ(p.grid.nPhi, 64);
+  EXPECT_EQ(p.grid.nY, 48);
+  EXPECT_EQ(p.grid.axialClustering, 2.5);
+  // The profile table: 101 rows, -25 .. +25 mm, 0.12 um/mm^2 (y + 6 mm)^2.
+  const auto& axial = p.gap.skirtProfile.axial;
+  ASSERT_EQ(axial.height_m.size(), 101);
+  EXPECT_EQ(axial.height_m[0], -25.0 * 1e-3);
+  EXPECT_EQ(axial.height_m[100], 25.0 * 1e-3);
+  for (Eigen::Index i = 0; i < axial.height_m.size(); ++i) {
+    const double d_mm = axial.height_m[i] * 1e3 + 6.0;
+    // The table's decimal text against the closed form: a few ulps of 40 um.
+    EXPECT_NEAR(axial.radialDrop_m[i], 0.12 * d_mm * d_mm * 1e-6, 1e-18) << i;
+  }
+  EXPECT_FALSE(axial.mirrored);
+  EXPECT_EQ(p.gap.skirtProfile.ovality.model, pistondyn::skirt::OvalityModel::Law);
+  EXPECT_EQ(p.gap.skirtProfile.ovality.diametralOvality_m, 300.0 * 1e-6);
+  EXPECT_EQ(p.gap.skirtProfile.ovality.cos4Coefficient, 0.0);
+  EXPECT_TRUE(p.gap.linerShape.orders.empty());  // ideal cylinder
+  EXPECT_EQ(p.gap.pistonThermal.height_m.size(), 0);
+  EXPECT_EQ(p.gap.linerThermal.depth_m.size(), 0);
+  // Oil: the grade's data sheet, at 105 degC.
+  const auto grade =
+      pistondyn::lubrication::makeSaeGradeOilSpec(pistondyn::lubrication::SaeGrade::k0W30);
+  EXPECT_EQ(p.oil.name, grade.name);
+  EXPECT_EQ(p.oil.kinematicViscosity1_m2ps, grade.kinematicViscosity1_m2ps);
+  EXPECT_EQ(p.oil.kinematicViscosity2_m2ps, grade.kinematicViscosity2_m2ps);
+  EXPECT_EQ(p.oilTemperature_degC, 105.0);
+  // Partially flooded: a constant 0.5 um supply film.
+  EXPECT_EQ(p.supplyFilm.constant_m, 0.5 * 1e-6);
+  EXPECT_TRUE(p.supplyFilm.crankAngle_deg.empty());
+  // One roughness pair for both the flow factors and the contact.
+  EXPECT_EQ(p.roughness.rq1_m, 0.4 * 1e-6);
+  EXPECT_EQ(p.roughness.rq2_m, 0.6 * 1e-6);
+  EXPECT_EQ(p.roughness.peklenik1, 1.0);
+  EXPECT_EQ(p.roughness.peklenik2, 1.0);
+  EXPECT_EQ(p.asperity.roughnessParameter, 0.04);
+  EXPECT_EQ(p.asperity.sigmaOverBeta, 0.001);
+  EXPECT_EQ(p.asperity.surface1.youngsModulus_Pa, 115.0 * 1e9);
+  EXPECT_EQ(p.asperity.surface1.poissonRatio, 0.26);
+  EXPECT_EQ(p.asperity.surface2.youngsModulus_Pa, 75.0 * 1e9);
+  EXPECT_EQ(p.asperity.surface2.poissonRatio, 0.33);
+  EXPECT_EQ(p.asperity.roughnessSurface1_m, 0.4 * 1e-6);  // set from roughness at addToModel
+  EXPECT_EQ(p.boundaryFriction.frictionCoefficient, 0.1);
+  EXPECT_EQ(p.boundaryFriction.regularisationSpeed_mps, 1.0 * 1e-3);
+  EXPECT_EQ(p.lubrication.wearCoefficient_m2pN, 0.0);
+  EXPECT_EQ(p.lubrication.cavitation, pistondyn::lubrication::CavitationModel::MassConserving);
+  EXPECT_EQ(p.lubrication.solver.solver, pistondyn::lubrication::FilmSolverType::FastActiveSet);
+  EXPECT_EQ(p.lubrication.solver.tolerance, 1e-8);
+  // The one tertiary switch reaches the element and the crank train.
+  EXPECT_FALSE(p.tertiaryMotion);
+  EXPECT_FALSE(b.deck.engine.tertiaryMotion);
+  EXPECT_EQ(b.deck.engine.piston.skirtTopAbovePin_m, 12.0 * 1e-3);
+  // Simulation settings.
+  const plugin::SimulationSettings& s = b.deck.simulation;
+  EXPECT_EQ(s.integrator, plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2);
+  EXPECT_TRUE(s.untilPeriodic);
+  EXPECT_EQ(s.cycles, 8);
+  EXPECT_EQ(s.poseTolerance_m, 10.0 * 1e-9);
+  EXPECT_EQ(s.maxStep_deg, 0.5);
+  EXPECT_EQ(s.periodicFmepTolerance, 0.005);
+  EXPECT_EQ(s.periodicPoseTolerance_m, 0.2 * 1e-6);
+  // The hot running clearance without thermal growth is the cold one at the profile's
+  // zero-drop line (inside the skirt: -6 mm).
+  EXPECT_NEAR(*b.skirt().getHotRunningClearance_m(), 40e-6, 1e-15);
+}
+
+TEST(SkirtDeck, TheBriggsAndStrattonExampleHasTheThesisClearance) {
+  const Built b = build(std::string(PISTONDYN_SOURCE_DIR) +
+                        "/examples/engines/briggs_stratton_500/engine.yaml");
+  const plugin::LubricatedSkirtParameters& p = b.skirt().getParameters();
+  EXPECT_EQ(p.gap.coldRadialClearance_m, 53.0 * 1e-6);
+  EXPECT_EQ(p.gap.skirtProfile.ovality.diametralOvality_m, 260.0 * 1e-6);
+  EXPECT_EQ(p.oilTemperature_degC, 40.0);
+  EXPECT_FALSE(b.deck.engine.tertiaryMotion);
+}
+
+// A section with every key away from its default, tables included.
+class FullSkirtDeck : public SkirtScratchDeck {
+ protected:
+  void SetUp() override {
+    SkirtScratchDeck::SetUp();
+    writeFile("ovality.csv", "angle_from_thrust_deg,radial_drop_um\n0,0\n45,60\n90,150\n");
+    writeFile("bore.csv",
+              "# two orders\ndepth_mm,order,amplitude_um,phase_deg\n0,0,2,0\n0,2,5,30\n"
+              "60,2,3,45\n120,0,4,0\n120,2,1,90\n");
+    writeFile("piston_t.csv", "height_above_pin_mm,temperature_degC\n-18,60\n12,70\n");
+    writeFile("liner_t.csv", "depth_mm,temperature_degC\n0,130\n140,100\n");
+    writeFile("supply.csv", "crank_angle_deg,film_um\n0,0.5\n360,2\n540,1\n");
+    std::string text = readFile(deck());
+    text = replaceSection(text, "liner", R"(liner:
+  model: lubricated_skirt
+  cold_radial_clearance_um: 60
+  reference_temperature_degC: 25
+  grid: {arc_width_deg: 90, nodes_circumferential: 20, nodes_axial: 14, axial_clustering: 1}
+  skirt_profile:
+    axial_profile_file: skirt_profile.csv
+    mirrored: true
+    ovality_file: ovality.csv
+  bore_distortion:
+    file: bore.csv
+    liner_top_above_crank_mm: 250
+  thermal:
+    piston_expansion_per_K: 2.1e-5
+    piston_temperature_file: piston_t.csv
+    liner_expansion_per_K: 1.1e-5
+    liner_temperature_file: liner_t.csv
+  oil:
+    kinematic_viscosity_1_mm2_per_s: 60
+    viscosity_temperature_1_degC: 40
+    kinematic_viscosity_2_mm2_per_s: 10
+    viscosity_temperature_2_degC: 100
+    density_kg_per_m3: 850
+    temperature_degC: 90
+  oil_supply: {film_file: supply.csv}
+  roughness: {liner_rq_um: 0.3, skirt_rq_um: 0.5, peklenik: 2}
+  asperity:
+    roughness_parameter: 0.05
+    sigma_over_beta: 0.002
+    liner_youngs_modulus_GPa: 110
+    liner_poisson_ratio: 0.27
+    skirt_youngs_modulus_GPa: 70
+    skirt_poisson_ratio: 0.32
+    friction_coefficient: 0.12
+    regularisation_speed_mm_per_s: 2
+    wear_coefficient_mm3_per_N_m: 1e-6
+  film: {cavitation: reynolds, solver: reference_gauss_seidel, tolerance: 1e-7}
+  tertiary_motion: true
+  pin_retainer_play_mm: 0.3
+  pin_retainer_stiffness_N_per_mm: 1e4
+  field_dumps: {crank_angles_deg: [0, 370]}
+
+)");
+    std::ofstream(deck()) << text;
+  }
+};
+
+TEST_F(FullSkirtDeck, EveryKeyReachesTheElementInSI) {
+  const Built b = build(deck());
+  const plugin::LubricatedSkirtParameters& p = b.skirt().getParameters();
+  EXPECT_EQ(p.gap.coldRadialClearance_m, 60.0 * 1e-6);
+  EXPECT_EQ(p.gap.referenceTemperature_degC, 25.0);
+  EXPECT_EQ(p.grid.arcWidth_rad, 90.0 * kDeg);
+  EXPECT_EQ(p.grid.nPhi, 20);
+  EXPECT_EQ(p.grid.nY, 14);
+  EXPECT_EQ(p.grid.axialClustering, 1.0);
+  EXPECT_TRUE(p.gap.skirtProfile.axial.mirrored);
+  const auto& ov = p.gap.skirtProfile.ovality;
+  ASSERT_EQ(ov.model, pistondyn::skirt::OvalityModel::Table);
+  ASSERT_EQ(ov.tableAngle_rad.size(), 3);
+  EXPECT_EQ(ov.tableAngle_rad[1], 45.0 * kDeg);
+  EXPECT_EQ(ov.tableRadialDrop_m[2], 150.0 * 1e-6);
+  // Bore distortion: orders 0 and 2, rows grouped by order in file order.
+  const auto& orders = p.gap.linerShape.orders;
+  ASSERT_EQ(orders.size(), 2u);
+  EXPECT_EQ(orders[0].order, 0);
+  EXPECT_EQ(orders[1].order, 2);
+  ASSERT_EQ(orders[1].depth_m.size(), 3);
+  EXPECT_EQ(orders[1].depth_m[1], 60.0 * 1e-3);
+  EXPECT_EQ(orders[1].amplitude_m[0], 5.0 * 1e-6);
+  EXPECT_EQ(orders[1].phase_rad[1], 45.0 * kDeg);
+  EXPECT_EQ(orders[0].amplitude_m[1], 4.0 * 1e-6);
+  EXPECT_EQ(p.gap.linerTopHeight_m, 250.0 * 1e-3);
+  EXPECT_EQ(p.gap.pistonThermal.expansionCoefficient_perK, 2.1e-5);
+  EXPECT_EQ(p.gap.pistonThermal.height_m[0], -18.0 * 1e-3);
+  EXPECT_EQ(p.gap.pistonThermal.temperature_degC[1], 70.0);
+  EXPECT_EQ(p.gap.linerThermal.expansionCoefficient_perK, 1.1e-5);
+  EXPECT_EQ(p.gap.linerThermal.depth_m[1], 140.0 * 1e-3);
+  EXPECT_EQ(p.gap.linerThermal.temperature_degC[0], 130.0);
+  // A user oil from two viscosities.
+  EXPECT_EQ(p.oil.kinematicViscosity1_m2ps, 60.0 * 1e-6);
+  EXPECT_EQ(p.oil.kinematicViscosity2_m2ps, 10.0 * 1e-6);
+  EXPECT_EQ(p.oil.temperature1_degC, 40.0);
+  EXPECT_EQ(p.oil.temperature2_degC, 100.0);
+  EXPECT_EQ(p.oil.density_kgpm3, 850.0);
+  EXPECT_EQ(p.oilTemperature_degC, 90.0);
+  // The supply film over the cycle.
+  ASSERT_EQ(p.supplyFilm.crankAngle_deg.size(), 3u);
+  EXPECT_EQ(p.supplyFilm.crankAngle_deg[1], 360.0);
+  EXPECT_EQ(p.supplyFilm.thickness_m[1], 2.0 * 1e-6);
+  EXPECT_EQ(p.roughness.rq1_m, 0.3 * 1e-6);
+  EXPECT_EQ(p.roughness.rq2_m, 0.5 * 1e-6);
+  EXPECT_EQ(p.roughness.peklenik1, 2.0);
+  EXPECT_EQ(p.roughness.peklenik2, 2.0);
+  EXPECT_EQ(p.asperity.roughnessParameter, 0.05);
+  EXPECT_EQ(p.asperity.sigmaOverBeta, 0.002);
+  EXPECT_EQ(p.asperity.surface1.youngsModulus_Pa, 110.0 * 1e9);
+  EXPECT_EQ(p.asperity.surface1.poissonRatio, 0.27);
+  EXPECT_EQ(p.asperity.surface2.youngsModulus_Pa, 70.0 * 1e9);
+  EXPECT_EQ(p.asperity.surface2.poissonRatio, 0.32);
+  EXPECT_EQ(p.boundaryFriction.frictionCoefficient, 0.12);
+  EXPECT_EQ(p.boundaryFriction.regularisationSpeed_mps, 2.0 * 1e-3);
+  EXPECT_EQ(p.lubrication.wearCoefficient_m2pN, 1e-6 * 1e-9);  // mm^3/(N m) -> m^3/(N m)
+  EXPECT_EQ(p.lubrication.cavitation, pistondyn::lubrication::CavitationModel::Reynolds);
+  EXPECT_EQ(p.lubrication.solver.solver,
+            pistondyn::lubrication::FilmSolverType::ReferenceGaussSeidel);
+  EXPECT_EQ(p.lubrication.solver.tolerance, 1e-7);
+  EXPECT_TRUE(p.tertiaryMotion);
+  EXPECT_TRUE(b.deck.engine.tertiaryMotion);  // the crank train gets the pin-axis mobility
+  EXPECT_EQ(p.pinRetainerPlay_m, 0.3 * 1e-3);
+  EXPECT_EQ(p.pinRetainerStiffness_Npm, 1e4 * 1e3);
+  EXPECT_EQ(b.deck.fieldDumpAngles_deg, (std::vector<double>{0.0, 370.0}));
+  // Thermal growth: the skirt grows by R alpha_p (T_p - T_ref) (60..70 degC), the bore by
+  // R alpha_l (T_l - T_ref) (100..130 degC), T_ref = 25 degC. The hot clearance is the
+  // smallest c0 + drop + both terms: at most its value on the mirrored profile's zero-drop
+  // line (skirt at least 60 degC, bore at most 130 degC there), at least c0 with the
+  // hottest skirt and the coolest bore (the drop is >= 0).
+  const double R = 0.5 * 74.5e-3, hot = *b.skirt().getHotRunningClearance_m();
+  EXPECT_LE(hot, 60e-6 + R * 1.1e-5 * (130.0 - 25.0) - R * 2.1e-5 * (60.0 - 25.0));
+  EXPECT_GE(hot, 60e-6 + R * 1.1e-5 * (100.0 - 25.0) - R * 2.1e-5 * (70.0 - 25.0));
+}
+
+// The ideal guide stays selectable from the skirt deck: --set liner.model=ideal_guide (with
+// an integrator for constraints); the deck's skirt keys are then the file's model's data,
+// not reported, but a misspelt key given by --set still is.
+TEST_F(SkirtScratchDeck, TheIdealGuideIsSelectableFromTheSkirtDeck) {
+  const std::vector<std::string> ideal = {"liner.model=ideal_guide",
+                                          "simulation.integrator=rk_merson"};
+  const auto d = io::loadEngineDeck(deck(), ideal);
+  EXPECT_EQ(d.linerModel, "ideal_guide");
+  EXPECT_TRUE(d.linerInputs.empty());
+  EXPECT_TRUE(d.engine.tertiaryMotion);  // the ideal guide's default: held by a constraint
+  std::vector<std::string> typo = ideal;
+  typo.push_back("liner.grid.nodes_axal=12");
+  EXPECT_NE(rejection(typo).find("--set liner.grid.nodes_axal: unknown key"), std::string::npos)
+      << rejection(typo);
+  // Without the integrator: the deck's linearly_implicit_bdf2 cannot take constraints.
+  const std::string m = rejection({"liner.model=ideal_guide"});
+  expectNames(m, deck(), lineOf("integrator:"), "simulation.integrator",
+              "linearly_implicit_bdf2 integrates models without constraints");
+}
+
+// The skirt's film is stiff: Simbody's explicit integrators are rejected, saying why.
+TEST_F(SkirtScratchDeck, AnExplicitIntegratorIsRejectedForTheSkirt) {
+  for (const char* integrator : {"rk_merson", "rk_feldberg"}) {
+    const std::string m = rejection({std::string("simulation.integrator=") + integrator});
+    EXPECT_NE(m.find("--set simulation.integrator: '" + std::string(integrator) +
+                     "' is an explicit integrator, but the liner model 'lubricated_skirt' "
+                     "makes the system stiff"),
+              std::string::npos)
+        << m;
+    EXPECT_NE(m.find("use linearly_implicit_bdf2 (or cpodes_bdf)"), std::string::npos) << m;
+  }
+  EXPECT_EQ(rejection({"simulation.integrator=cpodes_bdf"}), "");
+}
+
+TEST_F(SkirtScratchDeck, UntilPeriodicNeedsTwoCycles) {
+  const std::string m = rejection({"simulation.cycles=1"});
+  EXPECT_NE(m.find("--set simulation.cycles: with simulation.until_periodic: true"),
+            std::string::npos)
+      << m;
+}
+
+}  // namespace

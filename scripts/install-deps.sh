@@ -13,6 +13,7 @@ PACKAGES=(
   libcli11-dev            # command line of the pistondyn program (app/, header-only)
   libgtest-dev googletest # test suite
   libbenchmark-dev        # bench/
+  clang libclang-rt-14-dev llvm  # .ci: sanitizer suite, libFuzzer targets, symbolised stacks
 )
 
 missing=()

@@ -14,6 +14,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -84,8 +85,13 @@ void checkResult(const io::CsvTable& t) {
       }
     }
   }
+  // The probe name is not in the header (the fuzzer learns it from the comparison and
+  // writes it there: not a finding).
+  const std::string probe = "\x01no such column";
+  if (std::find(t.columns.begin(), t.columns.end(), probe) != t.columns.end())
+    return;
   try {
-    (void)t.columnIndex("\x01no such column");
+    (void)t.columnIndex(probe);
     fail("columnIndex found a column that is not there");
   } catch (const io::DeckError&) {
   }

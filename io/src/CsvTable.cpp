@@ -1,10 +1,12 @@
 #include "pistondyn/io/CsvTable.h"
 
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <stdexcept>
 
 #include "CsvText.h"
+#include "pistondyn/common/Validation.h"
 #include "pistondyn/io/DeckError.h"
 
 namespace pistondyn::io {
@@ -44,8 +46,15 @@ std::vector<double> CsvTable::getColumnSI(const std::string& name, Quantity quan
                            getQuantityName(quantity) + " unit");
   }
   std::vector<double> out = getColumn(name);
-  for (double& v : out)
-    v = v * unit->factor + unit->offset;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const double si = out[i] * unit->factor + unit->offset;
+    // A finite value as written can overflow in SI (1e306 kN): never pass on an inf.
+    if (!std::isfinite(si)) {
+      throw DeckError(where(i) + ": " + name + " " + common::formatNumber(out[i]) +
+                      " is too large: it overflows when converted to " + unit->siSuffix);
+    }
+    out[i] = si;
+  }
   return out;
 }
 
@@ -55,6 +64,8 @@ std::string CsvTable::where(std::size_t row) const {
 
 CsvTable readCsvTable(const std::string& filePath,
                       const std::vector<std::string>& requiredColumns) {
+  if (detail::isFolder(filePath))
+    throw DeckError(filePath + ": is a folder, not a table file");
   std::ifstream in(filePath);
   if (!in)
     throw DeckError(filePath + ": cannot open the table");

@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -40,6 +41,13 @@ inline bool parseDouble(const std::string& text, double& value) {
   if (end != text.c_str() + text.size() || !std::isfinite(value))
     return false;
   return errno != ERANGE || std::abs(value) < 1.0;  // ERANGE with |value| < 1 = underflow
+}
+
+// True if `path` is a folder: std::ifstream opens one without complaint and the first
+// read fails, which would read as an empty table.
+inline bool isFolder(const std::string& path) {
+  std::error_code ec;
+  return std::filesystem::is_directory(path, ec);
 }
 
 // Removes a UTF-8 byte-order mark at the start of the first line.

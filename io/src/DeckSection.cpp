@@ -1,9 +1,11 @@
 #include "pistondyn/io/DeckSection.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
+#include "pistondyn/common/Validation.h"
 #include "pistondyn/io/DeckError.h"
 
 namespace pistondyn::io {
@@ -24,6 +26,12 @@ UnitSuffix requireUnit(const std::string& keyPath, Quantity quantity) {
 
 double toSI(double v, const UnitSuffix& u) {
   return u.offset == 0.0 ? v * u.factor : v * u.factor + u.offset;
+}
+
+// A finite value in the key's unit can overflow in SI (1e306 kN): never pass on an inf.
+std::string overflowMessage(double v, const UnitSuffix& u) {
+  return common::formatNumber(v) + " " + u.suffix + " is too large: it overflows when " +
+         "converted to " + u.siSuffix;
 }
 
 }  // namespace
@@ -113,6 +121,10 @@ std::optional<double> DeckSection::readSI(const std::string& key, Quantity quant
   if (!v && (present || !fallbackInKeyUnit))
     return std::nullopt;
   const double si = toSI(v ? *v : *fallbackInKeyUnit, unit);
+  if (!std::isfinite(si)) {
+    addProblem(key, overflowMessage(v ? *v : *fallbackInKeyUnit, unit));
+    return std::nullopt;
+  }
   record(key, toSIKey(key, unit), si);
   return si;
 }
@@ -143,8 +155,14 @@ std::optional<std::vector<double>> DeckSection::readSIList(
       return std::nullopt;
     v = *fallbackInKeyUnit;
   }
-  for (double& x : *v)
-    x = toSI(x, unit);
+  for (std::size_t i = 0; i < v->size(); ++i) {
+    const double si = toSI((*v)[i], unit);
+    if (!std::isfinite(si)) {
+      addProblem(key, "item " + std::to_string(i + 1) + ": " + overflowMessage((*v)[i], unit));
+      return std::nullopt;
+    }
+    (*v)[i] = si;
+  }
   record(key, toSIKey(key, unit), *v);
   return v;
 }
@@ -254,6 +272,13 @@ std::optional<std::string> DeckSection::getOptionalFilePath(const std::string& k
     return std::nullopt;
   }
   const std::string path = deck_->resolvePath(*v);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    addProblem(key, "'" + path +
+                        "' is a folder, not a file (relative paths start at the deck's "
+                        "folder)");
+    return std::nullopt;
+  }
   std::ifstream probe(path);
   if (!probe) {
     addProblem(key, "cannot open '" + path + "' (relative paths start at the deck's folder)");

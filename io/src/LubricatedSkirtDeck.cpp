@@ -91,6 +91,14 @@ bool hasTemperatures(DeckSection& s, const std::string& key, const CsvTable& t) 
                   "degC must be above absolute zero (-273.15 degC) and below 1000 degC");
 }
 
+// Plausibility of table values for the engines the tool is for (as the deck keys':
+// ovality_diametral_um, liner_top_above_crank_mm). Beyond them a value is a unit slip or
+// garbage; a finite 1e308 would pass every other check and reach the gap as 1e302 m.
+const Bounds kTableHeight_mm = Bounds::between(-2000.0, 2000.0);
+const Bounds kTableDepth_mm = Bounds::between(0.0, 2000.0);
+const Bounds kTableRadial_um = Bounds::between(-2000.0, 2000.0);
+const Bounds kTablePhase_deg = Bounds::between(-360.0, 360.0);
+
 // Table ends as written (for messages: the SI values converted back would show rounding).
 struct WrittenEnds {
   double profileFirst_mm = 0.0, profileLast_mm = 0.0;
@@ -126,7 +134,13 @@ void readAxialProfile(DeckSection& profile, skirt::AxialProfileParameters& a, Wr
   const std::vector<std::string> cols = {"height_above_pin_mm", "radial_drop_um"};
   if (const auto t = profile.getOptionalCsvTable(key, cols)) {
     if (hasExactlyColumns(profile, key, *t, cols) && hasRows(profile, key, *t, 2) &&
-        isIncreasing(profile, key, *t, "height_above_pin_mm", "mm")) {
+        isIncreasing(profile, key, *t, "height_above_pin_mm", "mm") &&
+        isWithin(profile, key, *t, "height_above_pin_mm", kTableHeight_mm,
+                 "mm is not a height on a piston (at most 2000 mm from the pin; a unit "
+                 "slip?)") &&
+        isWithin(profile, key, *t, "radial_drop_um", kTableRadial_um,
+                 "um is not a skirt's radial drop (at most 2000 um either way; mm given as "
+                 "um?)")) {
       a.height_m = toVector(t->getColumnSI("height_above_pin_mm", Q::Length));
       ends.profileFirst_mm = t->rows.front()[t->columnIndex("height_above_pin_mm")];
       ends.profileLast_mm = t->rows.back()[t->columnIndex("height_above_pin_mm")];
@@ -160,7 +174,10 @@ void readOvality(DeckSection& profile, skirt::OvalityParameters& o, WrittenEnds&
   if (!t || !hasExactlyColumns(profile, key, *t, cols) || !hasRows(profile, key, *t, 2) ||
       !isIncreasing(profile, key, *t, "angle_from_thrust_deg", "deg") ||
       !isWithin(profile, key, *t, "angle_from_thrust_deg", Bounds::between(0.0, 90.0),
-                "deg is outside one quadrant [0, 90] deg from the thrust axis"))
+                "deg is outside one quadrant [0, 90] deg from the thrust axis") ||
+      !isWithin(profile, key, *t, "radial_drop_um", kTableRadial_um,
+                "um is not an ovality's radial drop (at most 2000 um either way; mm given "
+                "as um?)"))
     return;
   const std::vector<double> angle = t->getColumn("angle_from_thrust_deg");
   const std::vector<double> drop = t->getColumn("radial_drop_um");
@@ -184,7 +201,13 @@ void readBoreDistortion(DeckSection& bore, skirt::BoreDistortionParameters& b) {
   const auto t = bore.getOptionalCsvTable(key, cols);
   if (!t || !hasExactlyColumns(bore, key, *t, cols) || !hasRows(bore, key, *t, 1) ||
       !isWithin(bore, key, *t, "depth_mm", Bounds::nonNegative(),
-                "mm is above the liner top (depths are measured down from it, >= 0)"))
+                "mm is above the liner top (depths are measured down from it, >= 0)") ||
+      !isWithin(bore, key, *t, "depth_mm", kTableDepth_mm,
+                "mm is deeper than a liner (at most 2000 mm; a unit slip?)") ||
+      !isWithin(bore, key, *t, "amplitude_um", kTableRadial_um,
+                "um is not a bore distortion (at most 2000 um either way; mm given as um?)") ||
+      !isWithin(bore, key, *t, "phase_deg", kTablePhase_deg,
+                "deg is not a phase in [-360, 360] deg"))
     return;
   struct Rows {
     std::vector<double> depth_m, amplitude_m, phase_rad;
@@ -250,6 +273,8 @@ bool readThermalField(DeckSection& thermal, const std::string& alphaKey, const s
   const auto t = thermal.getOptionalCsvTable(fileKey, cols);
   if (!t || !hasExactlyColumns(thermal, fileKey, *t, cols) || !hasRows(thermal, fileKey, *t, 1) ||
       !isIncreasing(thermal, fileKey, *t, positionColumn, "mm") ||
+      !isWithin(thermal, fileKey, *t, positionColumn, kTableHeight_mm,
+                "mm is not a position on a piston or liner (at most 2000 mm; a unit slip?)") ||
       !hasTemperatures(thermal, fileKey, *t))
     return false;
   position_m = toVector(t->getColumnSI(positionColumn, Q::Length));

@@ -15,6 +15,8 @@ using detail::splitCsv;
 using detail::trim;
 
 mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath) {
+  if (detail::isFolder(filePath))
+    throw DeckError(filePath + ": is a folder, not a cylinder-pressure table file");
   std::ifstream in(filePath);
   if (!in)
     throw DeckError(filePath + ": cannot open the cylinder-pressure table");

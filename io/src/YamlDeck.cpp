@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
@@ -65,6 +66,11 @@ YamlDeck::YamlDeck(std::string filePath) : impl_(std::make_unique<Impl>()) {
   std::string& filePath_ = impl_->filePath;
   YAML::Node& root_ = impl_->root;
   filePath_ = std::move(filePath);
+  // Before yaml-cpp sees it: a folder opens as a stream that fails on the first read,
+  // and yaml-cpp leaks its scanner when that read throws.
+  std::error_code ec;
+  if (std::filesystem::is_directory(filePath_, ec))
+    throw DeckError(filePath_ + ": is a folder, not a deck file");
   try {
     root_ = YAML::LoadFile(filePath_);
   } catch (const YAML::BadFile&) {

@@ -231,6 +231,66 @@ TEST_F(SectionDeck, BadTableRowsNameTheTableLineUnderTheKey) {
   EXPECT_NE(m.find("needs a column 'radial_drop_um'"), std::string::npos) << m;
 }
 
+// Found by the csv_table fuzz target: a value finite as written but not in SI (1e306 kN
+// is 1e309 N) came back as inf. It is a problem naming the key or the table's line.
+TEST_F(SectionDeck, ValuesThatOverflowInSIAreRejectedNotPassedOnAsInfinity) {
+  write(std::string(kDeck) + "  force_kN: 1e306\n  forces_kN: [1, -1e306]\n");
+  std::string m = problems([](DeckSection& s) {
+    readAll(s);
+    EXPECT_FALSE(s.getOptionalSI("force_kN", Quantity::Force).has_value());
+    EXPECT_TRUE(s.getSIListOr("forces_kN", Quantity::Force, {1.0}).size() == 1u);
+  });
+  EXPECT_NE(m.find(":15: liner.force_kN: 1e+306 kN is too large: it overflows when converted to N"),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find(":16: liner.forces_kN: item 2: -1e+306 kN is too large"), std::string::npos)
+      << m;
+  // Nothing infinite was recorded for summary.json.
+  YamlDeck d(path());
+  DeckSection liner = d.getSection("liner");
+  (void)liner.getOptionalSI("force_kN", Quantity::Force);
+  for (const auto& in : d.getResolvedInputs())
+    EXPECT_NE(in.path, "liner.force_kN");
+
+  std::ofstream(dir_ / "tables" / "forces.csv")
+      << "# forces\nforce_kN,pressure_GPa\n1,2\n1e306,1\n";
+  const CsvTable t = readCsvTable((dir_ / "tables" / "forces.csv").string());
+  EXPECT_DOUBLE_EQ(t.getColumnSI("pressure_GPa", Quantity::Pressure)[0], 2e9);
+  try {
+    (void)t.getColumnSI("force_kN", Quantity::Force);
+    ADD_FAILURE() << "1e306 kN converted";
+  } catch (const DeckError& e) {
+    m = e.what();
+    EXPECT_NE(m.find((dir_ / "tables" / "forces.csv").string() +
+                     ":4: force_kN 1e+306 is too large: it overflows when converted to N"),
+              std::string::npos)
+        << m;
+  }
+}
+
+// A folder where a file belongs is named as such (std::ifstream opens a folder, and the
+// table read as empty).
+TEST_F(SectionDeck, AFolderWhereAFileBelongsIsRejectedAsAFolder) {
+  const std::string m = problems(
+      [](DeckSection& s) {
+        readAll(s);
+        s.getOptionalFilePath("folder_file");
+      },
+      {"liner.folder_file=tables"});
+  EXPECT_NE(m.find("--set liner.folder_file: '" + (dir_ / "tables").string() +
+                   "' is a folder, not a file"),
+            std::string::npos)
+      << m;
+  try {
+    (void)readCsvTable((dir_ / "tables").string());
+    ADD_FAILURE() << "read a folder as a table";
+  } catch (const DeckError& e) {
+    EXPECT_NE(std::string(e.what()).find("tables: is a folder, not a table file"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST_F(SectionDeck, AKeyWithoutAUnitOfTheQuantityIsAProgrammingError) {
   YamlDeck d(path());
   DeckSection liner = d.getSection("liner");

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "ScratchDeck.h"
 #include "pistondyn/io/DeckError.h"
@@ -298,6 +300,63 @@ TEST_F(SkirtScratchDeck, AnExplicitIntegratorIsRejectedForTheSkirt) {
 TEST_F(SkirtScratchDeck, UntilPeriodicNeedsTwoCycles) {
   const std::string m = rejection({"simulation.cycles=1"});
   EXPECT_NE(m.find("--set simulation.cycles: with simulation.until_periodic: true"),
+            std::string::npos)
+      << m;
+}
+
+// Found by the fuzz targets skirt_profile, ovality and bore_distortion (fuzz/): a table
+// of finite but absurd values (1e308 mm, 1e308 um) passed every check, or failed deep in
+// the gap assembly with "hot running clearance -1.8e262 m" naming no table. Each is now
+// rejected at its file:line, with the plausible range, like a deck key out of range.
+TEST_F(SkirtScratchDeck, TableValuesBeyondAnyEngineAreRejectedAtTheirLine) {
+  const std::string profile = (dir_ / kProfileTable).string();
+  writeFile(kProfileTable, "height_above_pin_mm,radial_drop_um\n-1e308,-1e308\n1e308,1e308\n");
+  std::string m = rejection();
+  EXPECT_NE(m.find(profile + ":2: height_above_pin_mm -1e+308 mm is not a height on a piston"),
+            std::string::npos)
+      << m;
+  writeFile(kProfileTable, "height_above_pin_mm,radial_drop_um\n-25,40\n25,2001\n");
+  m = rejection();
+  EXPECT_NE(m.find(profile + ":3: radial_drop_um 2001 um is not a skirt's radial drop"),
+            std::string::npos)
+      << m;
+  writeFile(kProfileTable, "height_above_pin_mm,radial_drop_um\n-25,40\n25,2000\n");
+  EXPECT_EQ(rejection(), "");  // the limit itself is accepted
+  writeFile(kProfileTable, "height_above_pin_mm,radial_drop_um\n-25,10\n25,10\n");
+
+  editDeck("    ovality_diametral_um: 300.0", "    ovality_file: ovality.csv\n    #");
+  editDeck("    ovality_cos4_coefficient: 0.0", "    # no law");
+  writeFile("ovality.csv", "angle_from_thrust_deg,radial_drop_um\n0,0\n90,-1e300\n");
+  m = rejection();
+  EXPECT_NE(m.find((dir_ / "ovality.csv").string() +
+                   ":3: radial_drop_um -1e+300 um is not an ovality's radial drop"),
+            std::string::npos)
+      << m;
+  EXPECT_EQ(m.find("hot running clearance"), std::string::npos) << m;
+
+  editDeck("  model: lubricated_skirt\n",
+           "  model: lubricated_skirt\n  bore_distortion: {file: bore.csv}\n");
+  writeFile("ovality.csv", "angle_from_thrust_deg,radial_drop_um\n0,0\n90,150\n");
+  const std::string bore = (dir_ / "bore.csv").string();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"0,2,1e308,0", ":2: amplitude_um 1e+308 um is not a bore distortion"},
+      {"0,2,5,1e308", ":2: phase_deg 1e+308 deg is not a phase in [-360, 360] deg"},
+      {"1e308,2,5,0", ":2: depth_mm 1e+308 mm is deeper than a liner"}};
+  for (const auto& [row, message] : cases) {
+    writeFile("bore.csv", "depth_mm,order,amplitude_um,phase_deg\n" + row + "\n");
+    m = rejection();
+    EXPECT_NE(m.find(bore + message), std::string::npos) << row << "\n" << m;
+  }
+  writeFile("bore.csv", "depth_mm,order,amplitude_um,phase_deg\n0,2,5,-360\n2000,2,5,360\n");
+  EXPECT_EQ(rejection(), "");
+
+  editDeck("  model: lubricated_skirt\n",
+           "  model: lubricated_skirt\n  thermal: {piston_expansion_per_K: 2.1e-5, "
+           "piston_temperature_file: piston_t.csv}\n");
+  writeFile("piston_t.csv", "height_above_pin_mm,temperature_degC\n-1e308,60\n0,70\n");
+  m = rejection();
+  EXPECT_NE(m.find((dir_ / "piston_t.csv").string() +
+                   ":2: height_above_pin_mm -1e+308 mm is not a position on a piston or liner"),
             std::string::npos)
       << m;
 }

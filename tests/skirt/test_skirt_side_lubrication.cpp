@@ -650,7 +650,11 @@ struct EdgeContact {
 
 Loads6 referenceContactLoads(const EdgeContact& ec, const cf::AsperityContactLaw& law) {
   const auto [xp, wp] = ps::test::gaussLegendre(200);
-  const auto [xg, wg] = ps::test::gaussLegendre(6);
+  // Not a structured binding: the lambda below captures the rule, and clang before 16
+  // (Debian 12's clang 14, the sanitizer build) cannot capture a structured binding.
+  const auto gauss6 = ps::test::gaussLegendre(6);
+  const auto& xg = gauss6.first;
+  const auto& wg = gauss6.second;
   const double yB = ec.yBottom();
   std::vector<std::pair<double, double>> yPoints;  // (y, weight)
   auto panels = [&](double a, double b, int count) {
@@ -732,7 +736,11 @@ TEST(SkirtSideLubrication, OffCentreSlidingEdgeContactMatchesTheTractionQuadratu
   const double fg = 0.1 / std::sqrt(ux * ux + uy * uy + 1e-6);  // f g(|U|) / |U|
   // Reference (same rule as referenceContactLoads).
   const auto [xp, wp] = ps::test::gaussLegendre(200);
-  const auto [xg, wg] = ps::test::gaussLegendre(6);
+  // Not a structured binding: the lambda below captures the rule, and clang before 16
+  // (Debian 12's clang 14, the sanitizer build) cannot capture a structured binding.
+  const auto gauss6 = ps::test::gaussLegendre(6);
+  const auto& xg = gauss6.first;
+  const auto& wg = gauss6.second;
   Eigen::Vector3d F = Eigen::Vector3d::Zero(), M = Eigen::Vector3d::Zero();
   const double yB = ec.yBottom();
   for (std::size_t a = 0; a < xp.size(); ++a) {

@@ -32,7 +32,8 @@ struct CsvTable {
   // The values of one column, as written.
   std::vector<double> getColumn(const std::string& name) const;
   // The values of one column in SI, by the unit its name ends with; throws
-  // std::logic_error if the name has no unit of `quantity` (as DeckSection::getSI).
+  // std::logic_error if the name has no unit of `quantity` (as DeckSection::getSI), and
+  // DeckError "<file>:<line>: ..." if a value overflows in SI (1e306 kN).
   std::vector<double> getColumnSI(const std::string& name, Quantity quantity) const;
   // "<file>:<line>" of row i, for messages about a value (e.g. not increasing).
   std::string where(std::size_t row) const;

@@ -2,11 +2,25 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace pistondyn::app {
 namespace {
 
 constexpr double kQuiet_s = 1.0;          // nothing for runs shorter than this
+// PISTONDYN_PROGRESS_AFTER_S (seconds, >= 0) replaces the one second, so that a test can see
+// the line on a run of any length; unset or unreadable: one second.
+double quietTime_s() {
+  static const double t = [] {
+    const char* v = std::getenv("PISTONDYN_PROGRESS_AFTER_S");
+    if (v == nullptr)
+      return kQuiet_s;
+    char* end = nullptr;
+    const double d = std::strtod(v, &end);
+    return (end != v && *end == '\0' && d >= 0.0 && std::isfinite(d)) ? d : kQuiet_s;
+  }();
+  return t;
+}
 constexpr double kTerminalEvery_s = 0.2;  // redraws on a terminal
 constexpr double kPlainEvery_s = 15.0;    // plain lines elsewhere
 
@@ -46,7 +60,7 @@ void ProgressLine::consumeRow(const SimTK::State&, const std::vector<double>& va
   const auto now = Clock::now();
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const double sinceLast = std::chrono::duration<double>(now - lastPrint_).count();
-  if (elapsed < kQuiet_s || sinceLast < (terminal_ ? kTerminalEvery_s : kPlainEvery_s))
+  if (elapsed < quietTime_s() || sinceLast < (terminal_ ? kTerminalEvery_s : kPlainEvery_s))
     return;
   lastPrint_ = now;
   const long total = perCycle_ * cycles_ + 1;

@@ -127,10 +127,14 @@ bool SweepDeckReader::checkKeyPath(const YAML::Node& keyNode, const std::string&
 // written, quoted text stays quoted, lists and sections are written in flow style.
 std::optional<std::string> SweepDeckReader::valueText(const YAML::Node& value,
                                                       const std::string& where) {
-  if (!value.IsDefined() || value.IsNull()) {
+  if (!value.IsDefined()) {
     problems_.push_back(path_ + lineText(value.Mark()) + ": " + where + ": a value is required");
     return std::nullopt;
   }
+  // null (written `null` or `~`) removes the key from the base deck, as --set key=null does
+  // (e.g. film_um when a case sets oil_supply.fully_flooded: true).
+  if (value.IsNull())
+    return std::string("null");
   if (value.IsScalar()) {
     if (value.Tag() != "!") {  // plain (unquoted)
       double v = 0.0;

@@ -742,7 +742,9 @@ std::vector<std::vector<double>> makeLatinHypercube(
   std::mt19937_64 rng(seed);
   std::vector<std::size_t> stratum(n);
   for (std::size_t k = 0; k < ranges.size(); ++k) {
-    const auto [lo, hi] = ranges[k];
+    // Plain variables, not a structured binding: clang 14 (the sanitizer and fuzz build)
+    // cannot capture a binding in the lambda below.
+    const double lo = ranges[k].first, hi = ranges[k].second;
     std::iota(stratum.begin(), stratum.end(), std::size_t{0});
     for (std::size_t i = n - 1; i > 0; --i)  // Fisher-Yates
       std::swap(stratum[i], stratum[uniformIndex(rng, i + 1)]);

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "NumericCsv.h"
 #include "PlotChecks.h"
 #include "ScratchDeck.h"
 #include "pistondyn/mbd_models/SliderCrank.h"
@@ -190,39 +191,10 @@ double finiteNumber(const nlohmann::json& r, const std::string& key) {
   return v;
 }
 
-struct Csv {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
-  std::vector<double> column(const std::string& name) const {
-    const auto it = std::find(columns.begin(), columns.end(), name);
-    if (it == columns.end())
-      throw std::out_of_range(name);
-    std::vector<double> out;
-    for (const auto& r : rows)
-      out.push_back(r[static_cast<std::size_t>(it - columns.begin())]);
-    return out;
-  }
-};
-
+// cycle.csv and the field dumps read back (tests/support/NumericCsv.h).
+using Csv = pistondyn::test::NumericCsv;
 Csv readCsv(const fs::path& p) {
-  Csv c;
-  std::ifstream in(p);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#')
-      continue;
-    std::stringstream ss(line);
-    std::string f;
-    if (c.columns.empty()) {
-      while (std::getline(ss, f, ','))
-        c.columns.push_back(f);
-      continue;
-    }
-    c.rows.emplace_back();
-    while (std::getline(ss, f, ','))
-      c.rows.back().push_back(std::strtod(f.c_str(), nullptr));
-  }
-  return c;
+  return pistondyn::test::readNumericCsv(p);
 }
 
 // One coarse cycle of the gasoline example through the program.

@@ -312,7 +312,7 @@ bool writeFigure(const Figure& fig, const io::ResultFolder& folder, const io::Cy
   const int height = 110 + 360 * static_cast<int>(panels.size());
   gp << "\nset terminal pngcairo size 1200," << height << " noenhanced font 'Sans,11'\n"
      << "set output " << quoted(pngPath) << "\n";
-  const std::string engine = folder.getSummaryValue("inputs.engine_name");
+  const std::string engine = folder.getSummaryValue("inputs.engine.name");
   gp << "set multiplot layout " << panels.size() << ",1 title "
      << twoLines(fig.title + "   (last cycle)", engine) << " font 'Sans,13'\n";
   for (std::size_t p : panels) {
@@ -474,7 +474,7 @@ std::vector<std::string> writeResultPlots(const io::ResultFolder& folder) {
       const std::string staged = files.stage(name);
       names.push_back(name);
       gp << "set lmargin -1\nset rmargin -1\n";
-      writeFieldMap(a, sides, folder.getSummaryValue("inputs.engine_name"), work.path, staged, gp);
+      writeFieldMap(a, sides, folder.getSummaryValue("inputs.engine.name"), work.path, staged, gp);
     }
     if (!gp)
       throw std::runtime_error(script.string() + ": write failed");

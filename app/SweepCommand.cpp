@@ -21,10 +21,11 @@ namespace pistondyn::app {
 // ---- shared with SweepMpi.cpp -----------------------------------------------------------
 
 int checkOutPath(const SweepOptions& options) {
-  std::error_code ec;
-  if (std::filesystem::exists(options.outDir, ec) &&
-      !std::filesystem::is_directory(options.outDir, ec)) {
-    std::cerr << "pistondyn: --out " << options.outDir << " is not a folder\n";
+  if (options.outDir.empty())
+    return kExitOk;  // --list writes nothing
+  if (const std::string problem = findOutputFolderProblem(options.outDir); !problem.empty()) {
+    std::cerr << "pistondyn: --out " << options.outDir << " " << problem
+              << "; nothing was simulated or written\n";
     return kExitUsage;
   }
   return kExitOk;
@@ -150,7 +151,7 @@ class SweepCommand final : public Subcommand {
             "cartesian product, listed cases, Latin hypercube) into DIR, all cores busy")) {
     app_->add_option("SWEEP", options_.sweepDeck,
                      "sweep deck (YAML: base_deck, set, cartesian, cases, latin_hypercube; "
-                     "README.md, Design sweeps)")
+                     "README.md, Design sweeps; installed in share/doc/pistondyn)")
         ->required()
         ->type_name("SWEEP.yaml");
     app_->add_option("--out", options_.outDir,

@@ -19,7 +19,8 @@ struct SweepOptions {
   bool list = false, quiet = false;
 };
 
-// kExitUsage after printing why if --out names something that is not a folder, else 0.
+// kExitUsage after printing why if --out cannot be the sweep's folder (a file, a folder
+// that cannot be created or written: findOutputFolderProblem), else 0.
 int checkOutPath(const SweepOptions& options);
 // The sweep with every case checked, or nullopt after printing every problem on stderr
 // (the caller exits with kExitBadInput).

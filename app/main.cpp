@@ -1,12 +1,14 @@
 // pistondyn command-line program: parses the command line (CLI11) and dispatches to one
 // subcommand per file (RunCommand.cpp, CheckCommand.cpp, PlotCommand.cpp,
-// ReportCommand.cpp, SweepCommand.cpp), each over pistondyn::io.
+// ReportCommand.cpp, SweepCommand.cpp, KeysCommand.cpp), each over
+// pistondyn::io.
 //
 //   pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--quiet] [--no-plot]
 //   pistondyn check DECK.yaml [--set key.path=value]...
 //   pistondyn plot DIR          (figures of a result folder, gnuplot)
 //   pistondyn report DIR        (DIR/report.html, self-contained)
 //   pistondyn sweep SWEEP.yaml --out DIR [--jobs N] [--set key.path=value]... [--list] [--quiet]
+//   pistondyn keys [--markdown] (the deck reference, from io/DeckKeys.h)
 //   pistondyn --help | --version          (and pistondyn <command> --help)
 //
 // Exit codes: 0 success; 1 bad input (deck, table, override) - nothing written;
@@ -32,6 +34,7 @@ const char* kSynopsis =
     "       pistondyn report DIR [--log-level LEVEL]\n"
     "       pistondyn sweep SWEEP.yaml --out DIR [--jobs N] [--set key.path=value]... [--list]\n"
     "                       [--quiet]           (also under mpirun -np K)\n"
+    "       pistondyn keys [--markdown]     (every deck key: unit, default, range)\n"
     "       pistondyn --help | --version | <command> --help\n";
 
 }  // namespace
@@ -40,7 +43,8 @@ int main(int argc, char** argv) {
   using namespace pistondyn::app;
   CLI::App program(
       "pistondyn: piston-assembly dynamics and tribology over whole engine cycles.\n"
-      "Crank angle 0 deg = firing TDC. Deck keys and units: README.md.",
+      "Crank angle 0 deg = firing TDC. Every deck key with its unit, default and range:\n"
+      "`pistondyn keys`.",
       "pistondyn");
   program.set_version_flag("--version", "pistondyn " + pistondyn::io::getVersion(),
                            "print the version and exit");
@@ -57,6 +61,7 @@ int main(int argc, char** argv) {
   commands.push_back(addPlotCommand(program));
   commands.push_back(addReportCommand(program));
   commands.push_back(addSweepCommand(program));
+  commands.push_back(addKeysCommand(program));
 
   // An unknown first word is an unknown command (CLI11 would only say one is required).
   if (argc >= 2 && argv[1][0] != '-') {

@@ -133,8 +133,11 @@ TEST_F(SkirtBadInput, OilSupplyTables) {
 TEST_F(SkirtBadInput, ValuesAndCrossChecks) {
   // A skirt grid wider than the skirt's side.
   expectRejected("--set liner.grid.arc_width_deg=180",
-                 {"--set liner.grid.arc_width_deg: 180 deg makes each side's grid wider than "
-                  "the skirt's side"});
+                 {"--set liner.grid.arc_width_deg: must be at least 10 deg and below 180 deg (got "
+                  "180): 180 deg or more makes each side's grid wider than the skirt's side"});
+  // An arc in radians: the unit that fits is named.
+  expectRejected("--set liner.grid.arc_width_deg=1.4",
+                 {"--set liner.grid.arc_width_deg: must be at least 10 deg", "given in rad"});
   // A clearance in mm read as um.
   expectRejected("--set liner.cold_radial_clearance_um=0.04",
                  {"--set liner.cold_radial_clearance_um: must be between 1 and 500 um"});
@@ -157,7 +160,7 @@ TEST_F(SkirtBadInput, ValuesAndCrossChecks) {
   SetUp();
   // The oil supply: not positive, two ways, none.
   expectRejected("--set liner.oil_supply.film_um=0",
-                 {"--set liner.oil_supply.film_um: must be positive (got 0)"});
+                 {"--set liner.oil_supply.film_um: must be above 0 um and at most 1000 um (got 0)"});
   expectRejected("--set liner.oil_supply.fully_flooded=true",
                  {at("film_um", "liner.oil_supply.film_um"),
                   "give exactly one of fully_flooded: true, film_um, film_file"});

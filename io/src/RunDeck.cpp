@@ -100,6 +100,11 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
       r["fmep_kPa"] = finite("fmep_kPa", o.stats.cycleFmep_Pa.back() / 1e3);
     optional("friction_work_J", f.frictionWork_J);
     optional("friction_power_mean_W", f.frictionPowerMean_W);
+    optional("asperity_friction_work_J", f.asperityFrictionWork_J);
+    // The asperity share of the friction work (the thesis' 0 -> 18 % when starved).
+    if (f.asperityFrictionWork_J && f.frictionWork_J && *f.frictionWork_J > 0.0)
+      r["asperity_friction_work_share"] =
+          finite("asperity_friction_work_share", *f.asperityFrictionWork_J / *f.frictionWork_J);
     optional("min_h_over_sigma_thrust", f.minGapOverSigmaThrust);
     optional("min_h_over_sigma_thrust_crank_angle_deg", f.minGapOverSigmaThrustAngle_deg);
     optional("min_h_over_sigma_antithrust", f.minGapOverSigmaAntiThrust);

@@ -1,8 +1,13 @@
 #include "CommandSupport.h"
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
 #include <iostream>
 
 #include "pistondyn/io/DeckError.h"
+#include "pistondyn/io/DeckReference.h"
 #include "pistondyn/io/LinerRegistry.h"
 
 namespace pistondyn::app {
@@ -26,18 +31,50 @@ std::string deckHelpFooter() {
   std::string models;
   for (const auto& name : io::LinerRegistry::getGlobal().getNames())
     models += "\n  " + name + ": " + io::LinerRegistry::getGlobal().getDescription(name);
+  // The simulation section's defaults, from the key table the deck is read by.
+  std::string defaults, line;
+  for (const io::DeckKey& k : io::getEngineDeckKeys().getKeys()) {
+    if (k.path.rfind("simulation.", 0) != 0)
+      continue;
+    std::string item = k.path.substr(11) + " " + io::describeDefault(k);
+    item.erase(std::remove(item.begin(), item.end(), '`'), item.end());
+    if (line.size() + item.size() + 2 > 88) {
+      defaults += line + ",\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : ", ") + item;
+  }
+  defaults += line;
   return "Deck keys carry their units (bore_mm, speed_rpm, crankcase_pressure_bar, "
          "inertia_kg_mm2, ...);\n--set values are in the key's unit. Crank angle 0 deg = "
-         "firing TDC. Defaults of the\nsimulation section: start_angle_deg 0, cycles 1, "
-         "output_step_deg 1 (must divide 720),\nintegrator rk_merson (rk_feldberg, cpodes_bdf, "
-         "linearly_implicit_bdf2: the lubricated skirt\nneeds an implicit one), accuracy "
-         "1e-9, pose_tolerance_nm 10, max_step_deg 0.5, until_periodic false,\n"
-         "periodic_fmep_tolerance 0.005, periodic_pose_tolerance_um 0.2, gravity_mps2 "
-         "9.80665.\nFull deck reference: README.md.\n"
+         "firing TDC. Defaults of the\nsimulation section (the lubricated skirt needs the "
+         "integrator linearly_implicit_bdf2 or cpodes_bdf):\n" +
+         defaults +
+         ".\nEvery key with its unit, default and range: `pistondyn keys`.\n"
          "liner.model (default ideal_guide):" +
          models +
          "\nExit codes: 0 ok; 1 bad input, nothing written; 2 bad command line; 3 run failed, "
          "nothing written.";
+}
+
+std::string findOutputFolderProblem(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (dir.empty())
+    return "is empty";
+  fs::path p = fs::absolute(dir, ec);
+  if (ec)
+    return "cannot be resolved: " + ec.message();
+  if (fs::exists(p, ec) && !fs::is_directory(p, ec))
+    return "is a file, not a folder";
+  // The folder itself, or the nearest ancestor that exists: the run creates the rest.
+  while (!fs::exists(p, ec) && p.has_parent_path() && p.parent_path() != p)
+    p = p.parent_path();
+  if (!fs::is_directory(p, ec))
+    return "cannot be created: " + p.string() + " is a file, not a folder";
+  if (::access(p.c_str(), W_OK | X_OK) != 0)
+    return "cannot be written: no permission to write in " + p.string();
+  return {};
 }
 
 void addSetOption(CLI::App& command, std::vector<std::string>& overrides) {

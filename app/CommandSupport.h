@@ -17,6 +17,11 @@ namespace pistondyn::app {
 std::optional<io::EngineDeck> loadDeckOrReport(const std::string& deckPath,
                                                const std::vector<std::string>& overrides);
 
+// Why `dir` cannot be the output folder of a run, or "" if it can: it must be a folder
+// this process may write in, or creatable in one (its nearest existing ancestor a writable
+// folder). Checked before simulating, so a bad --out never costs a simulation.
+std::string findOutputFolderProblem(const std::string& dir);
+
 // Adds --set KEY.PATH=VALUE (repeatable, one assignment per occurrence).
 void addSetOption(CLI::App& command, std::vector<std::string>& overrides);
 

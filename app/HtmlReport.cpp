@@ -145,7 +145,7 @@ void animation(std::ostream& html, const io::ResultFolder& f) {
        << (knownClearance ? " (the drawn gap is the hot running clearance at the profile's "
                             "zero-drop point)"
                           : " (no clearance in the results: the drawn gap is schematic)")
-       << (f.getSummaryValue("inputs.liner_model") == "ideal_guide"
+       << (f.getSummaryValue("inputs.liner.model") == "ideal_guide"
                ? "; the ideal guide holds the piston on the bore axis (|u_lat| at most " +
                      io::formatNumber(uMax) + " um)"
                : "")
@@ -273,7 +273,7 @@ double chooseExaggeration(double bore_m, double clearance_m) {
 std::string makeHtmlReport(const io::ResultFolder& f, const std::vector<std::string>& pngPaths,
                            const std::string& plotNote) {
   std::ostringstream html;
-  const std::string engine = f.getSummaryValue("inputs.engine_name");
+  const std::string engine = f.getSummaryValue("inputs.engine.name");
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>pistondyn "
           "report: "
        << escape(engine) << "</title>\n<style>" << kStyle << "</style></head>\n<body>\n";

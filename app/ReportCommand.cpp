@@ -30,8 +30,8 @@ class ReportCommand final : public Subcommand {
         "report.html needs no network: images are embedded (base64), style and script inline.\n"
         "It (re)draws DIR/plots/ first (as pistondyn plot); without gnuplot the page says so\n"
         "and has no figures. The summary table gives every figure of summary.json with its\n"
-        "unit; the inputs are the deck's text (deck_file of summary.json, read from the\n"
-        "current folder if relative) and the resolved inputs in SI. The animation draws the\n"
+        "unit; the inputs are the deck's text (deck_file of summary.json, an absolute path)\n"
+        "and the resolved inputs in SI. The animation draws the\n"
         "piston over the last cycle, lateral motion, clearance and tilt exaggerated by the\n"
         "factor the page states. Exit codes: 0 ok; 1 DIR is not a result folder; 2 bad\n"
         "command line; 3 writing failed.");

@@ -6,94 +6,19 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 
-#include <spdlog/spdlog.h>
 
 #include "Gnuplot.h"
+#include "PlotSupport.h"
 #include "pistondyn/io/ResultWriters.h"
 
 namespace pistondyn::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-// ---- units: a column's unit (from its name) converted to the unit an axis states ----
-
-struct UnitInfo {
-  const char* unit;
-  const char* quantity;
-  double toSI;
-};
-const UnitInfo kUnits[] = {
-    {"N", "force", 1.0},        {"kN", "force", 1e3},     {"Nm", "moment", 1.0},
-    {"m", "length", 1.0},       {"mm", "length", 1e-3},   {"um", "length", 1e-6},
-    {"rad", "angle", 1.0},      {"mrad", "angle", 1e-3},  {"deg", "angle", M_PI / 180.0},
-    {"Pa", "pressure", 1.0},    {"kPa", "pressure", 1e3}, {"MPa", "pressure", 1e6},
-    {"bar", "pressure", 1e5},   {"W", "power", 1.0},      {"kW", "power", 1e3},
-    {"J", "energy", 1.0},       {"mJ", "energy", 1e-3},   {"", "dimensionless", 1.0},
-};
-
-std::optional<double> conversionFactor(const std::string& from, const std::string& to) {
-  const UnitInfo *a = nullptr, *b = nullptr;
-  for (const auto& u : kUnits) {
-    if (from == u.unit)
-      a = &u;
-    if (to == u.unit)
-      b = &u;
-  }
-  if (a == nullptr || b == nullptr || std::string(a->quantity) != b->quantity)
-    return std::nullopt;
-  return a->toSI / b->toSI;
-}
-
-// How an axis label writes a unit.
-std::string displayUnit(const std::string& unit) {
-  if (unit == "um")
-    return "µm";
-  if (unit == "Nm")
-    return "N·m";
-  if (unit == "deg")
-    return "°";
-  if (unit.empty())
-    return "–";
-  return unit;
-}
-
-// The column of output `name` in whatever unit it was written ("side_force" finds
-// side_force_N), with the factor to `unit`; nullopt if absent or not convertible.
-struct Column {
-  std::size_t index;
-  double factor;
-};
-std::optional<Column> findOutput(const io::CsvTable& t, const std::string& name,
-                                 const std::string& unit) {
-  for (std::size_t j = 0; j < t.columns.size(); ++j) {
-    const std::string& c = t.columns[j];
-    std::string written;
-    if (c == name) {
-      written = "";
-    } else if (c.rfind(name + "_", 0) == 0 && io::getColumnUnit(c) == c.substr(name.size() + 1)) {
-      written = c.substr(name.size() + 1);
-    } else {
-      continue;
-    }
-    if (const auto f = conversionFactor(written, unit))
-      return Column{j, *f};
-    spdlog::warn("plot: column {} is not in a unit convertible to '{}'; left out", c, unit);
-    return std::nullopt;
-  }
-  return std::nullopt;
-}
-
-bool hasOutput(const io::CsvTable& t, const std::string& name) {
-  return std::any_of(t.columns.begin(), t.columns.end(), [&](const std::string& c) {
-    return c == name ||
-           (c.rfind(name + "_", 0) == 0 && io::getColumnUnit(c) == c.substr(name.size() + 1));
-  });
-}
+using namespace plot;
 
 // ---- figure descriptions ----------------------------------------------------------
 
@@ -121,30 +46,6 @@ struct Figure {
   std::string requiredOutput;  // the figure is drawn only if this output exists
   std::vector<Panel> panels;
 };
-
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\')
-      out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
-
-// A gnuplot string of two lines (the second may be empty).
-std::string twoLines(const std::string& first, const std::string& second) {
-  const std::string a = quoted(first), b = quoted(second);
-  return second.empty() ? a : a.substr(0, a.size() - 1) + "\\n" + b.substr(1);
-}
-
-std::string number(double v) { return io::formatNumber(v); }
-
-const char* kBlue = "#1f77b4";
-const char* kOrange = "#ff7f0e";
-const char* kGreen = "#2ca02c";
-const char* kRed = "#d62728";
-const char* kPurple = "#9467bd";
 
 std::vector<Figure> describeFigures(const io::ResultFolder& f) {
   std::vector<Figure> figures;
@@ -257,19 +158,6 @@ std::vector<Figure> describeFigures(const io::ResultFolder& f) {
 
 // ---- writing data and scripts ---------------------------------------------------------
 
-void writeTdcMarks(std::ostream& gp) {
-  gp << "set xrange [0:720]\nset xtics 0,90,720 nomirror\nset mxtics 3\n"
-        "set x2range [0:720]\n"
-        "set x2tics (\"firing TDC\" 0, \"gas-exchange TDC\" 360, \"firing TDC\" 720) "
-        "nomirror scale 0\n"
-        "unset arrow\n";
-  for (int a : {0, 360, 720}) {
-    gp << "set arrow from first " << a << ", graph 0 to first " << a
-       << ", graph 1 nohead dt 2 lw 1.2 lc rgb 'gray30'\n";
-  }
-  gp << "set xlabel \"crank angle (°), 0° = firing TDC\"\n";
-}
-
 // One crank-angle figure: its data file and its part of the script.
 bool writeFigure(const Figure& fig, const io::ResultFolder& folder, const io::CycleWindow& w,
                  const fs::path& work, const std::string& pngPath, std::ostream& gp) {
@@ -312,7 +200,7 @@ bool writeFigure(const Figure& fig, const io::ResultFolder& folder, const io::Cy
   const int height = 110 + 360 * static_cast<int>(panels.size());
   gp << "\nset terminal pngcairo size 1200," << height << " noenhanced font 'Sans,11'\n"
      << "set output " << quoted(pngPath) << "\n";
-  const std::string engine = folder.getSummaryValue("inputs.engine_name");
+  const std::string engine = folder.getSummaryValue("inputs.engine.name");
   gp << "set multiplot layout " << panels.size() << ",1 title "
      << twoLines(fig.title + "   (last cycle)", engine) << " font 'Sans,13'\n";
   for (std::size_t p : panels) {
@@ -419,20 +307,6 @@ void writeFieldMap(double angle_deg, const std::vector<const io::FieldDumpFile*>
      << "set key\n";
 }
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string tmpl = (fs::temp_directory_path() / "pistondyn_plot_XXXXXX").string();
-    if (::mkdtemp(tmpl.data()) == nullptr)
-      throw std::runtime_error("cannot create a temporary folder for gnuplot's data");
-    path = tmpl;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
-
 }  // namespace
 
 std::vector<std::string> writeResultPlots(const io::ResultFolder& folder) {
@@ -445,16 +319,12 @@ std::vector<std::string> writeResultPlots(const io::ResultFolder& folder) {
   const fs::path script = work.path / "plots.gp";
   {
     std::ofstream gp(script);
-    gp << "set encoding utf8\nset grid xtics ytics lc rgb 'gray85' lt 1\n"
-          "set key outside right top vertical Left reverse\n"
-          "set lmargin 12\nset rmargin 40\n";
+    gp << getScriptPreamble() << "set rmargin 40\n";
     for (const Figure& fig : describeFigures(folder)) {
       const std::string name = fig.name + ".png";
       std::ostringstream part;
-      const std::string staged = fs::path(files.getDirectory()) / ("." + name + ".partial");
-      if (writeFigure(fig, folder, window, work.path, staged, part)) {
-        if (files.stage(name) != staged)
-          throw std::logic_error("writeResultPlots: staged name differs from ResultFileSet's");
+      if (writeFigure(fig, folder, window, work.path, getStagedPath(files, name), part)) {
+        stageFigure(files, name);
         names.push_back(name);
         gp << part.str();
       }
@@ -474,25 +344,13 @@ std::vector<std::string> writeResultPlots(const io::ResultFolder& folder) {
       const std::string staged = files.stage(name);
       names.push_back(name);
       gp << "set lmargin -1\nset rmargin -1\n";
-      writeFieldMap(a, sides, folder.getSummaryValue("inputs.engine_name"), work.path, staged, gp);
+      writeFieldMap(a, sides, folder.getSummaryValue("inputs.engine.name"), work.path, staged, gp);
     }
     if (!gp)
       throw std::runtime_error(script.string() + ": write failed");
   }
-  spdlog::debug("plot: running {} {}", gnuplot, script.string());
-  runGnuplot(gnuplot, script.string(), (work.path / "gnuplot.log").string());
-  files.commit();
   // The folder holds this run's figures only.
-  std::set<std::string> keep(names.begin(), names.end());
-  for (const auto& e : fs::directory_iterator(plotDir)) {
-    const std::string n = e.path().filename().string();
-    if (e.path().extension() == ".png" && !keep.count(n))
-      fs::remove(e.path());
-  }
-  std::vector<std::string> paths;
-  for (const auto& n : names)
-    paths.push_back((plotDir / n).string());
-  return paths;
+  return drawAndCommit(gnuplot, script, work.path, files, names, "");
 }
 
 }  // namespace pistondyn::app

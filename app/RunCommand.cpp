@@ -112,9 +112,10 @@ class RunCommand final : public Subcommand {
         ->type_name("DIR");
     addSetOption(*app_, overrides_);
     app_->add_flag("--quiet", quiet_,
-                   "no progress line (default: runs longer than 1 s show cycle, crank angle "
-                   "and the estimated time left on stderr; rewritten in place on a terminal, "
-                   "a plain line every 15 s otherwise)");
+                   "no progress line on stderr; the summary on stdout, warnings and errors "
+                   "stay (default: runs longer than 1 s show cycle, crank angle and the "
+                   "estimated time left on stderr; rewritten in place on a terminal, a plain "
+                   "line every 15 s otherwise, never a carriage return)");
     app_->add_flag("--no-plot", noPlot_,
                    "do not draw DIR/plots/*.png after the run (default: drawn with gnuplot, "
                    "as `pistondyn plot DIR`; a missing gnuplot is a warning, the results stay)");
@@ -126,9 +127,9 @@ class RunCommand final : public Subcommand {
   int execute() override {
     setUpLogging(logLevel_);
     // Refuse an unusable output path now, not after the simulation.
-    std::error_code ec;
-    if (std::filesystem::exists(outDir_, ec) && !std::filesystem::is_directory(outDir_, ec)) {
-      std::cerr << "pistondyn: --out " << outDir_ << " is not a folder\n";
+    if (const std::string problem = findOutputFolderProblem(outDir_); !problem.empty()) {
+      std::cerr << "pistondyn: --out " << outDir_ << " " << problem
+                << "; nothing was simulated or written\n";
       return kExitUsage;
     }
     const auto deck = loadDeckOrReport(deck_, overrides_);

@@ -39,5 +39,7 @@ std::unique_ptr<Subcommand> addCheckCommand(CLI::App& program);
 std::unique_ptr<Subcommand> addPlotCommand(CLI::App& program);
 std::unique_ptr<Subcommand> addReportCommand(CLI::App& program);
 std::unique_ptr<Subcommand> addSweepCommand(CLI::App& program);
+std::unique_ptr<Subcommand> addKeysCommand(CLI::App& program);
+std::unique_ptr<Subcommand> addStudyCommand(CLI::App& program);
 
 }  // namespace pistondyn::app

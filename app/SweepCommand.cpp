@@ -12,6 +12,7 @@
 #include <iostream>
 
 #include "CommandSupport.h"
+#include "ComparisonPlots.h"
 #include "Subcommand.h"
 #include "SweepSupport.h"
 #include "pistondyn/io/DeckError.h"
@@ -21,10 +22,11 @@ namespace pistondyn::app {
 // ---- shared with SweepMpi.cpp -----------------------------------------------------------
 
 int checkOutPath(const SweepOptions& options) {
-  std::error_code ec;
-  if (std::filesystem::exists(options.outDir, ec) &&
-      !std::filesystem::is_directory(options.outDir, ec)) {
-    std::cerr << "pistondyn: --out " << options.outDir << " is not a folder\n";
+  if (options.outDir.empty())
+    return kExitOk;  // --list writes nothing
+  if (const std::string problem = findOutputFolderProblem(options.outDir); !problem.empty()) {
+    std::cerr << "pistondyn: --out " << options.outDir << " " << problem
+              << "; nothing was simulated or written\n";
     return kExitUsage;
   }
   return kExitOk;
@@ -111,6 +113,54 @@ int reportSweep(const SweepOptions& options, const io::SweepPlan& plan, const io
   return kExitOk;
 }
 
+std::vector<io::SweepCaseResult> runCasesHere(const SweepOptions& options,
+                                              const io::SweepPlan& plan, io::SweepOutcome& outcome,
+                                              double& wallTime_s) {
+  const int jobs = options.jobs > 0 ? options.jobs : io::getAvailableCores();
+  const auto start = std::chrono::steady_clock::now();
+  const io::SweepOutputState state = io::openSweepOutput(plan, options.outDir);
+  const int threads = std::max(1, std::min<int>(jobs, static_cast<int>(state.toRun.size())));
+  printSweepStart(options, plan, state,
+                  std::to_string(threads) + (threads == 1 ? " thread" : " threads"));
+  std::vector<io::SweepCaseResult> results = state.complete;
+  // Called on this thread (io::runSweep collects the pool's results here).
+  auto progress = [&](const io::SweepCaseResult& r, int done, int total) {
+    printCaseDone(options, plan, r, done, total, "");
+    results.push_back(r);
+  };
+  outcome = io::runSweep(plan, options.outDir, state, jobs, progress);
+  wallTime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return results;
+}
+
+void drawComparisonPlots(const SweepOptions& options, const io::StudyComparison& comparison) {
+  std::vector<ComparisonCase> cases;
+  for (const auto& row : comparison.rows) {
+    if (!row.ok)
+      continue;
+    cases.push_back({io::describeCase(comparison, row), {}});
+    cases.back().folder.directory = (std::filesystem::path(options.outDir) / row.folder).string();
+  }
+  if (cases.size() > kMaxComparedCases) {
+    std::printf("  no comparison figures: %zu cases finished, more than the %zu curves a figure "
+                "can tell apart (sweep.csv holds every case)\n",
+                cases.size(), kMaxComparedCases);
+    return;
+  }
+  try {
+    for (auto& c : cases)
+      c.folder = io::readResultFolder(c.folder.directory);
+    const std::string title = comparison.name.empty() ? comparison.studyDeckPath : comparison.name;
+    const auto files = writeComparisonPlots(cases, options.outDir, title);
+    std::printf("  and %zu comparison figures (%s/plots/comparison_*.png)\n", files.size(),
+                options.outDir.c_str());
+  } catch (const std::exception& e) {
+    std::fflush(stdout);
+    std::cerr << "pistondyn: warning: no comparison figures (the results are written): "
+              << e.what() << "\n";
+  }
+}
+
 namespace {
 
 // The launcher's size variable, if any (OpenMPI, MPICH / Hydra and PMI, Slurm with PMIx).
@@ -150,7 +200,7 @@ class SweepCommand final : public Subcommand {
             "cartesian product, listed cases, Latin hypercube) into DIR, all cores busy")) {
     app_->add_option("SWEEP", options_.sweepDeck,
                      "sweep deck (YAML: base_deck, set, cartesian, cases, latin_hypercube; "
-                     "README.md, Design sweeps)")
+                     "README.md, Design sweeps; installed in share/doc/pistondyn)")
         ->required()
         ->type_name("SWEEP.yaml");
     app_->add_option("--out", options_.outDir,
@@ -168,6 +218,10 @@ class SweepCommand final : public Subcommand {
     app_->add_flag("--list", options_.list,
                    "check the sweep and every case, print the cases (CSV), run nothing");
     app_->add_flag("--quiet", options_.quiet, "no progress lines (default: one line per case)");
+    app_->add_flag("--no-plot", options_.noPlot,
+                   "no comparison figures (default: DIR/plots/comparison_*.png with gnuplot, "
+                   "one curve per case, when at most 12 cases finished; a missing gnuplot is "
+                   "a warning)");
     app_->set_help_flag("-h,--help", "print this help and exit");
     app_->footer(
         "Every case is checked against the base deck before anything runs. Cases run with "
@@ -215,20 +269,14 @@ class SweepCommand final : public Subcommand {
       printCaseList(*plan);
       return kExitOk;
     }
-    const int jobs = options_.jobs > 0 ? options_.jobs : io::getAvailableCores();
-    const auto start = std::chrono::steady_clock::now();
     try {
-      const io::SweepOutputState state = io::openSweepOutput(*plan, options_.outDir);
-      const int threads = std::max(1, std::min<int>(jobs, static_cast<int>(state.toRun.size())));
-      printSweepStart(options_, *plan, state,
-                      std::to_string(threads) + (threads == 1 ? " thread" : " threads"));
-      auto progress = [&](const io::SweepCaseResult& r, int done, int total) {
-        printCaseDone(options_, *plan, r, done, total, "");
-      };
-      const io::SweepOutcome outcome = io::runSweep(*plan, options_.outDir, state, jobs, progress);
-      const double wall =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      return reportSweep(options_, *plan, outcome, wall);
+      io::SweepOutcome outcome;
+      double wall = 0.0;
+      const auto results = runCasesHere(options_, *plan, outcome, wall);
+      const int code = reportSweep(options_, *plan, outcome, wall);
+      if (!options_.noPlot)
+        drawComparisonPlots(options_, io::makeStudyComparison(*plan, results));
+      return code;
     } catch (const io::SweepOutputError& e) {
       std::cerr << "pistondyn: --out " << e.what() << "; nothing was simulated or written\n";
       return kExitUsage;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "pistondyn/io/StudyComparison.h"
 #include "pistondyn/io/SweepDeck.h"
 #include "pistondyn/io/SweepRun.h"
 
@@ -16,10 +17,11 @@ struct SweepOptions {
   std::string sweepDeck, outDir;
   std::vector<std::string> overrides;  // --set, shared by every case
   int jobs = 0;                        // 0: the default (cores; 1 per MPI rank)
-  bool list = false, quiet = false;
+  bool list = false, quiet = false, noPlot = false;
 };
 
-// kExitUsage after printing why if --out names something that is not a folder, else 0.
+// kExitUsage after printing why if --out cannot be the sweep's folder (a file, a folder
+// that cannot be created or written: findOutputFolderProblem), else 0.
 int checkOutPath(const SweepOptions& options);
 // The sweep with every case checked, or nullopt after printing every problem on stderr
 // (the caller exits with kExitBadInput).
@@ -35,6 +37,19 @@ void printCaseDone(const SweepOptions& options, const io::SweepPlan& plan,
 // The closing report on stdout; returns kExitOk or kExitSomeCasesFailed.
 int reportSweep(const SweepOptions& options, const io::SweepPlan& plan,
                 const io::SweepOutcome& outcome, double wallTime_s);
+
+// The cases run in this process, threads and one model each (io::runSweep), with every
+// case's result (those complete from an earlier run included): what `sweep` and `study`
+// share. Prints the start line and a line per case (unless quiet); `outcome` and
+// `wallTime_s` for reportSweep(). Throws as io::runSweep.
+std::vector<io::SweepCaseResult> runCasesHere(const SweepOptions& options,
+                                              const io::SweepPlan& plan, io::SweepOutcome& outcome,
+                                              double& wallTime_s);
+
+// Comparison figures of the cases that finished (ComparisonPlots.h) in DIR/plots/: at most
+// kMaxComparedCases, else none (said on stdout). A failure (gnuplot missing, say) is a
+// warning: the results are complete. Prints what was written.
+void drawComparisonPlots(const SweepOptions& options, const io::StudyComparison& comparison);
 
 // True when this process was started by mpirun / srun (the launcher's environment).
 bool isMpiLaunch();

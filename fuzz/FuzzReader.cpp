@@ -123,17 +123,17 @@ void checkResult(const pistondyn::mbd::CylinderPressureCurve& c) {
 }
 
 // EngineDeck.h: what `pistondyn check` does after loading (checked by loadAndCheckDeck).
-// Every number the liner's factory read (liner.*, in SI) is finite, so no table or key
-// reaches the model as NaN or Inf.
+// Every number the deck's readers read (in SI; the liner's keys included) is finite, so no
+// table or key reaches the model as NaN or Inf.
 void checkResult(const io::EngineDeck& deck) {
   require(deck.cylinderPressure != nullptr, "an accepted deck has no pressure curve");
   require(static_cast<bool>(deck.makeLinerElement), "an accepted deck has no liner maker");
-  for (const io::ResolvedInput& in : deck.linerInputs) {
+  for (const io::ResolvedInput& in : deck.inputs) {
     if (const auto* x = std::get_if<double>(&in.value))
-      require(std::isfinite(*x), "liner input " + in.siPath + " is not finite");
+      require(std::isfinite(*x), "input " + in.siPath + " is not finite");
     if (const auto* v = std::get_if<std::vector<double>>(&in.value)) {
       for (const double x : *v)
-        require(std::isfinite(x), "liner input " + in.siPath + " has a non-finite value");
+        require(std::isfinite(x), "input " + in.siPath + " has a non-finite value");
     }
   }
   for (const double a : deck.fieldDumpAngles_deg)

@@ -6,7 +6,8 @@
 // each of its preconditioners (sparse direct, multigrid) and, for Reynolds, also at 16x the node
 // count (256 x 192) to show the trend.
 //
-// Scenario (numbers of the thesis' engine and parameter study, thesis-summary.txt): bore
+// Scenario (numbers of the thesis' engine and parameter study: J. Dluhoš, Advanced Solution to
+// Piston Assembly Dynamics, doctoral thesis summary, Brno University of Technology): bore
 // 65.1 mm, stroke 47.7 mm, rod 80 mm (assumed), 2000 rpm, radial clearance 53 um; thrust-side
 // skirt arc +-40 deg, skirt length 25 mm, barrel profile 20 um (top) / 35 um (bottom) around
 // its widest point at 55 % of the length, ovality 60 um sin^2; prescribed secondary motion

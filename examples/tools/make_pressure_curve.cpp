@@ -12,7 +12,8 @@
 // With --target-imep-kPa the heat Q_tot is found by the secant method so that the
 // net imep (closed integral of p dV over V_d, trapezoid at 0.01 deg) hits the target.
 //
-// Usage: make_pressure_curve --bore-mm B --stroke-mm S --rod-mm L --cr CR
+// Usage (make_pressure_curve --help prints the options with units and defaults):
+//        make_pressure_curve --bore-mm B --stroke-mm S --rod-mm L --cr CR
 //          [--pin-offset-mm e] [--crank-offset-mm e] [--k 1.30] [--p-int-bar 1.0]
 //          [--p-exh-bar 1.05] [--ivc-deg 580] [--evo-deg 140] [--soc-deg -15]
 //          [--burn-deg 50] [--target-imep-kPa X] [--step-deg 0.5] --out FILE.csv
@@ -107,7 +108,38 @@ double netImep_Pa(const std::vector<double>& pr, const pistondyn::mbd::CylinderV
   return w / vol.displacement_m3();
 }
 
-bool parse(int argc, char** argv, Params& p) {
+const char* kHelp =
+    "make_pressure_curve: writes a cylinder-pressure table (CSV crank_angle_deg,pressure_bar,\n"
+    "absolute; crank angle 0 deg = firing TDC, 720 deg cycle) from a single-zone model: a\n"
+    "polytropic closed cycle IVC -> EVO with a Wiebe heat release (a = 6.908, m = 2; none:\n"
+    "motored), cosine blow-down to the exhaust pressure, exhaust and intake strokes at their\n"
+    "pressures. The table is what a deck's gas.cylinder_pressure_file reads.\n"
+    "\n"
+    "usage: make_pressure_curve --bore-mm B --stroke-mm S --rod-mm L --cr CR --out FILE.csv\n"
+    "                           [options]\n"
+    "  --bore-mm B           cylinder bore [mm] (required)\n"
+    "  --stroke-mm S         stroke = twice the crank radius [mm] (required)\n"
+    "  --rod-mm L            connecting-rod length [mm] (required)\n"
+    "  --cr CR               compression ratio, > 1 (required)\n"
+    "  --out FILE.csv        the table to write (required)\n"
+    "  --pin-offset-mm e     pin offset, + towards thrust [mm] (default 0)\n"
+    "  --crank-offset-mm e   crank offset, + towards thrust [mm] (default 0)\n"
+    "  --k K                 effective polytropic exponent, heat loss lumped in (default 1.30)\n"
+    "  --p-int-bar P         intake pressure [bar] (default 1.0)\n"
+    "  --p-exh-bar P         exhaust pressure [bar] (default 1.05)\n"
+    "  --ivc-deg A           intake valve closing [deg] (default 580)\n"
+    "  --evo-deg A           exhaust valve opening [deg] (default 140)\n"
+    "  --soc-deg A           start of combustion [deg from firing TDC] (default -15)\n"
+    "  --burn-deg A          combustion duration [deg] (default 50)\n"
+    "  --target-imep-kPa X   find the heat release that gives this net imep [kPa] (default:\n"
+    "                        none, motored)\n"
+    "  --step-deg A          table step [deg], a multiple of 0.01 (default 0.5)\n"
+    "  -h, --help            print this help and exit\n"
+    "The file's header records the command and the resulting heat release and imep.\n"
+    "Exit codes: 0 ok; 1 the file could not be written; 2 bad arguments.\n";
+
+// Parses the arguments; false with `problem` set if they are bad.
+bool parse(int argc, char** argv, Params& p, std::string& problem) {
   const std::map<std::string, double*> num = {{"--bore-mm", &p.bore_mm},
                                               {"--stroke-mm", &p.stroke_mm},
                                               {"--rod-mm", &p.rod_mm},
@@ -124,30 +156,51 @@ bool parse(int argc, char** argv, Params& p) {
                                               {"--target-imep-kPa", &p.targetImep_kPa},
                                               {"--step-deg", &p.step_deg}};
   for (int i = 1; i < argc; i += 2) {
-    if (i + 1 >= argc)
+    if (num.count(argv[i]) == 0 && std::strcmp(argv[i], "--out") != 0) {
+      problem = std::string("unknown option ") + argv[i];
       return false;
+    }
+    if (i + 1 >= argc) {
+      problem = std::string(argv[i]) + " needs a value";
+      return false;
+    }
     if (std::strcmp(argv[i], "--out") == 0) {
       p.out = argv[i + 1];
-    } else if (num.count(argv[i]) != 0) {
-      char* end = nullptr;
-      *num.at(argv[i]) = std::strtod(argv[i + 1], &end);
-      if (*end != '\0')
-        return false;
-    } else {
+      continue;
+    }
+    char* end = nullptr;
+    *num.at(argv[i]) = std::strtod(argv[i + 1], &end);
+    if (*end != '\0' || end == argv[i + 1] || !std::isfinite(*num.at(argv[i]))) {
+      problem = std::string(argv[i]) + " " + argv[i + 1] + ": not a number";
       return false;
     }
   }
-  return p.bore_mm > 0 && p.stroke_mm > 0 && p.rod_mm > 0 && p.cr > 1 && !p.out.empty();
+  if (!(p.bore_mm > 0 && p.stroke_mm > 0 && p.rod_mm > 0)) {
+    problem = "--bore-mm, --stroke-mm and --rod-mm are required and must be positive";
+  } else if (!(p.cr > 1)) {
+    problem = "--cr is required and must be greater than 1";
+  } else if (p.out.empty()) {
+    problem = "--out FILE.csv is required";
+  } else if (!(p.step_deg >= kFine_deg)) {
+    problem = "--step-deg must be at least 0.01";
+  }
+  return problem.empty();
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "-h") == 0 || std::strcmp(argv[i], "--help") == 0) {
+      std::fputs(kHelp, stdout);
+      return 0;
+    }
+  }
   Params p;
-  if (!parse(argc, argv, p)) {
-    std::fprintf(stderr,
-                 "make_pressure_curve: bad arguments; see the comment at the top of "
-                 "examples/tools/make_pressure_curve.cpp\n");
+  std::string problem;
+  if (!parse(argc, argv, p, problem)) {
+    std::fprintf(stderr, "make_pressure_curve: %s (make_pressure_curve --help: the options)\n",
+                 problem.c_str());
     return 2;
   }
   pistondyn::mbd::CrankTrainGeometry g;
@@ -178,6 +231,10 @@ int main(int argc, char** argv) {
   const double imep = netImep_Pa(pr, vol);
 
   std::ofstream out(p.out);
+  if (!out) {
+    std::fprintf(stderr, "make_pressure_curve: cannot write %s\n", p.out.c_str());
+    return 1;
+  }
   out << "# Generated by examples/tools/make_pressure_curve (single-zone model, see its header)\n";
   out << "# command:";
   for (int i = 1; i < argc; ++i)
@@ -192,7 +249,12 @@ int main(int argc, char** argv) {
     std::snprintf(buf, sizeof buf, "%.10g,%.8g\n", i * kFine_deg, pr[i] / 1e5);
     out << buf;
   }
+  out.close();
+  if (!out) {
+    std::fprintf(stderr, "make_pressure_curve: writing %s failed\n", p.out.c_str());
+    return 1;
+  }
   std::printf("make_pressure_curve: wrote %s, Q_tot %.3f J, net imep %.4f kPa\n", p.out.c_str(), q,
               imep / 1e3);
-  return out ? 0 : 1;
+  return 0;
 }

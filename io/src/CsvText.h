@@ -50,6 +50,22 @@ inline bool isFolder(const std::string& path) {
   return std::filesystem::is_directory(path, ec);
 }
 
+// A CSV field as the writers put it (sweep.csv, comparison.csv): quoted when it holds a
+// comma, a quote, a line break or surrounding blanks, quotes doubled.
+inline std::string csvField(const std::string& text) {
+  const bool quote = text.find_first_of(",\"\n\r") != std::string::npos ||
+                     (!text.empty() && (text.front() == ' ' || text.back() == ' '));
+  if (!quote)
+    return text;
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"')
+      out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
 // Removes a UTF-8 byte-order mark at the start of the first line.
 inline void stripBom(std::string& line) {
   if (line.rfind("\xEF\xBB\xBF", 0) == 0)

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "pistondyn/plugin/LubricatedSkirtElement.h"
+
 namespace pistondyn::io {
 namespace {
 
@@ -75,6 +77,8 @@ void CycleSummarySink::resetCycle() {
   timeAtCycleStart_s_ = timeAtCycleEnd_s_ = 0.0;
   workAtCycleStart_J_.reset();
   workAtCycleEnd_J_.reset();
+  asperityWorkAtCycleStart_J_.reset();
+  asperityWorkAtCycleEnd_J_.reset();
 }
 
 void CycleSummarySink::discardRows() {
@@ -97,6 +101,11 @@ void CycleSummarySink::consumeRow(const SimTK::State& state, const std::vector<d
     (k == 0 ? timeAtCycleStart_s_ : timeAtCycleEnd_s_) = state.getTime();
     if (liner_ != nullptr)
       (k == 0 ? workAtCycleStart_J_ : workAtCycleEnd_J_) = liner_->getFrictionWork_J(state);
+    // The skirt integrates its asperity friction work too (not part of the liner role).
+    if (const auto* skirt = dynamic_cast<const plugin::LubricatedSkirtElement*>(liner_)) {
+      (k == 0 ? asperityWorkAtCycleStart_J_ : asperityWorkAtCycleEnd_J_) =
+          skirt->getAsperityFrictionWork_J(state);
+    }
   }
   // Slap events: a change of the last completed event's energy since the previous row is
   // an event completed in between (the closing row's change belongs to this cycle).
@@ -193,6 +202,8 @@ void CycleSummarySink::endRun() {
       if (duration_s > 0.0)
         f.frictionPowerMean_W = *f.frictionWork_J / duration_s;
     }
+    if (asperityWorkAtCycleStart_J_ && asperityWorkAtCycleEnd_J_)
+      f.asperityFrictionWork_J = *asperityWorkAtCycleEnd_J_ - *asperityWorkAtCycleStart_J_;
     if (slap_.valid)
       f.slapEnergyMax_J = slap_.max_J;
     f.hotRunningClearance_m = liner_->getHotRunningClearance_m();

@@ -261,6 +261,94 @@ std::string DeckSection::getChoiceOr(const std::string& key,
   return v.value_or(fallback);
 }
 
+// ---- keys of the key table -------------------------------------------------------------
+
+std::string DeckSection::relativeKey(const DeckKey& key) const {
+  if (path_.empty())
+    return key.path;
+  if (key.path.rfind(path_ + ".", 0) != 0)
+    throw std::logic_error("DeckSection '" + path_ + "': the key " + key.path +
+                           " is not in this section");
+  return key.path.substr(path_.size() + 1);
+}
+
+std::optional<double> DeckSection::readKey(const DeckKey& key, bool convert) {
+  const std::string rel = relativeKey(key);
+  const std::optional<UnitSuffix> unit = key.getUnit();
+  if (convert && !unit)
+    throw std::logic_error("DeckSection::getSI: the key " + key.path + " has no unit");
+  const std::optional<double> v = deck_->readKeyNumber(key);
+  if (!v)
+    return std::nullopt;
+  if (!convert) {
+    record(rel, rel, *v);
+    return v;
+  }
+  const double si = toSI(*v, *unit);
+  if (!std::isfinite(si)) {
+    addProblem(rel, overflowMessage(*v, *unit));
+    return std::nullopt;
+  }
+  record(rel, toSIKey(rel, *unit), si);
+  return si;
+}
+
+double DeckSection::getSI(const DeckKey& key) {
+  if (const auto v = readKey(key, true))
+    return *v;
+  const auto unit = key.getUnit();
+  return key.defaultValue && unit ? toSI(*key.defaultValue, *unit) : 1.0;
+}
+
+std::optional<double> DeckSection::getOptionalSI(const DeckKey& key) {
+  return readKey(key, true);
+}
+
+double DeckSection::getNumber(const DeckKey& key) {
+  return readKey(key, false).value_or(key.defaultValue.value_or(1.0));
+}
+
+std::optional<double> DeckSection::getOptionalNumber(const DeckKey& key) {
+  return readKey(key, false);
+}
+
+long DeckSection::getInteger(const DeckKey& key) {
+  const std::string rel = relativeKey(key);
+  const std::optional<double> v = deck_->readKeyNumber(key);
+  if (v)
+    record(rel, rel, static_cast<long>(*v));
+  return static_cast<long>(v.value_or(key.defaultValue.value_or(key.valid.minimum)));
+}
+
+bool DeckSection::getBool(const DeckKey& key) {
+  const std::string rel = relativeKey(key);
+  const bool fallback = key.defaultValue.value_or(0.0) != 0.0;
+  const bool present = has(rel);
+  const auto v = deck_->readBool(key.path, key.required);
+  if (v || !present)
+    record(rel, rel, v.value_or(fallback));
+  return v.value_or(fallback);
+}
+
+std::string DeckSection::getString(const DeckKey& key) {
+  const std::string rel = relativeKey(key);
+  const bool present = has(rel);
+  const auto v = deck_->readString(key.path, key.required);
+  if (v || (!present && !key.required))
+    record(rel, rel, v.value_or(key.defaultText));
+  return v.value_or(key.defaultText);
+}
+
+std::string DeckSection::getChoice(const DeckKey& key) {
+  const std::string rel = relativeKey(key);
+  const bool present = has(rel);
+  const auto v = readChoice(rel, key.choices, key.required);
+  if (!v && !present && !key.required)
+    record(rel, rel, key.defaultText);
+  return v.value_or(key.defaultText.empty() && !key.choices.empty() ? key.choices[0]
+                                                                     : key.defaultText);
+}
+
 // ---- files -----------------------------------------------------------------------------
 
 std::optional<std::string> DeckSection::getOptionalFilePath(const std::string& key) {
@@ -284,7 +372,10 @@ std::optional<std::string> DeckSection::getOptionalFilePath(const std::string& k
     addProblem(key, "cannot open '" + path + "' (relative paths start at the deck's folder)");
     return std::nullopt;
   }
-  record(key, key, path);
+  // summary.json names the file wherever the run was started from.
+  std::error_code absoluteError;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, absoluteError);
+  record(key, key, absoluteError ? path : absolute.lexically_normal().string());
   return path;
 }
 

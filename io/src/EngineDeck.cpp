@@ -1,10 +1,15 @@
 #include "pistondyn/io/EngineDeck.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <optional>
 
 #include "pistondyn/common/Validation.h"
 #include "pistondyn/io/DeckError.h"
+#include "pistondyn/io/DeckKeys.h"
 #include "pistondyn/io/DeckSection.h"
+#include "pistondyn/io/LubricatedSkirtDeck.h"
 #include "pistondyn/io/PressureTableCsv.h"
 #include "pistondyn/io/YamlDeck.h"
 #include "pistondyn/plugin/GasForceElement.h"
@@ -13,17 +18,38 @@
 namespace pistondyn::io {
 namespace {
 
-constexpr double kMm = 1e-3;     // mm -> m
-constexpr double kGram = 1e-3;   // g -> kg
-constexpr double kKgMm2 = 1e-6;  // kg mm^2 -> kg m^2
-constexpr double kBar = 1e5;     // bar -> Pa
-using Sign = YamlDeck::Sign;
+constexpr double kMm = 1e-3;  // mm -> m
 
-mbd::PlanarMassProperties readBody(YamlDeck& d, const std::string& section) {
+// A key of the engine deck's table (DeckKeys.h): its requirement, default and ranges.
+const DeckKey& key(const std::string& path) {
+  return getEngineDeckKeys().at(path);
+}
+
+mbd::PlanarMassProperties readBody(DeckSection& root, const std::string& section) {
   mbd::PlanarMassProperties b;
-  b.mass_kg = d.getNumber(section + ".mass_g", Sign::Positive) * kGram;
-  b.inertiaZZ_kgm2 = d.getNumber(section + ".inertia_kg_mm2", Sign::NonNegative) * kKgMm2;
+  b.mass_kg = root.getSI(key(section + ".mass_g"));
+  b.inertiaZZ_kgm2 = root.getSI(key(section + ".inertia_kg_mm2"));
   return b;
+}
+
+// The crank drive. A free crank's flywheel and load torque are ignored by a constant-speed
+// drive: given with one they are an error, never silently dropped.
+void readDrive(DeckSection& root, mbd::CrankDrive& drive) {
+  YamlDeck& d = root.getDeck();
+  const std::string mode = root.getChoice(key("drive.mode"));
+  drive.mode = mode == "free" ? mbd::CrankDrive::Mode::Free : mbd::CrankDrive::Mode::ConstantSpeed;
+  // 1 .. 50,000 rpm: near zero speed one cycle would take forever to simulate.
+  drive.speed_radps = root.getSI(key("drive.speed_rpm"));
+  drive.flywheelInertia_kgm2 = root.getSI(key("drive.flywheel_inertia_kg_m2"));
+  drive.loadTorque_Nm = root.getSI(key("drive.load_torque_Nm"));
+  if (mode == "constant_speed") {
+    for (const char* path : {"drive.flywheel_inertia_kg_m2", "drive.load_torque_Nm"}) {
+      if (d.has(path))
+        d.addProblem(path,
+                     "is read only with drive.mode: free; the constant-speed drive (the "
+                     "default) ignores it: remove it, or set drive.mode: free");
+    }
+  }
 }
 
 // liner.model through the registry: the model's factory reads the rest of the section.
@@ -35,7 +61,7 @@ void readLiner(YamlDeck& d, const LinerRegistry& registry, EngineDeck& deck,
   DeckSection liner = d.getSection("liner");
   const std::string kModelKey = "liner.model";
   const bool given = d.has(kModelKey);
-  const std::optional<std::string> requested = d.readString(kModelKey, false);
+  const std::optional<std::string> requested = d.readString(key(kModelKey).path, false);
   if (given && (!requested || !registry.has(*requested))) {
     if (requested) {
       std::string list;
@@ -47,7 +73,8 @@ void readLiner(YamlDeck& d, const LinerRegistry& registry, EngineDeck& deck,
     d.ignoreSection("liner");
     return;
   }
-  deck.linerModel = requested.value_or("ideal_guide");
+  deck.linerModel = requested.value_or(key(kModelKey).defaultText);
+  d.recordInput({kModelKey, kModelKey, deck.linerModel});
   const std::optional<std::string> inFile = d.getFileValue(kModelKey);
   if (inFile && *inFile != deck.linerModel)
     d.ignoreFileKeys("liner");
@@ -63,12 +90,56 @@ void readLiner(YamlDeck& d, const LinerRegistry& registry, EngineDeck& deck,
                                 "' could not read its section: " + e.what());
   }
   for (const auto& in : d.getResolvedInputs()) {
-    if (in.path.rfind("liner.", 0) == 0)
+    if (in.path.rfind("liner.", 0) == 0 && in.path != kModelKey)
       deck.linerInputs.push_back(in);
   }
   if (context.tertiaryMotion)
     deck.engine.tertiaryMotion = *context.tertiaryMotion;
   deck.fieldDumpAngles_deg = context.fieldDumpAngles_deg;
+}
+
+// The cylinder-pressure table, with its problems under the key that names it, and the
+// plausibility of its peak (a table in Pa labelled bar gives an imep of 60 million kPa).
+mbd::CylinderPressureCurve readCylinderPressure(const YamlDeck& d, const std::string& path) {
+  const DeckKey& k = key("gas.cylinder_pressure_file");
+  const std::string where = d.where(k.path) + ": ";
+  std::string unit;
+  std::optional<mbd::CylinderPressureCurve> curve;
+  try {
+    curve.emplace(readPressureTableCsv(path, &unit));
+  } catch (const DeckError& e) {
+    std::string message = e.what(), out;
+    for (std::size_t b = 0; b <= message.size();) {
+      const std::size_t end = std::min(message.find('\n', b), message.size());
+      out += (out.empty() ? "" : "\n") + where + message.substr(b, end - b);
+      b = end + 1;
+    }
+    throw DeckError(out);
+  }
+  const double peak_bar = curve->getPeakPressure_Pa() / 1e5;
+  if (k.plausible && !k.plausible->contains(peak_bar) && !d.isImplausibleAllowed(k.path)) {
+    // The header's unit that would make the peak plausible.
+    static const std::vector<std::pair<std::string, double>> units = {
+        {"Pa", 1e-5}, {"kPa", 1e-2}, {"bar", 1.0}, {"MPa", 10.0}};
+    double toBar = 1.0;
+    for (const auto& u : units)
+      toBar = u.first == unit ? u.second : toBar;
+    const double written = peak_bar / toBar;
+    std::string hint;
+    for (const auto& u : units) {
+      if (u.first != unit && k.plausible->contains(written * u.second))
+        hint += (hint.empty() ? "" : " or ") + u.first;
+    }
+    throw DeckError(
+        where + path + ": the peak pressure is " + common::formatNumber(peak_bar) +
+        " bar, outside the plausible " + common::formatNumber(k.plausible->minimum) + " .. " +
+        common::formatNumber(k.plausible->maximum) + " bar of an engine's cylinder" +
+        (hint.empty() ? std::string()
+                      : "; the header says pressure_" + unit + ": are the numbers in " + hint +
+                            "?") +
+        " (if the table is right, list the key under " + kAllowImplausibleKey + ")");
+  }
+  return std::move(*curve);
 }
 
 using Settings = plugin::SimulationSettings;
@@ -77,12 +148,20 @@ using Settings = plugin::SimulationSettings;
 void readSimulation(YamlDeck& d, const LinerDeckContext& liner, const std::string& linerModel,
                     EngineDeck& deck) {
   Settings& s = deck.simulation;
-  s.startAngle_deg =
-      d.getNumberInRange("simulation.start_angle_deg", false, -720.0, 720.0, "deg").value_or(0.0);
-  s.cycles = static_cast<int>(d.getIntegerOr("simulation.cycles", 1, 1, Settings::kMaxCycles));
-  s.outputStep_deg = d.getNumberInRange("simulation.output_step_deg", false,
-                                        Settings::kMinOutputStep_deg, 720.0, "deg")
-                         .value_or(1.0);
+  DeckSection root = d.getSection("");
+  // Each section of the table is a section (`drive: [1, 2]` is that problem, once; the
+  // liner's is checked where it is read).
+  std::vector<std::string> sections = {"liner"};
+  for (const DeckKey& k : getEngineDeckKeys().getKeys()) {
+    const std::string section = k.path.substr(0, k.path.find('.'));
+    if (std::find(sections.begin(), sections.end(), section) == sections.end()) {
+      sections.push_back(section);
+      d.getSection(section);
+    }
+  }
+  s.startAngle_deg = root.getNumber(key("simulation.start_angle_deg"));
+  s.cycles = static_cast<int>(root.getInteger(key("simulation.cycles")));
+  s.outputStep_deg = root.getNumber(key("simulation.output_step_deg"));
   if (!s.outputStepDividesCycle()) {
     d.addProblem("simulation.output_step_deg", "must divide 720 deg into a whole number of steps");
   } else if (s.outputStepsPerCycle() * s.cycles > Settings::kMaxRows) {
@@ -91,32 +170,22 @@ void readSimulation(YamlDeck& d, const LinerDeckContext& liner, const std::strin
                      std::to_string(static_cast<long>(Settings::kMaxRows)) +
                      " output rows; use a coarser step");
   }
-  const std::vector<std::pair<std::string, Settings::Integrator>> integrators = {
+  const std::string integ = root.getChoice(key("simulation.integrator"));
+  const std::map<std::string, Settings::Integrator> integrators = {
       {"rk_merson", Settings::Integrator::RungeKuttaMerson},
       {"rk_feldberg", Settings::Integrator::RungeKuttaFeldberg},
       {"cpodes_bdf", Settings::Integrator::CPodesBDF},
       {"linearly_implicit_bdf2", Settings::Integrator::LinearlyImplicitBDF2}};
-  std::vector<std::string> names;
-  for (const auto& i : integrators)
-    names.push_back(i.first);
-  const std::string integ = d.getChoiceOr("simulation.integrator", names, "rk_merson");
-  for (const auto& i : integrators) {
-    if (i.first == integ)
-      s.integrator = i.second;
-  }
-  s.accuracy = d.getNumberInRange("simulation.accuracy", false, 1e-14, 1e-2, "").value_or(1e-9);
+  s.integrator = integrators.at(integ);
+  s.accuracy = root.getNumber(key("simulation.accuracy"));
 
   // The linearly implicit stepper's settings and the run to periodic steady state.
-  DeckSection sim = d.getSection("simulation");
-  s.poseTolerance_m =
-      sim.getSIOr("pose_tolerance_nm", Quantity::Length, 10.0, Bounds::between(1e-3, 1e5));
-  s.maxStep_deg = sim.getNumberOr("max_step_deg", 0.5, Bounds{0.0, 10.0, true});
-  s.maxSteps = sim.getIntegerOr("max_steps", 20000000, 1, 2000000000);
-  s.untilPeriodic = sim.getBoolOr("until_periodic", false);
-  s.periodicFmepTolerance =
-      sim.getNumberOr("periodic_fmep_tolerance", 0.005, Bounds{0.0, 0.5, true});
-  s.periodicPoseTolerance_m =
-      sim.getSIOr("periodic_pose_tolerance_um", Quantity::Length, 0.2, Bounds{0.0, 100.0, true});
+  s.poseTolerance_m = root.getSI(key("simulation.pose_tolerance_nm"));
+  s.maxStep_deg = root.getNumber(key("simulation.max_step_deg"));
+  s.maxSteps = root.getInteger(key("simulation.max_steps"));
+  s.untilPeriodic = root.getBool(key("simulation.until_periodic"));
+  s.periodicFmepTolerance = root.getNumber(key("simulation.periodic_fmep_tolerance"));
+  s.periodicPoseTolerance_m = root.getSI(key("simulation.periodic_pose_tolerance_um"));
 
   const bool explicitRk = s.integrator == Settings::Integrator::RungeKuttaMerson ||
                           s.integrator == Settings::Integrator::RungeKuttaFeldberg;
@@ -168,65 +237,52 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
   EngineDeck deck;
   deck.deckPath = deckPath;
   deck.overrides = overrides;
+  // First: the keys whose plausible range the deck waives.
+  d.readAllowedImplausible({&getEngineDeckKeys(), &getLubricatedSkirtDeckKeys()});
+  DeckSection root = d.getSection("");
   mbd::EngineDescription& e = deck.engine;
-  e.name = d.getString("engine.name");
+  e.name = root.getString(key("engine.name"));
 
   mbd::CrankTrainGeometry& g = e.geometry;
-  e.piston.bore_m = d.getNumber("geometry.bore_mm", Sign::Positive) * kMm;
-  g.crankRadius_m = 0.5 * d.getNumber("geometry.stroke_mm", Sign::Positive) * kMm;
-  g.conrodLength_m = d.getNumber("geometry.conrod_length_mm", Sign::Positive) * kMm;
-  g.pinOffset_m = d.getNumberOr("geometry.pin_offset_mm", 0.0) * kMm;
-  g.crankOffset_m = d.getNumberOr("geometry.crank_offset_mm", 0.0) * kMm;
-  g.compressionRatio = d.getNumber("geometry.compression_ratio", Sign::Positive);
+  e.piston.bore_m = root.getSI(key("geometry.bore_mm"));
+  g.crankRadius_m = 0.5 * root.getSI(key("geometry.stroke_mm"));
+  g.conrodLength_m = root.getSI(key("geometry.conrod_length_mm"));
+  g.pinOffset_m = root.getSI(key("geometry.pin_offset_mm"));
+  g.crankOffset_m = root.getSI(key("geometry.crank_offset_mm"));
+  g.compressionRatio = root.getNumber(key("geometry.compression_ratio"));
 
-  e.piston.compressionHeight_m = d.getNumber("piston.compression_height_mm", Sign::Positive) * kMm;
-  e.piston.skirtLength_m = d.getNumber("piston.skirt_length_mm", Sign::Positive) * kMm;
-  e.piston.skirtTopAbovePin_m = d.getNumber("piston.skirt_top_above_pin_mm") * kMm;
-  e.mass.piston = readBody(d, "piston");
-  e.mass.piston.comY_m = d.getNumber("piston.com_above_pin_mm") * kMm;
-  e.mass.piston.comX_m = d.getNumberOr("piston.com_towards_thrust_mm", 0.0) * kMm;
+  e.piston.compressionHeight_m = root.getSI(key("piston.compression_height_mm"));
+  e.piston.skirtLength_m = root.getSI(key("piston.skirt_length_mm"));
+  e.piston.skirtTopAbovePin_m = root.getSI(key("piston.skirt_top_above_pin_mm"));
+  e.mass.piston = readBody(root, "piston");
+  e.mass.piston.comY_m = root.getSI(key("piston.com_above_pin_mm"));
+  e.mass.piston.comX_m = root.getSI(key("piston.com_towards_thrust_mm"));
 
-  e.mass.pin = readBody(d, "pin");
-  const std::string joint =
-      d.getChoiceOr("pin.joint", {"floating", "fixed_in_rod", "fixed_in_piston"}, "floating");
+  e.mass.pin = readBody(root, "pin");
+  const std::string joint = root.getChoice(key("pin.joint"));
   e.pinJoint = joint == "fixed_in_rod"      ? mbd::PinJoint::FixedInRod
                : joint == "fixed_in_piston" ? mbd::PinJoint::FixedInPiston
                                             : mbd::PinJoint::Floating;
 
-  e.mass.conrod = readBody(d, "conrod");
-  e.mass.conrod.comY_m = d.getNumber("conrod.com_from_big_end_mm", Sign::NonNegative) * kMm;
+  e.mass.conrod = readBody(root, "conrod");
+  e.mass.conrod.comY_m = root.getSI(key("conrod.com_from_big_end_mm"));
 
-  e.mass.crank = readBody(d, "crank");
-  e.mass.crank.comY_m = d.getNumber("crank.com_radius_mm") * kMm;
+  e.mass.crank = readBody(root, "crank");
+  e.mass.crank.comY_m = root.getSI(key("crank.com_radius_mm"));
 
-  const std::string mode =
-      d.getChoiceOr("drive.mode", {"constant_speed", "free"}, "constant_speed");
-  e.drive.mode =
-      mode == "free" ? mbd::CrankDrive::Mode::Free : mbd::CrankDrive::Mode::ConstantSpeed;
-  // 1 .. 50,000 rpm: outside this range the deck is almost surely in the wrong unit,
-  // and near zero speed one cycle would take forever to simulate.
-  e.drive.speed_radps =
-      d.getNumberInRange("drive.speed_rpm", true, 1.0, 50000.0, "rpm").value_or(1000.0) * M_PI /
-      30.0;
-  e.drive.flywheelInertia_kgm2 =
-      d.getNumberOr("drive.flywheel_inertia_kg_m2", 0.0, Sign::NonNegative);
-  e.drive.loadTorque_Nm = d.getNumberOr("drive.load_torque_Nm", 0.0);
-  e.gravity_mps2 =
-      d.getNumberInRange("simulation.gravity_mps2", false, 0.0, 100.0, "m/s^2").value_or(9.80665);
+  readDrive(root, e.drive);
+  e.gravity_mps2 = root.getSI(key("simulation.gravity_mps2"));
 
-  const std::string table = d.getString("gas.cylinder_pressure_file");
-  deck.cylinderPressureFile = d.resolvePath(table);
-  deck.crankcasePressure_Pa =
-      d.getNumberOr("gas.crankcase_pressure_bar", 1.01325, Sign::NonNegative) * kBar;
-  if (const auto imep = d.getOptionalNumber("gas.stated_imep_kPa"))
-    deck.statedImep_Pa = *imep * 1e3;
+  // The pressure table is read after every key is (below); a path that cannot be a table
+  // is a problem of the key, reported with the others.
+  deck.cylinderPressureFile = root.getFilePath(key("gas.cylinder_pressure_file").path);
+  deck.crankcasePressure_Pa = root.getSI(key("gas.crankcase_pressure_bar"));
+  if (const auto imep = root.getOptionalSI(key("gas.stated_imep_kPa")))
+    deck.statedImep_Pa = *imep;
 
   // Cross-key checks of the engine, only on values that are individually valid (a failed
   // read leaves a placeholder that would only produce a second, confusing message).
   if (!d.hasProblems()) {
-    if (g.compressionRatio <= 1.0) {
-      d.addProblem("geometry.compression_ratio", "must be greater than 1");
-    }
     const double reach = g.crankRadius_m + std::abs(g.pinOffset_m + g.crankOffset_m);
     if (g.conrodLength_m <= reach) {
       d.addProblem("geometry.conrod_length_mm",
@@ -243,9 +299,11 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
   LinerDeckContext liner;
   readLiner(d, registry, deck, liner);
   readSimulation(d, liner, deck.linerModel, deck);
+  deck.inputs = d.getResolvedInputs();
 
   // Every key is read; report unknown keys and all problems together.
   d.finish();
+  deck.keysRead = d.getKnownKeys();
 
   // Safety net: the library's own checks (every deck-level problem above should have
   // caught these first, with a key and a line).
@@ -265,17 +323,19 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
                     "' rejected its parameters: " + ex.what());
   }
   deck.cylinderPressure = std::make_shared<const mbd::CylinderPressureCurve>(
-      readPressureTableCsv(deck.cylinderPressureFile));
+      readCylinderPressure(d, deck.cylinderPressureFile));
+  // The imep needs the geometry and the table; a geometry at the edge of the doubles (a
+  // bore of 1e-300 mm that a deck allowed as implausible) could make it NaN.
+  const double imep = calcDeckImep_Pa(deck);
+  if (!std::isfinite(imep)) {
+    throw DeckError(d.where("gas.cylinder_pressure_file") +
+                    ": the imep of the pressure table cannot be computed with this geometry "
+                    "(check the geometry keys' units)");
+  }
   if (deck.statedImep_Pa) {
-    const double imep = calcDeckImep_Pa(deck);
-    if (!std::isfinite(imep)) {
-      throw DeckError(deckPath +
-                      ": gas.stated_imep_kPa: the imep of the pressure table cannot be "
-                      "computed with this geometry (check the geometry keys' units)");
-    }
     const double rel = std::abs(imep - *deck.statedImep_Pa) / std::abs(*deck.statedImep_Pa);
     if (!(rel <= 0.005)) {
-      throw DeckError(deckPath + ": gas.stated_imep_kPa: the pressure table " +
+      throw DeckError(d.where("gas.stated_imep_kPa") + ": the pressure table " +
                       deck.cylinderPressureFile + " gives an imep of " +
                       common::formatNumber(imep / 1e3) + " kPa, " +
                       common::formatNumber(rel * 100.0) + " % away from the stated " +

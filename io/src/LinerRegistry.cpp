@@ -31,7 +31,7 @@ LinerRegistry::LinerRegistry() {
   add("lubricated_skirt",
       "oil film (average Reynolds, cavitation) and asperity contact on both skirt sides; "
       "keys liner.cold_radial_clearance_um, liner.grid.*, liner.skirt_profile.*, liner.oil.*, "
-      "... (README)",
+      "... (`pistondyn keys` lists them)",
       readLubricatedSkirt);
 }
 

@@ -22,6 +22,11 @@ using common::formatNumber;
 constexpr double kAbsoluteZero_degC = -273.15;
 constexpr double kMm = 1e-3, kUm = 1e-6, kDeg = M_PI / 180.0;
 
+// A key of the section's table (LubricatedSkirtKeys.cpp): requirement, default and ranges.
+const DeckKey& skirtKey(const std::string& path) {
+  return getLubricatedSkirtDeckKeys().at(path);
+}
+
 std::string list(const std::vector<std::string>& names) {
   std::string out;
   for (const auto& n : names)
@@ -109,22 +114,11 @@ struct WrittenEnds {
 
 void readGrid(DeckSection& liner, skirt::SkirtSideGridParameters& g) {
   DeckSection grid = liner.getSection("grid");
-  g.arcWidth_rad = grid.getSIOr("arc_width_deg", Q::Angle, 80.0, Bounds::positive());
-  const double arc_deg = g.arcWidth_rad / kDeg;
-  if (grid.has("arc_width_deg") && arc_deg > 0.0) {
-    if (arc_deg >= 180.0) {
-      grid.addProblem("arc_width_deg",
-                      formatNumber(arc_deg) +
-                          " deg makes each side's grid wider than the skirt's side: the thrust "
-                          "and anti-thrust grids would overlap; must be below 180 deg");
-    } else if (arc_deg < 10.0) {
-      grid.addProblem("arc_width_deg", "must be at least 10 deg (got " + formatNumber(arc_deg) +
-                                           "; an angle in radians?)");
-    }
-  }
-  g.nPhi = static_cast<int>(grid.getIntegerOr("nodes_circumferential", 64, 3, 1000));
-  g.nY = static_cast<int>(grid.getIntegerOr("nodes_axial", 48, 3, 1000));
-  g.axialClustering = grid.getNumberOr("axial_clustering", 0.0, Bounds::between(0.0, 10.0));
+  // Below 180 deg: the thrust and anti-thrust grids would overlap.
+  g.arcWidth_rad = grid.getSI(skirtKey("liner.grid.arc_width_deg"));
+  g.nPhi = static_cast<int>(grid.getInteger(skirtKey("liner.grid.nodes_circumferential")));
+  g.nY = static_cast<int>(grid.getInteger(skirtKey("liner.grid.nodes_axial")));
+  g.axialClustering = grid.getNumber(skirtKey("liner.grid.axial_clustering"));
 }
 
 // ---- skirt profile --------------------------------------------------------------------
@@ -147,7 +141,7 @@ void readAxialProfile(DeckSection& profile, skirt::AxialProfileParameters& a, Wr
       a.radialDrop_m = toVector(t->getColumnSI("radial_drop_um", Q::Length));
     }
   }
-  a.mirrored = profile.getBoolOr("mirrored", false);
+  a.mirrored = profile.getBool(skirtKey("liner.skirt_profile.mirrored"));
 }
 
 void readOvality(DeckSection& profile, skirt::OvalityParameters& o, WrittenEnds& ends) {
@@ -155,10 +149,8 @@ void readOvality(DeckSection& profile, skirt::OvalityParameters& o, WrittenEnds&
   const std::string key = "ovality_file";
   if (!profile.has(key) || law) {
     o.model = skirt::OvalityModel::Law;
-    o.diametralOvality_m =
-        profile.getSIOr("ovality_diametral_um", Q::Length, 0.0, Bounds::between(-2000.0, 2000.0));
-    o.cos4Coefficient =
-        profile.getNumberOr("ovality_cos4_coefficient", 0.0, Bounds::between(-0.5, 0.5));
+    o.diametralOvality_m = profile.getSI(skirtKey("liner.skirt_profile.ovality_diametral_um"));
+    o.cos4Coefficient = profile.getNumber(skirtKey("liner.skirt_profile.ovality_cos4_coefficient"));
   }
   if (!profile.has(key))
     return;
@@ -256,8 +248,7 @@ bool readThermalField(DeckSection& thermal, const std::string& alphaKey, const s
                       double& alpha_perK, Eigen::VectorXd& position_m,
                       Eigen::VectorXd& temperature_degC) {
   const bool hasAlpha = thermal.has(alphaKey), hasFile = thermal.has(fileKey);
-  if (const auto a =
-          thermal.getOptionalSI(alphaKey, Q::ThermalExpansion, Bounds::between(0.0, 1e-4)))
+  if (const auto a = thermal.getOptionalSI(skirtKey(thermal.getKeyPath(alphaKey))))
     alpha_perK = *a;
   if (hasAlpha && !hasFile) {
     thermal.addProblem(alphaKey, "has no effect without " + fileKey +
@@ -321,6 +312,8 @@ void readOil(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
   bool user = false;
   for (const auto& k : userKeys)
     user = user || oil.has(k);
+  // Part of the schema whichever way the oil is given (a --set grade=null is not unknown).
+  oil.getDeck().markKnown(oil.getKeyPath("grade"));
   const bool before = oil.hasProblems();
   bool haveSpec = false;
   if (oil.has("grade")) {
@@ -341,23 +334,24 @@ void readOil(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
     }
   } else if (user) {
     lubrication::OilSpec& s = p.oil;
-    s.name = oil.getStringOr("name", "user oil");
-    s.kinematicViscosity1_m2ps = oil.getSI(kNu1, Q::KinematicViscosity, Bounds{0.0, 1e5, true});
-    s.temperature1_degC =
-        oil.getNumberOr("viscosity_temperature_1_degC", 40.0, Bounds::between(-60.0, 250.0));
-    s.kinematicViscosity2_m2ps = oil.getSI(kNu2, Q::KinematicViscosity, Bounds{0.0, 1e5, true});
-    s.temperature2_degC =
-        oil.getNumberOr("viscosity_temperature_2_degC", 100.0, Bounds::between(-60.0, 250.0));
-    s.density_kgpm3 = oil.getSI("density_kg_per_m3", Q::Density, Bounds::between(500.0, 2000.0));
+    // A user oil's viscosities and density are required (the table's keys are optional
+    // because a graded oil has none).
+    auto required = [](const std::string& path) { return DeckKey(skirtKey(path)).require(); };
+    s.name = oil.getString(skirtKey("liner.oil.name"));
+    s.kinematicViscosity1_m2ps = oil.getSI(required("liner.oil." + std::string(kNu1)));
+    s.temperature1_degC = oil.getNumber(skirtKey("liner.oil.viscosity_temperature_1_degC"));
+    s.kinematicViscosity2_m2ps = oil.getSI(required("liner.oil." + std::string(kNu2)));
+    s.temperature2_degC = oil.getNumber(skirtKey("liner.oil.viscosity_temperature_2_degC"));
+    s.density_kgpm3 = oil.getSI(required("liner.oil.density_kg_per_m3"));
     s.densityReferenceTemperature_degC =
-        oil.getNumberOr("density_temperature_degC", 15.0, Bounds::between(-60.0, 250.0));
+        oil.getNumber(skirtKey("liner.oil.density_temperature_degC"));
     haveSpec = true;
   } else {
     oil.addProblem("grade", "missing key: give the oil's SAE grade (" + list(gradeNames()) +
                                 ") or its kinematic viscosities at two temperatures (" + kNu1 +
                                 ", " + kNu2 + ", density_kg_per_m3)");
   }
-  p.oilTemperature_degC = oil.getNumberOr("temperature_degC", 105.0, Bounds::between(-60.0, 250.0));
+  p.oilTemperature_degC = oil.getNumber(skirtKey("liner.oil.temperature_degC"));
   if (!haveSpec || oil.hasProblems() != before)
     return;
   // The oil's own checks (viscosity falling with temperature, ASTM D341's range) and the
@@ -397,11 +391,8 @@ void readSupply(DeckSection& liner, plugin::SupplyFilm& f) {
     s.addProblem(s.has("film_file") ? "film_file" : "film_um",
                  "give exactly one of fully_flooded: true, film_um, film_file");
   }
-  if (const auto film = s.getOptionalSI("film_um", Q::Length, Bounds::positive())) {
+  if (const auto film = s.getOptionalSI(skirtKey("liner.oil_supply.film_um")))
     f.constant_m = *film;
-    if (*film > 1000.0 * kUm)
-      s.addProblem("film_um", "must be at most 1000 um (got " + formatNumber(*film / kUm) + ")");
-  }
   const std::string key = "film_file";
   const std::vector<std::string> cols = {"crank_angle_deg", "film_um"};
   const auto t = s.getOptionalCsvTable(key, cols);
@@ -420,9 +411,9 @@ void readSupply(DeckSection& liner, plugin::SupplyFilm& f) {
 
 void readSurfaces(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
   DeckSection rough = liner.getSection("roughness");
-  p.roughness.rq1_m = rough.getSI("liner_rq_um", Q::Length, Bounds::between(0.0, 20.0));
-  p.roughness.rq2_m = rough.getSI("skirt_rq_um", Q::Length, Bounds::between(0.0, 20.0));
-  const double gamma = rough.getNumberOr("peklenik", 1.0, Bounds{0.0, 100.0, true});
+  p.roughness.rq1_m = rough.getSI(skirtKey("liner.roughness.liner_rq_um"));
+  p.roughness.rq2_m = rough.getSI(skirtKey("liner.roughness.skirt_rq_um"));
+  const double gamma = rough.getNumber(skirtKey("liner.roughness.peklenik"));
   p.roughness.peklenik1 = p.roughness.peklenik2 = gamma;
   if (rough.has("liner_rq_um") && rough.has("skirt_rq_um") &&
       std::hypot(p.roughness.rq1_m, p.roughness.rq2_m) < 0.01 * kUm) {
@@ -433,38 +424,33 @@ void readSurfaces(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
 
   DeckSection a = liner.getSection("asperity");
   contact_forces::GreenwoodTrippParameters& gt = p.asperity;
-  gt.roughnessParameter = a.getNumberOr("roughness_parameter", 0.04, Bounds{0.0, 1.0, true});
-  gt.sigmaOverBeta = a.getNumberOr("sigma_over_beta", 0.001, Bounds{0.0, 1.0, true});
-  gt.surface1.youngsModulus_Pa =
-      a.getSIOr("liner_youngs_modulus_GPa", Q::Pressure, 115.0, Bounds::between(1.0, 1000.0));
-  gt.surface1.poissonRatio = a.getNumberOr("liner_poisson_ratio", 0.26, Bounds::between(0.0, 0.49));
-  gt.surface2.youngsModulus_Pa =
-      a.getSIOr("skirt_youngs_modulus_GPa", Q::Pressure, 75.0, Bounds::between(1.0, 1000.0));
-  gt.surface2.poissonRatio = a.getNumberOr("skirt_poisson_ratio", 0.33, Bounds::between(0.0, 0.49));
+  gt.roughnessParameter = a.getNumber(skirtKey("liner.asperity.roughness_parameter"));
+  gt.sigmaOverBeta = a.getNumber(skirtKey("liner.asperity.sigma_over_beta"));
+  gt.surface1.youngsModulus_Pa = a.getSI(skirtKey("liner.asperity.liner_youngs_modulus_GPa"));
+  gt.surface1.poissonRatio = a.getNumber(skirtKey("liner.asperity.liner_poisson_ratio"));
+  gt.surface2.youngsModulus_Pa = a.getSI(skirtKey("liner.asperity.skirt_youngs_modulus_GPa"));
+  gt.surface2.poissonRatio = a.getNumber(skirtKey("liner.asperity.skirt_poisson_ratio"));
   p.boundaryFriction.frictionCoefficient =
-      a.getNumberOr("friction_coefficient", 0.1, Bounds::between(0.0, 1.0));
+      a.getNumber(skirtKey("liner.asperity.friction_coefficient"));
   p.boundaryFriction.regularisationSpeed_mps =
-      a.getSIOr("regularisation_speed_mm_per_s", Q::Speed, 1.0, Bounds{0.0, 1000.0, true});
+      a.getSI(skirtKey("liner.asperity.regularisation_speed_mm_per_s"));
   p.lubrication.wearCoefficient_m2pN =
-      a.getSIOr("wear_coefficient_mm3_per_N_m", Q::WearCoefficient, 0.0, Bounds::between(0.0, 1.0));
+      a.getSI(skirtKey("liner.asperity.wear_coefficient_mm3_per_N_m"));
 
   DeckSection film = liner.getSection("film");
-  p.lubrication.cavitation = film.getChoiceOr<lubrication::CavitationModel>(
-      "cavitation",
+  p.lubrication.cavitation = film.getChoice<lubrication::CavitationModel>(
+      skirtKey("liner.film.cavitation"),
       {{"mass_conserving", lubrication::CavitationModel::MassConserving},
-       {"reynolds", lubrication::CavitationModel::Reynolds}},
-      lubrication::CavitationModel::MassConserving);
-  p.lubrication.solver.solver = film.getChoiceOr<lubrication::FilmSolverType>(
-      "solver",
+       {"reynolds", lubrication::CavitationModel::Reynolds}});
+  p.lubrication.solver.solver = film.getChoice<lubrication::FilmSolverType>(
+      skirtKey("liner.film.solver"),
       {{"fast", lubrication::FilmSolverType::FastActiveSet},
-       {"reference_gauss_seidel", lubrication::FilmSolverType::ReferenceGaussSeidel}},
-      lubrication::FilmSolverType::FastActiveSet);
-  p.lubrication.solver.tolerance =
-      film.getNumberOr("tolerance", 1e-8, Bounds::between(1e-14, 1e-3));
+       {"reference_gauss_seidel", lubrication::FilmSolverType::ReferenceGaussSeidel}});
+  p.lubrication.solver.tolerance = film.getNumber(skirtKey("liner.film.tolerance"));
   // The fill fraction's storage term in time (mass-conserving model): BDF2 converges with
   // the step where backward Euler smears a starved film's oil (plugin/README.md).
-  p.fillFractionHistoryOrder = film.getChoiceOr<int>(
-      "fill_fraction_history", {{"backward_euler", 1}, {"bdf2", 2}}, 1);
+  p.fillFractionHistoryOrder = film.getChoice<int>(skirtKey("liner.film.fill_fraction_history"),
+                                                   {{"backward_euler", 1}, {"bdf2", 2}});
 }
 
 void readFieldDumps(DeckSection& liner, LinerDeckContext& context) {
@@ -561,10 +547,8 @@ LinerElementMaker readLubricatedSkirt(DeckSection& liner, LinerDeckContext& cont
   plugin::LubricatedSkirtParameters p;
   skirt::GapAssemblyParameters& gap = p.gap;
   // 1 .. 500 um: a clearance given in mm (0.04) or nm (40000) is rejected.
-  gap.coldRadialClearance_m =
-      liner.getSI("cold_radial_clearance_um", Q::Length, Bounds::between(1.0, 500.0));
-  gap.referenceTemperature_degC =
-      liner.getNumberOr("reference_temperature_degC", 20.0, Bounds::between(-60.0, 200.0));
+  gap.coldRadialClearance_m = liner.getSI(skirtKey("liner.cold_radial_clearance_um"));
+  gap.referenceTemperature_degC = liner.getNumber(skirtKey("liner.reference_temperature_degC"));
   readGrid(liner, p.grid);
 
   DeckSection profile = liner.getSection("skirt_profile");
@@ -575,7 +559,7 @@ LinerElementMaker readLubricatedSkirt(DeckSection& liner, LinerDeckContext& cont
   DeckSection bore = liner.getSection("bore_distortion");
   readBoreDistortion(bore, gap.linerShape);
   if (const auto top =
-          bore.getOptionalSI("liner_top_above_crank_mm", Q::Length, Bounds::between(0.0, 2000.0)))
+          bore.getOptionalSI(skirtKey("liner.bore_distortion.liner_top_above_crank_mm")))
     gap.linerTopHeight_m = *top;
   readThermal(liner, gap);
 
@@ -583,11 +567,9 @@ LinerElementMaker readLubricatedSkirt(DeckSection& liner, LinerDeckContext& cont
   readSupply(liner, p.supplyFilm);
   readSurfaces(liner, p);
 
-  p.tertiaryMotion = liner.getBoolOr("tertiary_motion", false);
-  p.pinRetainerPlay_m =
-      liner.getSIOr("pin_retainer_play_mm", Q::Length, 0.5, Bounds{0.0, 10.0, true});
-  p.pinRetainerStiffness_Npm =
-      liner.getSIOr("pin_retainer_stiffness_N_per_mm", Q::Stiffness, 2e4, Bounds{0.0, 1e9, true});
+  p.tertiaryMotion = liner.getBool(skirtKey("liner.tertiary_motion"));
+  p.pinRetainerPlay_m = liner.getSI(skirtKey("liner.pin_retainer_play_mm"));
+  p.pinRetainerStiffness_Npm = liner.getSI(skirtKey("liner.pin_retainer_stiffness_N_per_mm"));
   readFieldDumps(liner, context);
 
   context.tertiaryMotion = p.tertiaryMotion;

@@ -1,5 +1,6 @@
 #include "pistondyn/io/PressureTableCsv.h"
 
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <vector>
@@ -14,7 +15,16 @@ using detail::parseDouble;
 using detail::splitCsv;
 using detail::trim;
 
-mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath) {
+namespace {
+
+// Row problems reported at once, as the rest of the deck's are; a table of garbage stops
+// at this many lines.
+constexpr std::size_t kMaxProblemLines = 20;
+
+}  // namespace
+
+mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath,
+                                                std::string* pressureUnit) {
   if (detail::isFolder(filePath))
     throw DeckError(filePath + ": is a folder, not a cylinder-pressure table file");
   std::ifstream in(filePath);
@@ -25,6 +35,7 @@ mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath) {
 
   std::vector<double> angle, pressure;
   std::vector<int> lineOfRow;
+  std::vector<std::string> problems;
   double toPa = 0.0;
   bool haveHeader = false;
   std::string line;
@@ -46,28 +57,50 @@ mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath) {
                         t + "'");
       }
       toPa = kUnits.at(f[1]);
+      if (pressureUnit != nullptr)
+        *pressureUnit = f[1].substr(std::string("pressure_").size());
       haveHeader = true;
       continue;
     }
     if (f.size() != 2) {
-      throw DeckError(at + "expected 2 columns (crank angle, pressure), found " +
-                      std::to_string(f.size()));
+      problems.push_back(at + "expected 2 columns (crank angle, pressure), found " +
+                         std::to_string(f.size()));
+      continue;
     }
     double a = 0.0, p = 0.0;
-    if (!parseDouble(f[0], a))
-      throw DeckError(at + "crank angle '" + f[0] + "' is not a number");
-    if (!parseDouble(f[1], p))
-      throw DeckError(at + "pressure '" + f[1] + "' is not a number");
+    const bool angleOk = parseDouble(f[0], a), pressureOk = parseDouble(f[1], p);
+    if (!angleOk)
+      problems.push_back(at + "crank angle '" + f[0] + "' is not a number");
+    if (!pressureOk)
+      problems.push_back(at + "pressure '" + f[1] + "' is not a number");
+    if (!angleOk || !pressureOk)
+      continue;
+    // Compared with the last good row, so one bad row gives one message.
     if (!angle.empty() && !(a > angle.back())) {
-      throw DeckError(at + "crank angle " + f[0] + " deg is not greater than the previous row's (" +
-                      common::formatNumber(angle.back()) + " deg); angles must increase");
+      problems.push_back(at + "crank angle " + f[0] +
+                         " deg is not greater than the previous row's (" +
+                         common::formatNumber(angle.back()) + " deg); angles must increase");
+      continue;
     }
     if (!(p > 0.0)) {
-      throw DeckError(at + "pressure " + f[1] + " must be positive (absolute pressure)");
+      problems.push_back(at + "pressure " + f[1] + " must be positive (absolute pressure)");
+      continue;
+    }
+    if (!std::isfinite(p * toPa)) {
+      problems.push_back(at + "pressure " + f[1] + " overflows when converted to Pa");
+      continue;
     }
     angle.push_back(a);
     pressure.push_back(p * toPa);
     lineOfRow.push_back(lineNo);
+  }
+  if (!problems.empty()) {
+    std::string all;
+    for (std::size_t i = 0; i < problems.size() && i < kMaxProblemLines; ++i)
+      all += (i == 0 ? "" : "\n") + problems[i];
+    if (problems.size() > kMaxProblemLines)
+      all += "\n... and " + std::to_string(problems.size() - kMaxProblemLines) + " more problems";
+    throw DeckError(all);
   }
   if (!haveHeader)
     throw DeckError(filePath + ": empty table (no header line)");

@@ -1,5 +1,7 @@
 #include "pistondyn/io/ResultFolder.h"
 
+#include "FileBytes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -17,12 +19,10 @@ namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 
 std::string readText(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in)
+  std::optional<std::string> bytes = detail::readFileBytes(p.string());
+  if (!bytes)
     throw std::runtime_error(p.string() + ": cannot open (is this a pistondyn run's folder?)");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  return std::move(*bytes);
 }
 
 void flatten(const Json& j, const std::string& prefix, std::vector<SummaryEntry>& out) {

@@ -1,6 +1,7 @@
 #include "pistondyn/io/RunDeck.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <stdexcept>
@@ -25,55 +26,21 @@ const char* kFrameConvention =
     "x towards the thrust side, y along the cylinder axis towards the head, z along the pin "
     "axis; tilt > 0 = crown leaning towards the thrust side";
 
-const char* pinJointName(mbd::PinJoint j) {
-  switch (j) {
-    case mbd::PinJoint::FixedInRod:
-      return "fixed_in_rod";
-    case mbd::PinJoint::FixedInPiston:
-      return "fixed_in_piston";
-    case mbd::PinJoint::Floating:
-    default:
-      return "floating";
-  }
-}
-
-const char* integratorName(plugin::SimulationSettings::Integrator i) {
-  switch (i) {
-    case plugin::SimulationSettings::Integrator::RungeKuttaFeldberg:
-      return "rk_feldberg";
-    case plugin::SimulationSettings::Integrator::CPodesBDF:
-      return "cpodes_bdf";
-    case plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2:
-      return "linearly_implicit_bdf2";
-    case plugin::SimulationSettings::Integrator::RungeKuttaMerson:
-    default:
-      return "rk_merson";
-  }
-}
-
-Json body(const mbd::PlanarMassProperties& b) {
-  Json j;
-  j["mass_kg"] = b.mass_kg;
-  j["com_x_m"] = b.comX_m;
-  j["com_y_m"] = b.comY_m;
-  j["inertia_zz_kg_m2"] = b.inertiaZZ_kgm2;
-  return j;
-}
-
-// The liner model's inputs as read by its factory, nested by their SI key paths
-// (liner.film.viscosity_Pas -> {"film": {"viscosity_Pas": ...}}).
-Json linerInputs(const std::vector<ResolvedInput>& inputs) {
-  Json liner = Json::object();
+// The deck's inputs as read (defaults included), nested by their SI key paths
+// (geometry.bore_mm read as geometry.bore_m -> {"geometry": {"bore_m": ...}}): the names
+// of the deck with the unit the value is written in, nothing renamed.
+Json nestedInputs(const std::vector<ResolvedInput>& inputs) {
+  Json root = Json::object();
   for (const auto& in : inputs) {
-    std::string path = in.siPath.substr(std::string("liner.").size());
-    Json* node = &liner;
+    std::string path = in.siPath;
+    Json* node = &root;
     for (auto dot = path.find('.'); dot != std::string::npos; dot = path.find('.')) {
       node = &(*node)[path.substr(0, dot)];
       path.erase(0, dot + 1);
     }
     std::visit([&](const auto& v) { (*node)[path] = v; }, in.value);
   }
-  return liner;
+  return root;
 }
 
 }  // namespace
@@ -90,58 +57,17 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
   j["pistondyn_version"] = getVersion();
   j["crank_angle_convention"] = kAngleConvention;
   j["frame_convention"] = kFrameConvention;
-  j["deck_file"] = deck.deckPath;
+  // Absolute: the summary names the deck wherever it is read from (the report reads it).
+  std::error_code ec;
+  const std::filesystem::path deckFile = std::filesystem::absolute(deck.deckPath, ec);
+  j["deck_file"] = ec ? deck.deckPath : deckFile.lexically_normal().string();
   j["overrides"] = deck.overrides;
 
-  Json& in = j["inputs"];
-  in["engine_name"] = e.name;
-  Json& g = in["geometry"];
-  g["bore_m"] = e.piston.bore_m;
-  g["crank_radius_m"] = e.geometry.crankRadius_m;
-  g["conrod_length_m"] = e.geometry.conrodLength_m;
-  g["pin_offset_m"] = e.geometry.pinOffset_m;
-  g["crank_offset_m"] = e.geometry.crankOffset_m;
-  g["compression_ratio"] = e.geometry.compressionRatio;
-  Json& p = in["piston"];
-  p["compression_height_m"] = e.piston.compressionHeight_m;
-  p["skirt_length_m"] = e.piston.skirtLength_m;
-  p["skirt_top_above_pin_m"] = e.piston.skirtTopAbovePin_m;
-  Json& m = in["mass"];
-  m["piston"] = body(e.mass.piston);
-  m["pin"] = body(e.mass.pin);
-  m["conrod"] = body(e.mass.conrod);
-  m["crank"] = body(e.mass.crank);
-  in["pin_joint"] = pinJointName(e.pinJoint);
-  in["tertiary_motion"] = e.tertiaryMotion;
-  Json& d = in["drive"];
-  d["mode"] = e.drive.mode == mbd::CrankDrive::Mode::Free ? "free" : "constant_speed";
-  d["speed_rad_per_s"] = e.drive.speed_radps;
-  d["flywheel_inertia_kg_m2"] = e.drive.flywheelInertia_kgm2;
-  d["load_torque_N_m"] = e.drive.loadTorque_Nm;
-  Json& gas = in["gas"];
-  gas["cylinder_pressure_file"] = deck.cylinderPressureFile;
-  gas["crankcase_pressure_Pa"] = deck.crankcasePressure_Pa;
-  if (deck.statedImep_Pa)
-    gas["stated_imep_Pa"] = *deck.statedImep_Pa;
-  in["liner_model"] = deck.linerModel;
-  if (!deck.linerInputs.empty())
-    in["liner"] = linerInputs(deck.linerInputs);
-  Json& sim = in["simulation"];
-  sim["integrator"] = integratorName(st.integrator);
-  sim["start_angle_rad"] = st.startAngle_deg * M_PI / 180.0;
-  sim["cycles"] = static_cast<long>(st.cycles);
-  sim["output_step_rad"] = st.outputStep_deg * M_PI / 180.0;
-  sim["accuracy"] = st.accuracy;
-  sim["constraint_tolerance"] = st.constraintTolerance;
-  sim["pose_tolerance_m"] = st.poseTolerance_m;
-  sim["max_step_rad"] = st.maxStep_deg * M_PI / 180.0;
-  sim["max_steps"] = st.maxSteps;
-  sim["until_periodic"] = st.untilPeriodic;
-  sim["periodic_fmep_tolerance"] = st.periodicFmepTolerance;
-  sim["periodic_pose_tolerance_m"] = st.periodicPoseTolerance_m;
-  if (!deck.fieldDumpAngles_deg.empty())
-    sim["field_dump_crank_angles_deg"] = deck.fieldDumpAngles_deg;
-  sim["gravity_m_per_s2"] = e.gravity_mps2;
+  j["inputs"] = nestedInputs(deck.inputs);
+  // What the model uses besides the deck's keys.
+  Json& model = j["model"];
+  model["crank_train_tertiary_motion"] = e.tertiaryMotion;
+  model["constraint_tolerance"] = st.constraintTolerance;
 
   const CycleSummary& s = o.summary;
   Json& r = j["results"];
@@ -174,6 +100,11 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
       r["fmep_kPa"] = finite("fmep_kPa", o.stats.cycleFmep_Pa.back() / 1e3);
     optional("friction_work_J", f.frictionWork_J);
     optional("friction_power_mean_W", f.frictionPowerMean_W);
+    optional("asperity_friction_work_J", f.asperityFrictionWork_J);
+    // The asperity share of the friction work (the thesis' 0 -> 18 % when starved).
+    if (f.asperityFrictionWork_J && f.frictionWork_J && *f.frictionWork_J > 0.0)
+      r["asperity_friction_work_share"] =
+          finite("asperity_friction_work_share", *f.asperityFrictionWork_J / *f.frictionWork_J);
     optional("min_h_over_sigma_thrust", f.minGapOverSigmaThrust);
     optional("min_h_over_sigma_thrust_crank_angle_deg", f.minGapOverSigmaThrustAngle_deg);
     optional("min_h_over_sigma_antithrust", f.minGapOverSigmaAntiThrust);

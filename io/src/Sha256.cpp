@@ -1,9 +1,9 @@
 #include "Sha256.h"
 
+#include "FileBytes.h"
+
 #include <array>
 #include <cstdint>
-#include <fstream>
-#include <sstream>
 
 namespace pistondyn::io::detail {
 namespace {
@@ -97,14 +97,10 @@ std::string sha256Hex(const std::string& bytes) {
 }
 
 std::optional<std::string> sha256HexOfFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
+  const std::optional<std::string> bytes = readFileBytes(path);
+  if (!bytes)
     return std::nullopt;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad())
-    return std::nullopt;
-  return sha256Hex(ss.str());
+  return sha256Hex(*bytes);
 }
 
 }  // namespace pistondyn::io::detail

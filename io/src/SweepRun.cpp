@@ -1,5 +1,8 @@
 #include "pistondyn/io/SweepRun.h"
 
+#include "CsvText.h"
+#include "FileBytes.h"
+
 #include <fcntl.h>
 #include <sched.h>
 #include <sys/file.h>
@@ -33,17 +36,7 @@ const char* kSweepCsv = "sweep.csv";
 const char* kCaseJson = "case.json";
 
 std::optional<std::string> readText(const fs::path& p) {
-  std::error_code ec;
-  if (!fs::is_regular_file(p, ec))
-    return std::nullopt;
-  std::ifstream in(p, std::ios::binary);
-  if (!in)
-    return std::nullopt;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad())
-    return std::nullopt;
-  return ss.str();
+  return detail::readFileBytes(p.string());
 }
 
 // A message on one line (sweep.csv holds one row per case).
@@ -163,20 +156,7 @@ std::string describeDifference(const SweepPlan& stored, const SweepPlan& plan) {
   return text;
 }
 
-// CSV field: quoted when it holds a comma, a quote or surrounding blanks.
-std::string csvField(const std::string& text) {
-  const bool quote = text.find_first_of(",\"\n\r") != std::string::npos ||
-                     (!text.empty() && (text.front() == ' ' || text.back() == ' '));
-  if (!quote)
-    return text;
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"')
-      out += '"';
-    out += c;
-  }
-  return out + "\"";
-}
+using detail::csvField;
 
 // A JSON number as sweep.csv writes it; "" for anything else (null: a NaN never appears).
 std::optional<std::string> numberText(const Json& v) {

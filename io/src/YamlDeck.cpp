@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -10,7 +11,10 @@
 
 #include "pistondyn/common/Validation.h"
 #include "pistondyn/io/DeckError.h"
+#include "pistondyn/io/DeckKeys.h"
 #include "pistondyn/io/DeckSection.h"
+
+#include "FileBytes.h"
 
 namespace pistondyn::io {
 namespace {
@@ -45,8 +49,19 @@ struct YamlDeck::Impl {
   std::map<std::string, std::string> fileValues;  // plain values --set replaced, as in the file
   std::vector<std::string> problems;
   std::vector<ResolvedInput> resolved;
+  std::set<std::string> allowImplausible;  // checks.allow_implausible
 
   YAML::Node lookup(const std::string& path) const;                 // invalid node if absent
+  // True if a section above `path` holds a value or a list instead (`drive: [1, 2]`): its
+  // keys are not "missing", the section is the problem (reported by getSection()).
+  bool isBelowAValue(const std::string& path) const {
+    for (auto dot = path.find('.'); dot != std::string::npos; dot = path.find('.', dot + 1)) {
+      const YAML::Node n = lookup(path.substr(0, dot));
+      if (n.IsDefined() && !n.IsNull() && !n.IsMap())
+        return true;
+    }
+    return false;
+  }
   std::string overridingAssignment(const std::string& path) const;  // "" if from the file
   void collectUnknown(const YAML::Node& node, const std::string& prefix);
   bool isBelowFileIgnored(const std::string& path) const {
@@ -71,16 +86,39 @@ YamlDeck::YamlDeck(std::string filePath) : impl_(std::make_unique<Impl>()) {
   std::error_code ec;
   if (std::filesystem::is_directory(filePath_, ec))
     throw DeckError(filePath_ + ": is a folder, not a deck file");
-  try {
-    root_ = YAML::LoadFile(filePath_);
-  } catch (const YAML::BadFile&) {
+  // The bytes first: yaml-cpp stops at a NUL byte (the rest of the file would be silently
+  // missing) and reads every document of a multi-document file.
+  const std::optional<std::string> text = detail::readFileBytes(filePath_);
+  if (!text)
     throw DeckError(filePath_ + ": cannot open the deck file");
+  if (const auto nul = text->find('\0'); nul != std::string::npos) {
+    const auto line = 1 + std::count(text->begin(), text->begin() + nul, '\n');
+    throw DeckError(filePath_ + ":" + std::to_string(line) +
+                    ": holds a NUL byte: a deck is UTF-8 text (a binary file, or saved as "
+                    "UTF-16?)");
+  }
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(*text);
   } catch (const YAML::ParserException& e) {
+    // yaml-cpp's depth guard (YAML::DeepRecursion, 2000 levels) says only "bad file".
+    if (e.msg == YAML::ErrorMsg::BAD_FILE) {
+      throw DeckError(filePath_ + lineText(e.mark) +
+                      ": nested deeper than the YAML reader takes (2000 levels of lists or "
+                      "sections); a deck is a mapping of sections a few levels deep");
+    }
     throw DeckError(filePath_ + lineText(e.mark) + ": not valid YAML: " + e.msg);
   } catch (const std::exception& e) {
-    // e.g. the path is a directory (std::ios_base::failure)
     throw DeckError(filePath_ + ": cannot read the deck file: " + e.what());
   }
+  if (documents.size() > 1) {
+    throw DeckError(filePath_ + lineText(documents[1].Mark()) +
+                    ": a second YAML document (after '---'): a deck is one document, and "
+                    "nothing after the first would be read; remove the '---' line or merge "
+                    "the documents");
+  }
+  if (!documents.empty())
+    root_ = documents.front();
   if (!root_.IsMap()) {
     throw DeckError(filePath_ +
                     ": the deck must be a YAML mapping of sections (engine:, "
@@ -136,6 +174,21 @@ void YamlDeck::applyOverride(const std::string& assignment) {
     if (!child.IsDefined())
       node[parts[i]] = YAML::Node(YAML::NodeType::Map);
     node.reset(node[parts[i]]);
+  }
+  // A value for a whole section would drop every key of it ("--set geometry=5" then
+  // reports each as missing): name the mistake instead. A section for a section, or null
+  // (removes the section, as for a key), is fine.
+  const YAML::Node replaced = impl_->lookup(path);
+  if (replaced.IsDefined() && replaced.IsMap() && !value.IsMap() && !value.IsNull()) {
+    std::string example;
+    for (const auto& kv : replaced) {
+      if (kv.first.IsScalar()) {
+        example = " (e.g. --set " + path + "." + kv.first.Scalar() + "=...)";
+        break;
+      }
+    }
+    throw DeckError("--set " + path + ": '" + path +
+                    "' is a section of the deck, not a value: set one of its keys" + example);
   }
   node[parts.back()] = value;
   impl_->overridden.insert(path);
@@ -233,8 +286,8 @@ void YamlDeck::Impl::collectUnknown(const YAML::Node& node, const std::string& p
         }
       }
       problems.push_back(origin +
-                         ": unknown key (misspelt, or a unit the key does not take? see the "
-                         "deck reference in README.md)");
+                         ": unknown key (misspelt, or a unit the key does not take? "
+                         "`pistondyn keys` lists every key)");
     } else if (kv.second.IsMap() && ignored.count(path) == 0) {
       collectUnknown(kv.second, path);
     }
@@ -292,6 +345,11 @@ std::string boundsMessage(const Bounds& b, const std::string& text, const std::s
   if (lower && !upper && b.minimum == 0.0)
     return (b.excludeMinimum ? "must be positive (got " : "must not be negative (got ") + text +
            ")";
+  if (lower && upper && (b.excludeMinimum || b.excludeMaximum)) {
+    return std::string(b.excludeMinimum ? "must be above " : "must be at least ") +
+           formatBound(b.minimum) + u + (b.excludeMaximum ? " and below " : " and at most ") +
+           formatBound(b.maximum) + u + " (got " + text + ")";
+  }
   if (lower && upper) {
     return "must be between " + formatBound(b.minimum) + " and " + formatBound(b.maximum) + u +
            " (got " + text + ")";
@@ -300,7 +358,8 @@ std::string boundsMessage(const Bounds& b, const std::string& text, const std::s
     return std::string(b.excludeMinimum ? "must be greater than " : "must be at least ") +
            formatBound(b.minimum) + u + " (got " + text + ")";
   }
-  return "must be at most " + formatBound(b.maximum) + u + " (got " + text + ")";
+  return std::string(b.excludeMaximum ? "must be below " : "must be at most ") +
+         formatBound(b.maximum) + u + " (got " + text + ")";
 }
 
 // A finite double from a scalar node, or the problem with it.
@@ -338,7 +397,7 @@ std::optional<double> YamlDeck::readNumber(const std::string& path, const Bounds
   markKnown(path);
   const YAML::Node n = impl_->lookup(path);
   if (!n.IsDefined() || n.IsNull()) {
-    if (required)
+    if (required && !impl_->isBelowAValue(path))
       addProblem(path, "missing key (a number is required)");
     return std::nullopt;
   }
@@ -367,7 +426,7 @@ std::optional<std::vector<double>> YamlDeck::readNumberList(const std::string& p
   markKnown(path);
   const YAML::Node n = impl_->lookup(path);
   if (!n.IsDefined() || n.IsNull()) {
-    if (required)
+    if (required && !impl_->isBelowAValue(path))
       addProblem(path, "missing key (a list of numbers is required, e.g. [1, 2, 3])");
     return std::nullopt;
   }
@@ -407,7 +466,7 @@ std::optional<bool> YamlDeck::readBool(const std::string& path, bool required) {
   markKnown(path);
   const YAML::Node n = impl_->lookup(path);
   if (!n.IsDefined() || n.IsNull()) {
-    if (required)
+    if (required && !impl_->isBelowAValue(path))
       addProblem(path, "missing key (true or false is required)");
     return std::nullopt;
   }
@@ -428,7 +487,7 @@ std::optional<std::string> YamlDeck::readString(const std::string& path, bool re
   markKnown(path);
   const YAML::Node n = impl_->lookup(path);
   if (!n.IsDefined() || n.IsNull()) {
-    if (required)
+    if (required && !impl_->isBelowAValue(path))
       addProblem(path, "missing key (text is required)");
     return std::nullopt;
   }
@@ -463,6 +522,77 @@ long YamlDeck::getIntegerOr(const std::string& path, long fallback, long minimum
     return fallback;
   }
   return static_cast<long>(*v);
+}
+
+std::optional<double> YamlDeck::readKeyNumber(const DeckKey& key) {
+  const std::optional<UnitSuffix> unitSuffix = key.getUnit();
+  const std::string unit = unitSuffix ? unitSuffix->suffix : std::string();
+  const bool present = has(key.path);
+  const std::optional<double> v = readNumber(key.path, Bounds::any(), key.required, unit);
+  if (!v)
+    return present ? std::nullopt : key.defaultValue;
+  const std::string slip = describeUnitSlip(key, *v);
+  const std::string hint = slip.empty() ? std::string() : "; " + slip;
+  if (key.kind == DeckValueKind::WholeNumber) {
+    if (*v != std::floor(*v) || !key.valid.contains(*v)) {
+      addProblem(key.path, "must be a whole number from " + formatBound(key.valid.minimum) +
+                               " to " + formatBound(key.valid.maximum) + " (got " +
+                               formatBound(*v) + ")");
+      return std::nullopt;
+    }
+  } else if (!key.valid.contains(*v)) {
+    const std::string reason = key.rangeReason.empty() ? std::string() : ": " + key.rangeReason;
+    addProblem(key.path, boundsMessage(key.valid, formatBound(*v), unit) + reason + hint);
+    return std::nullopt;
+  }
+  if (key.plausible && !key.plausible->contains(*v) && !isImplausibleAllowed(key.path)) {
+    const std::string u = unit.empty() ? std::string() : " " + unit;
+    addProblem(key.path, formatBound(*v) + u + " is outside the plausible range [" +
+                             formatBound(key.plausible->minimum) + ", " +
+                             formatBound(key.plausible->maximum) + "]" + u +
+                             " of the engines pistondyn is for" + hint +
+                             " (if the value is right, list the key under " +
+                             kAllowImplausibleKey + ")");
+    return std::nullopt;
+  }
+  return v;
+}
+
+void YamlDeck::readAllowedImplausible(const std::vector<const DeckKeyTable*>& tables) {
+  markKnown(kAllowImplausibleKey);
+  const YAML::Node n = impl_->lookup(kAllowImplausibleKey);
+  if (!n.IsDefined() || n.IsNull())
+    return;
+  if (!n.IsSequence()) {
+    addProblem(kAllowImplausibleKey, "expected a list of key paths, e.g. [geometry.bore_mm]");
+    return;
+  }
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    const YAML::Node item = n[i];
+    const std::string which = "item " + std::to_string(i + 1) + ": ";
+    if (!item.IsScalar()) {
+      addProblem(kAllowImplausibleKey, which + "expected a key path, found a " + foundKind(item));
+      continue;
+    }
+    const DeckKey* key = nullptr;
+    for (const DeckKeyTable* t : tables)
+      key = key != nullptr ? key : t->find(item.Scalar());
+    if (key == nullptr || !key->plausible) {
+      addProblem(kAllowImplausibleKey,
+                 which + "'" + item.Scalar() +
+                     "' is not a key with a plausible range (`pistondyn keys` lists them)");
+      continue;
+    }
+    impl_->allowImplausible.insert(item.Scalar());
+  }
+}
+
+bool YamlDeck::isImplausibleAllowed(const std::string& path) const {
+  return impl_->allowImplausible.count(path) != 0;
+}
+
+std::vector<std::string> YamlDeck::getKnownKeys() const {
+  return {impl_->known.begin(), impl_->known.end()};
 }
 
 std::optional<double> YamlDeck::getNumberInRange(const std::string& path, bool required,

@@ -382,7 +382,9 @@ void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& pr
       system.realize(s, SimTK::Stage::Acceleration);
       row.clear();
       calcCrankTrainRow(ct, s, row);
-      row[1] = thetaTarget * 180.0 / M_PI;  // the nominal angle the row was taken at
+      // The nominal angle the row was taken at, start + k * step in degrees as the deck
+      // wrote them (through radians, 30 deg would read 29.999999999999993).
+      row[1] = settings_.startAngle_deg + static_cast<double>(k) * settings_.outputStep_deg;
       model_.calcElementOutputs(s, row);
       for (std::size_t j = 0; j < row.size(); ++j) {
         if (!std::isfinite(row[j])) {

@@ -118,7 +118,9 @@ void LubricatedSkirtElement::addToModel(const ModelBuildContext& context) {
   gt.roughnessSurface1_m = parameters_.roughness.rq1_m;  // roughness entered once (liner)
   gt.roughnessSurface2_m = parameters_.roughness.rq2_m;  // (skirt)
   parameters_.asperity = gt;
-  auto contactLaw = std::make_shared<const contact_forces::GreenwoodTrippLaw>(gt);
+  const std::shared_ptr<const contact_forces::AsperityContactLaw> contactLaw =
+      parameters_.contactLaw ? parameters_.contactLaw
+                             : std::make_shared<const contact_forces::GreenwoodTrippLaw>(gt);
   const contact_forces::BoundaryFriction friction(parameters_.boundaryFriction);
 
   for (int k : {kThrust, kAntiThrust}) {

@@ -67,7 +67,7 @@ TEST_F(ScratchDeck, ProgramRefusesAnOutputPathThatIsAFileBeforeSimulating) {
   const fs::path out = dir_ / "a_file";
   std::ofstream(out) << "keep me";
   EXPECT_EQ(runProgram("", out), 2);
-  EXPECT_NE(programStderr().find("is not a folder"), std::string::npos) << programStderr();
+  EXPECT_NE(programStderr().find("is a file, not a folder"), std::string::npos) << programStderr();
   EXPECT_EQ(readFile(out), "keep me");
 }
 

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "NumericCsv.h"
 #include "PlotChecks.h"
 #include "ScratchDeck.h"
 #include "pistondyn/mbd_models/SliderCrank.h"
@@ -132,8 +133,11 @@ TEST_F(SkirtBadInput, OilSupplyTables) {
 TEST_F(SkirtBadInput, ValuesAndCrossChecks) {
   // A skirt grid wider than the skirt's side.
   expectRejected("--set liner.grid.arc_width_deg=180",
-                 {"--set liner.grid.arc_width_deg: 180 deg makes each side's grid wider than "
-                  "the skirt's side"});
+                 {"--set liner.grid.arc_width_deg: must be at least 10 deg and below 180 deg (got "
+                  "180): 180 deg or more makes each side's grid wider than the skirt's side"});
+  // An arc in radians: the unit that fits is named.
+  expectRejected("--set liner.grid.arc_width_deg=1.4",
+                 {"--set liner.grid.arc_width_deg: must be at least 10 deg", "given in rad"});
   // A clearance in mm read as um.
   expectRejected("--set liner.cold_radial_clearance_um=0.04",
                  {"--set liner.cold_radial_clearance_um: must be between 1 and 500 um"});
@@ -156,7 +160,7 @@ TEST_F(SkirtBadInput, ValuesAndCrossChecks) {
   SetUp();
   // The oil supply: not positive, two ways, none.
   expectRejected("--set liner.oil_supply.film_um=0",
-                 {"--set liner.oil_supply.film_um: must be positive (got 0)"});
+                 {"--set liner.oil_supply.film_um: must be above 0 um and at most 1000 um (got 0)"});
   expectRejected("--set liner.oil_supply.fully_flooded=true",
                  {at("film_um", "liner.oil_supply.film_um"),
                   "give exactly one of fully_flooded: true, film_um, film_file"});
@@ -190,39 +194,10 @@ double finiteNumber(const nlohmann::json& r, const std::string& key) {
   return v;
 }
 
-struct Csv {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
-  std::vector<double> column(const std::string& name) const {
-    const auto it = std::find(columns.begin(), columns.end(), name);
-    if (it == columns.end())
-      throw std::out_of_range(name);
-    std::vector<double> out;
-    for (const auto& r : rows)
-      out.push_back(r[static_cast<std::size_t>(it - columns.begin())]);
-    return out;
-  }
-};
-
+// cycle.csv and the field dumps read back (tests/support/NumericCsv.h).
+using Csv = pistondyn::test::NumericCsv;
 Csv readCsv(const fs::path& p) {
-  Csv c;
-  std::ifstream in(p);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#')
-      continue;
-    std::stringstream ss(line);
-    std::string f;
-    if (c.columns.empty()) {
-      while (std::getline(ss, f, ','))
-        c.columns.push_back(f);
-      continue;
-    }
-    c.rows.emplace_back();
-    while (std::getline(ss, f, ','))
-      c.rows.back().push_back(std::strtod(f.c_str(), nullptr));
-  }
-  return c;
+  return pistondyn::test::readNumericCsv(p);
 }
 
 // One coarse cycle of the gasoline example through the program.

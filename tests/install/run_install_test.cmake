@@ -43,4 +43,17 @@ run("installed pistondyn" "${prefix}/bin/pistondyn" run
 if(NOT EXISTS "${WORK_DIR}/results/cycle.csv" OR NOT EXISTS "${WORK_DIR}/results/summary.json")
   message(FATAL_ERROR "installed pistondyn wrote no results")
 endif()
+# What the installed program points its users to: the deck reference it prints itself,
+# the README and example decks beside it, the pressure-table generator with its --help.
+run("installed pistondyn keys" "${prefix}/bin/pistondyn" keys)
+foreach(f share/doc/pistondyn/README.md
+          share/doc/pistondyn/examples/engines/gasoline_1400_2000rpm/engine.yaml
+          share/doc/pistondyn/examples/studies/flooding.yaml)
+  if(NOT EXISTS "${prefix}/${f}")
+    message(FATAL_ERROR "install is missing ${f}")
+  endif()
+endforeach()
+if(EXISTS "${BUILD_DIR}/examples")
+  run("installed make_pressure_curve --help" "${prefix}/bin/make_pressure_curve" --help)
+endif()
 file(REMOVE_RECURSE "${WORK_DIR}")

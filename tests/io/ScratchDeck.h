@@ -138,6 +138,20 @@ class ScratchDeck : public ::testing::Test {
   std::string programStderr() const {
     return readFile(dir_ / "stderr.txt");
   }
+  // `pistondyn <args>` run in the scratch folder (relative paths start there): the exit
+  // code and what it printed.
+  struct ProgramRun {
+    int exitCode;
+    std::string out, err;
+  };
+  ProgramRun invokeInScratch(const std::string& args) const {
+    const std::string cmd = "cd " + dir_.string() + " && " + PISTONDYN_EXE + " " + args + " > " +
+                            (dir_ / "stdout.txt").string() + " 2> " +
+                            (dir_ / "stderr.txt").string();
+    const int status = std::system(cmd.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readFile(dir_ / "stdout.txt"),
+            readFile(dir_ / "stderr.txt")};
+  }
 #endif
 
   fs::path dir_;

@@ -171,9 +171,11 @@ TEST_F(ScratchDeck, HostileInputsAreRejectedCleanly) {
             std::string::npos);
   EXPECT_NE(rejection({"simulation.start_angle_deg=1e12"}).find("simulation.start_angle_deg"),
             std::string::npos);
-  // a section replaced by a value on the command line is named as the --set
-  EXPECT_NE(rejection({"geometry=5"}).find("--set geometry: geometry.bore_mm"), std::string::npos)
-      << rejection({"geometry=5"});
+  // a section replaced by a value on the command line: one problem, named as the --set
+  // (not one "missing key" per key of the section)
+  EXPECT_EQ(rejection({"geometry=5"}),
+            "--set geometry: 'geometry' is a section of the deck, not a value: set one of its "
+            "keys (e.g. --set geometry.bore_mm=...)");
   // a key created by --set has no line number
   const std::string m = rejection({"foo.bar=1"});
   EXPECT_NE(m.find("--set foo.bar: unknown key"), std::string::npos) << m;
@@ -195,9 +197,9 @@ TEST_F(ScratchDeck, DeckPathThatIsAFolderIsRejected) {
 TEST_F(ScratchDeck, PressureTableThatIsAFolderIsRejectedAsAFolder) {
   fs::create_directories(dir_ / "a_folder");
   const std::string m = rejection({"gas.cylinder_pressure_file=a_folder"});
-  EXPECT_NE(
-      m.find((dir_ / "a_folder").string() + ": is a folder, not a cylinder-pressure table file"),
-      std::string::npos)
+  EXPECT_NE(m.find("--set gas.cylinder_pressure_file: '" + (dir_ / "a_folder").string() +
+                   "' is a folder, not a file"),
+            std::string::npos)
       << m;
 }
 

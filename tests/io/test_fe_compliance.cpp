@@ -19,6 +19,7 @@
 #include <Eigen/Eigenvalues>
 #include <nlohmann/json.hpp>
 
+#include "GaussLegendre.h"
 #include "pistondyn/io/ComplianceInput.h"
 #include "pistondyn/io/CsvTable.h"
 #include "pistondyn/io/MatrixMarket.h"
@@ -46,30 +47,6 @@ pistondyn::mapping::StructuralCompliance load(const std::string& engine, const s
                                        stem(engine, part) + "_nodes.csv");
 }
 
-// Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_n).
-void gaussLegendre(int n, Eigen::VectorXd& x, Eigen::VectorXd& w) {
-  x.resize(n);
-  w.resize(n);
-  for (int i = 0; i < n; ++i) {
-    double z = std::cos(M_PI * (i + 0.75) / (n + 0.5)), dp = 0.0;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1.0, p1 = z;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (z * p1 - p0) / (z * z - 1.0);
-      const double dz = p1 / dp;
-      z -= dz;
-      if (std::abs(dz) < 1e-15)
-        break;
-    }
-    x[i] = z;
-    w[i] = 2.0 / ((1.0 - z * z) * dp * dp);
-  }
-}
-
 // The hat-weighted ring response of thin-shell theory: the load of the consistent nodal ring
 // at row j (total 1 N, p = N_j(a) / (2 pi R_m A_j) per unit mid-surface area) and the
 // hat-weighted mean of the deflection, the definition of make_compliance.py:
@@ -87,12 +64,11 @@ double hatRingResponse(const std::function<double(double, double)>& G, const Eig
     pieces.push_back({y[j - 1], y[j], true});
   if (j + 1 < y.size())
     pieces.push_back({y[j], y[j + 1], false});
-  Eigen::VectorXd gx, gw;
-  gaussLegendre(40, gx, gw);
+  const auto [gx, gw] = pistondyn::test::gaussLegendre(40);
   std::vector<double> pts, wts;  // quadrature of int f N_j
   double area = 0.0;
   for (const Piece& p : pieces) {
-    for (int q = 0; q < gx.size(); ++q) {
+    for (std::size_t q = 0; q < gx.size(); ++q) {
       const double s = p.a + 0.5 * (p.b - p.a) * (gx[q] + 1.0);
       const double hat = p.rising ? (s - p.a) / (p.b - p.a) : (p.b - s) / (p.b - p.a);
       pts.push_back(s);

@@ -165,7 +165,7 @@ TEST_F(LinerDeck, SummaryListsTheLinerInputsInSI) {
   const io::RunOutcome o = io::runDeck(d, out.string());
   std::ifstream in(out / "summary.json");
   const nlohmann::json j = nlohmann::json::parse(in);
-  EXPECT_EQ(j["inputs"]["liner_model"], "spring_guide");
+  EXPECT_EQ(j["inputs"]["liner"]["model"], "spring_guide");
   EXPECT_EQ(j["inputs"]["liner"]["lateral_stiffness_N_per_m"].get<double>(), 3e7);
   EXPECT_EQ(j["inputs"]["liner"]["axial_damping_Ns_per_m"].get<double>(), 2e3);
   EXPECT_EQ(j["results"]["side_force_max_N"].get<double>(), o.summary.liner->sideForceMax_N);

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "NumericCsv.h"
 #include "ProbeLiner.h"
 #include "ScratchDeck.h"
 #include "pistondyn/io/RunDeck.h"
@@ -40,37 +41,10 @@ std::vector<std::string> folderContents(const fs::path& dir) {
   return names;
 }
 
-// cycle.csv read back: column names and rows (numbers by strtod, exact for our text).
-struct Csv {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
-  std::size_t col(const std::string& name) const {
-    const auto it = std::find(columns.begin(), columns.end(), name);
-    if (it == columns.end())
-      throw std::out_of_range(name);
-    return static_cast<std::size_t>(it - columns.begin());
-  }
-};
-
+// cycle.csv read back (tests/support/NumericCsv.h).
+using Csv = pistondyn::test::NumericCsv;
 Csv readCsv(const fs::path& p) {
-  Csv c;
-  std::ifstream in(p);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#')
-      continue;
-    std::stringstream ss(line);
-    std::string f;
-    if (c.columns.empty()) {
-      while (std::getline(ss, f, ','))
-        c.columns.push_back(f);
-      continue;
-    }
-    c.rows.emplace_back();
-    while (std::getline(ss, f, ','))
-      c.rows.back().push_back(std::strtod(f.c_str(), nullptr));
-  }
-  return c;
+  return pistondyn::test::readNumericCsv(p);
 }
 
 nlohmann::json readJson(const fs::path& p) {

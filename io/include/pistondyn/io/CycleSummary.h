@@ -40,6 +40,9 @@ struct CycleSummary {
     std::optional<double> minGapOverSigmaThrust, minGapOverSigmaThrustAngle_deg;
     std::optional<double> minGapOverSigmaAntiThrust, minGapOverSigmaAntiThrustAngle_deg;
     std::optional<double> frictionWork_J;  // dissipated over the cycle, >= 0
+    // The part of it dissipated by asperity (boundary) friction, from the lubricated
+    // skirt's integrated state (plugin::LubricatedSkirtElement::getAsperityFrictionWork_J).
+    std::optional<double> asperityFrictionWork_J;
     // Friction work over the cycle / the cycle's duration: the exact time average [W].
     std::optional<double> frictionPowerMean_W;
     // Largest impact energy of the slap events that completed in the cycle [J] (0: none).
@@ -117,6 +120,7 @@ class CycleSummarySink final : public plugin::RowSink {
   double maxLateral_ = 0.0, maxTilt_ = 0.0;
   double timeAtCycleStart_s_ = 0.0, timeAtCycleEnd_s_ = 0.0;
   std::optional<double> workAtCycleStart_J_, workAtCycleEnd_J_;
+  std::optional<double> asperityWorkAtCycleStart_J_, asperityWorkAtCycleEnd_J_;
 };
 
 }  // namespace pistondyn::io

@@ -10,7 +10,9 @@
 //     returns metres; bounds and defaults are given in the key's unit, as in the deck
 //     reference;
 //   - every value read (defaults included) is recorded with its SI key for summary.json
-//     (YamlDeck::getResolvedInputs()).
+//     (YamlDeck::getResolvedInputs());
+//   - the product's own keys are read by the getters taking a DeckKey (DeckKeys.h), whose
+//     requirement, default, valid and plausible ranges come from the key table.
 //
 //   LinerElementMaker makeMyLiner(io::DeckSection& liner) {
 //     MyLiner::Parameters p;
@@ -33,7 +35,10 @@
 #include <utility>
 #include <vector>
 
+#include <stdexcept>
+
 #include "pistondyn/io/CsvTable.h"
+#include "pistondyn/io/DeckKeys.h"
 #include "pistondyn/io/Units.h"
 #include "pistondyn/io/YamlDeck.h"
 
@@ -108,6 +113,25 @@ class DeckSection {
   std::optional<CsvTable> getOptionalCsvTable(const std::string& key,
                                               const std::vector<std::string>& requiredColumns = {});
 
+  // ---- keys of the key table (DeckKeys.h) ------------------------------------------------
+  // The key's path must lie below this section. Requirement, default, valid and plausible
+  // ranges come from the key; every value read (defaults included) is recorded for
+  // summary.json. On a problem (recorded) the getters return the default or a harmless value.
+  // A number converted to SI by the key's unit (a key without a quantity: std::logic_error).
+  double getSI(const DeckKey& key);
+  // nullopt when absent without a default, or invalid.
+  std::optional<double> getOptionalSI(const DeckKey& key);
+  // A number in the key's unit (no conversion).
+  double getNumber(const DeckKey& key);
+  std::optional<double> getOptionalNumber(const DeckKey& key);
+  long getInteger(const DeckKey& key);
+  bool getBool(const DeckKey& key);
+  std::string getString(const DeckKey& key);
+  std::string getChoice(const DeckKey& key);
+  // A choice mapped to a value; the key's default names the fallback.
+  template <class T>
+  T getChoice(const DeckKey& key, const std::vector<std::pair<std::string, T>>& values);
+
   // ---- problems found by the factory's own checks -------------------------------------
   // "<file>:<line>: liner.key: <message>" (or "--set liner.key: ...").
   void addProblem(const std::string& key, const std::string& message);
@@ -123,12 +147,25 @@ class DeckSection {
                                        const std::vector<std::string>& requiredColumns,
                                        bool required);
   void record(const std::string& key, const std::string& siKey, ResolvedInput::Value value);
+  std::string relativeKey(const DeckKey& key) const;
+  std::optional<double> readKey(const DeckKey& key, bool toSI);
   std::optional<std::string> readChoice(const std::string& key,
                                         const std::vector<std::string>& choices, bool required);
 
   YamlDeck* deck_;
   std::string path_;
 };
+
+template <class T>
+T DeckSection::getChoice(const DeckKey& key,
+                         const std::vector<std::pair<std::string, T>>& values) {
+  const std::string name = getChoice(key);
+  for (const auto& v : values) {
+    if (v.first == name)
+      return v.second;
+  }
+  throw std::logic_error("DeckSection::getChoice: no value for '" + name + "' of " + key.path);
+}
 
 template <class T, class>
 T DeckSection::getChoiceOr(const std::string& key,

@@ -1,6 +1,6 @@
 #pragma once
 // An engine deck read and checked: everything needed to build and run a model, in SI.
-// Deck keys and units are listed in README.md ("Engine deck reference").
+// Deck keys, units, defaults and ranges: DeckKeys.h (`pistondyn keys`, README.md).
 
 #include <memory>
 #include <optional>
@@ -27,6 +27,12 @@ struct EngineDeck {
   std::string linerModel = "ideal_guide";  // liner.model, a name in the LinerRegistry
   LinerElementMaker makeLinerElement;      // from that model's factory
   std::vector<ResolvedInput> linerInputs;  // what the factory read (liner.*), SI keys
+  // Every key read (defaults included) in reading order, under its deck path with the unit
+  // replaced by the SI one (geometry.bore_mm -> geometry.bore_m): summary.json's inputs.
+  std::vector<ResolvedInput> inputs;
+  // Every key path the readers asked for, sections included (the schema as used; the
+  // key-table tests check it against DeckKeys.h), sorted.
+  std::vector<std::string> keysRead;
   // Crank angles [deg, in [0, 720)] of the last cycle at which a run writes the liner's
   // nodal fields (liner.field_dumps.crank_angles_deg of the lubricated skirt); output rows.
   std::vector<double> fieldDumpAngles_deg;

@@ -1,7 +1,7 @@
 #pragma once
 // The liner model `lubricated_skirt` (plugin::LubricatedSkirtElement) read from a deck's
 // liner section; registered in every LinerRegistry by default. The keys, their units,
-// defaults and ranges are listed in README.md ("Engine deck reference"); in short:
+// defaults and ranges: getLubricatedSkirtDeckKeys() (`pistondyn keys`, README.md); in short:
 //
 //   liner:
 //     model: lubricated_skirt
@@ -41,6 +41,7 @@
 // side's half arc, the arc stays below 180 deg (two sides that would overlap), and the hot
 // running clearance (skirt::calcHotRunningClearance) is not negative.
 
+#include "pistondyn/io/DeckKeys.h"
 #include "pistondyn/io/LinerRegistry.h"
 
 namespace pistondyn::io {
@@ -49,5 +50,8 @@ namespace pistondyn::io {
 // to it (file:line: liner.key: ...), sets the context (tertiary motion, stiffness, field
 // dumps) and returns the maker of a plugin::LubricatedSkirtElement.
 LinerElementMaker readLubricatedSkirt(DeckSection& liner, LinerDeckContext& context);
+
+// The keys of its section (liner.*, liner.model excepted: getEngineDeckKeys()).
+const DeckKeyTable& getLubricatedSkirtDeckKeys();
 
 }  // namespace pistondyn::io

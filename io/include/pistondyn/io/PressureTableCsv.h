@@ -9,7 +9,8 @@
 //
 // The pressure column may be pressure_Pa, pressure_kPa, pressure_bar or pressure_MPa
 // (absolute). Angles: crank angle from firing TDC, strictly increasing, covering 720
-// deg (see mbd::CylinderPressureCurve). Errors name the file and line.
+// deg (see mbd::CylinderPressureCurve). Errors name the file and line; the rows' problems
+// are reported together (up to 20 lines, then how many more).
 
 #include <string>
 
@@ -17,7 +18,9 @@
 
 namespace pistondyn::io {
 
-// Throws DeckError "<file>:<line>: ..." on any problem.
-mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath);
+// Throws DeckError "<file>:<line>: ..." on any problem. `pressureUnit`, if given, receives
+// the unit the header names ("bar" of pressure_bar).
+mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath,
+                                                std::string* pressureUnit = nullptr);
 
 }  // namespace pistondyn::io

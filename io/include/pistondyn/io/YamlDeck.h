@@ -21,6 +21,8 @@
 namespace pistondyn::io {
 
 class DeckSection;
+struct DeckKey;
+class DeckKeyTable;
 
 // Accepted values of a number, in the unit written in its key. Converts from Sign so
 // that getters take either.
@@ -29,13 +31,15 @@ struct Bounds {
   double minimum = -kInfinity;
   double maximum = kInfinity;
   bool excludeMinimum = false;
+  bool excludeMaximum = false;
 
   static Bounds any() { return {}; }
   static Bounds positive() { return {0.0, kInfinity, true}; }
   static Bounds nonNegative() { return {0.0, kInfinity, false}; }
   static Bounds between(double minimum, double maximum) { return {minimum, maximum, false}; }
   bool contains(double v) const {
-    return (excludeMinimum ? v > minimum : v >= minimum) && v <= maximum;
+    return (excludeMinimum ? v > minimum : v >= minimum) &&
+           (excludeMaximum ? v < maximum : v <= maximum);
   }
 };
 
@@ -43,7 +47,8 @@ struct Bounds {
 // siPath is the key with its unit replaced by the SI one when the getter converted it
 // ("liner.film.viscosity_mPas" -> "liner.film.viscosity_Pas"), else the key itself.
 struct ResolvedInput {
-  using Value = std::variant<double, bool, std::string, std::vector<double>>;
+  // long: a whole number of the key table (simulation.cycles), written as an integer.
+  using Value = std::variant<double, bool, std::string, std::vector<double>, long>;
   std::string path;
   std::string siPath;
   Value value;
@@ -94,6 +99,20 @@ class YamlDeck {
   // `required`) or invalid.
   std::optional<std::vector<double>> readNumberList(const std::string& path, const Bounds& bounds,
                                                     bool required, const std::string& unit = {});
+
+  // ---- keys of the key table (DeckKeys.h): requirement, default and ranges from it ----
+  // A Number or WholeNumber key in its own unit: the default when absent (nullopt without
+  // one; a problem if required), nullopt when invalid, outside the valid range or outside
+  // the plausible range unless checks.allow_implausible lists it (problems recorded, with
+  // the unit slip the value suggests).
+  std::optional<double> readKeyNumber(const DeckKey& key);
+  // Reads checks.allow_implausible (a list of key paths of `tables` that have a plausible
+  // range); call once before reading the keys it may name.
+  void readAllowedImplausible(const std::vector<const DeckKeyTable*>& tables);
+  // True if checks.allow_implausible lists `path`.
+  bool isImplausibleAllowed(const std::string& path) const;
+  // Every key a getter asked for (the schema as used), sorted.
+  std::vector<std::string> getKnownKeys() const;
 
   // A view of the section at `path` (e.g. "liner", "liner.film"; "" = the whole deck).
   // Records a problem if `path` holds a value instead of a section.

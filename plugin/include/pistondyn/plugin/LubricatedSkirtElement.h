@@ -76,6 +76,10 @@ struct LubricatedSkirtParameters {
   double oilTemperature_degC = 105.0;                 // film temperature [degC]
   lubrication::PatirChengParameters roughness;        // rq1 = liner, rq2 = skirt
   contact_forces::GreenwoodTrippParameters asperity;  // its roughness is set from `roughness`
+  // A contact law of the user's own, used on both sides instead of the Greenwood-Tripp law
+  // built from `asperity` (examples/contact_law/). Its compositeSigma_m() must be the
+  // roughness pair's sqrt(rq1^2 + rq2^2) (checked when the element joins a model).
+  std::shared_ptr<const contact_forces::AsperityContactLaw> contactLaw;
   contact_forces::BoundaryFrictionParameters boundaryFriction;  // f_dry = 0.1
   skirt::SkirtLubricationParameters lubrication;                // cavitation model, solver, wear
   SupplyFilm supplyFilm;                                        // inlet oil film

@@ -1,5 +1,6 @@
 #include "pistondyn/io/YamlDeck.h"
 
+#include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include "pistondyn/common/Validation.h"
 #include "pistondyn/io/DeckError.h"
@@ -35,6 +37,48 @@ std::vector<std::string> splitPath(const std::string& path) {
 // ":<line>" for a node read from the file; "" for one created by --set (no position).
 std::string lineText(const YAML::Mark& mark) {
   return mark.line >= 0 ? ":" + std::to_string(mark.line + 1) : std::string();
+}
+
+// Counts document starts and keeps the second one's position; builds nothing.
+class DocumentCounter final : public YAML::EventHandler {
+ public:
+  void OnDocumentStart(const YAML::Mark& mark) override {
+    if (++count_ == 2)
+      secondStart_ = mark;
+  }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+
+  int getCount() const { return count_; }
+  const YAML::Mark& getSecondStart() const { return secondStart_; }
+
+ private:
+  int count_ = 0;
+  YAML::Mark secondStart_;
+};
+
+// Whether the text holds a second document, and where it starts. Not YAML::LoadAll:
+// yaml-cpp 0.7 (Debian 12) loops for ever, allocating, when a document's first token is
+// one its parser does not consume (a lone ',': yaml-cpp issue #1040, fixed upstream in
+// PR #1319). Here at most two documents are parsed, so every input ends.
+std::optional<YAML::Mark> secondDocumentStart(const std::string& text) {
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  DocumentCounter counter;
+  for (int i = 0; i < 2 && parser.HandleNextDocument(counter); ++i) {
+  }
+  if (counter.getCount() < 2)
+    return std::nullopt;
+  return counter.getSecondStart();
 }
 
 }  // namespace
@@ -97,9 +141,11 @@ YamlDeck::YamlDeck(std::string filePath) : impl_(std::make_unique<Impl>()) {
                     ": holds a NUL byte: a deck is UTF-8 text (a binary file, or saved as "
                     "UTF-16?)");
   }
-  std::vector<YAML::Node> documents;
+  std::optional<YAML::Mark> secondDocument;
   try {
-    documents = YAML::LoadAll(*text);
+    root_ = YAML::Load(*text);  // the first document only
+    if (root_.IsMap())
+      secondDocument = secondDocumentStart(*text);
   } catch (const YAML::ParserException& e) {
     // yaml-cpp's depth guard (YAML::DeepRecursion, 2000 levels) says only "bad file".
     if (e.msg == YAML::ErrorMsg::BAD_FILE) {
@@ -111,14 +157,12 @@ YamlDeck::YamlDeck(std::string filePath) : impl_(std::make_unique<Impl>()) {
   } catch (const std::exception& e) {
     throw DeckError(filePath_ + ": cannot read the deck file: " + e.what());
   }
-  if (documents.size() > 1) {
-    throw DeckError(filePath_ + lineText(documents[1].Mark()) +
+  if (secondDocument) {
+    throw DeckError(filePath_ + lineText(*secondDocument) +
                     ": a second YAML document (after '---'): a deck is one document, and "
                     "nothing after the first would be read; remove the '---' line or merge "
                     "the documents");
   }
-  if (!documents.empty())
-    root_ = documents.front();
   if (!root_.IsMap()) {
     throw DeckError(filePath_ +
                     ": the deck must be a YAML mapping of sections (engine:, "

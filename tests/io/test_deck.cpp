@@ -108,6 +108,18 @@ TEST_F(ScratchDeck, InvalidYamlNamesTheLine) {
   EXPECT_NE(m.find("not valid YAML"), std::string::npos) << m;
 }
 
+// yaml-cpp 0.7's LoadAll loops for ever, allocating, on a document that starts with ','
+// (yaml-cpp issue #1040; the fuzzer found it, fuzz/regressions/deck/). The deck reader
+// parses at most two documents, so these end with a message instead of a hang.
+TEST_F(ScratchDeck, DocumentsThatStartWithACommaAreRejectedNotLoopedOn) {
+  std::ofstream(deck(), std::ios::trunc) << ",\n";
+  EXPECT_NE(rejection().find("must be a YAML mapping"), std::string::npos) << rejection();
+  SetUp();
+  std::ofstream(deck(), std::ios::app) << "---\n,\n";
+  const std::string m = rejection();
+  EXPECT_NE(m.find("a second YAML document (after '---')"), std::string::npos) << m;
+}
+
 TEST_F(ScratchDeck, OverridesAreAppliedAndBadOnesNamed) {
   const auto d = pistondyn::io::loadEngineDeck(deck(), {"drive.speed_rpm=3000"});
   EXPECT_DOUBLE_EQ(d.engine.drive.speed_radps, 3000 * M_PI / 30);

@@ -24,6 +24,10 @@ constexpr double kLooseFraction = 3e-2;   // inexact solves while the active set
 // set grow monotonically between reformations, which breaks such cycles. The first steps keep
 // the plain rule, so solves that settle within them (warm-started calls take 1-3) are unchanged.
 constexpr int kDeferReformationAfter = 6;
+// Automatic after a multigrid failure: calls with the factorisation before multigrid is tried
+// again, doubled after every further failure up to the longest pause (ActiveSetSolver.h).
+constexpr int kMultigridFirstPause = 8;
+constexpr int kMultigridLongestPause = 1024;
 
 }  // namespace
 
@@ -33,7 +37,8 @@ void ActiveSetSolver::prepare(const FilmSystem& sys) {
   pat_.build(sys);
   mg_.prepare(sys);
   mgBuilt_ = false;
-  mgGaveUp_ = false;
+  mgPausedCalls_ = 0;
+  mgPause_ = kMultigridFirstPause;
   shapeN_ = sys.n;
   shapeNx_ = sys.nx;
   shapePeriodic_ = sys.periodicX;
@@ -305,9 +310,13 @@ bool ActiveSetSolver::linearSolveMultigrid(const FilmSystem& s, double* b, doubl
       break;
     fresh = rebuildMultigrid(s);
   }
-  // Multigrid does not suit this operator (e.g. opposite anisotropies in one grid): Automatic
-  // uses the factorisation from the next call on, for this grid shape.
-  mgGaveUp_ = true;
+  // Multigrid does not suit this operator (e.g. opposite anisotropies in one grid, or a
+  // degenerate one such as a steady film without sliding): Automatic factorises for the next
+  // mgPause_ calls, twice as many after each further failure (at most kMultigridLongestPause),
+  // and tries multigrid again after them: one bad operator must not cost the rest of a run.
+  gaveUpThisCall_ = true;
+  mgPausedCalls_ = mgPause_;
+  mgPause_ = std::min(2 * mgPause_, kMultigridLongestPause);
   if (!valuesCurrent_)
     fillValues(s);
   // Fresh pivots: the Krylov failure says this operator differs from any earlier one.
@@ -525,9 +534,13 @@ bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target,
 
 IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& opt) {
   prepare(s);
+  const bool paused = mgPausedCalls_ > 0;
+  if (paused)
+    --mgPausedCalls_;
   const bool mg =
       opt.linearSolver == FastLinearSolver::Multigrid ||
-      (opt.linearSolver == FastLinearSolver::Automatic && s.n >= kMultigridMinNodes && !mgGaveUp_);
+      (opt.linearSolver == FastLinearSolver::Automatic && s.n >= kMultigridMinNodes && !paused);
+  gaveUpThisCall_ = false;
   if (mg != useMg_) {
     // The lagged preconditioner of the other path is stale: start afresh.
     useMg_ = mg;
@@ -623,6 +636,8 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
     rep.residual = s.relativeResidual();
     if (rep.residual <= tol) {
       rep.converged = true;
+      if (useMg_ && !gaveUpThisCall_)
+        mgPause_ = kMultigridFirstPause;  // multigrid suits the operator again
       return rep;
     }
     // Same sets but not yet accurate (inexact inner solve, round-off): another Newton step.

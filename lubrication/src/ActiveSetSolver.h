@@ -32,7 +32,10 @@
 // refreshed by the same cost balance (their build cost in Krylov iterations from operation
 // counts; the first solve after a rebuild is iterative too). Should the Krylov solve fail even
 // with a fresh hierarchy, the current Jacobian is factorised (CHOLMOD / KLU) and solved
-// directly; Automatic then keeps to the factorisation for this grid shape.
+// directly; Automatic then factorises for a pause of 8 calls, doubled after each further
+// failure up to 1024, and tries multigrid again after it (a multigrid call that succeeds
+// resets the pause): a degenerate first call of a run (a steady film without sliding at
+// TDC) once left a whole engine cycle on KLU, 3-4 times slower per solve.
 
 #include <Eigen/Core>
 
@@ -95,7 +98,11 @@ class ActiveSetSolver {
   GridMultigrid mg_;
   bool useMg_ = false;
   bool mgBuilt_ = false;
-  bool mgGaveUp_ = false;       // multigrid failed once at this grid shape: Automatic factorises
+  // Automatic after a multigrid failure: calls left with the factorisation, and the next pause
+  // (doubled per failure, reset when a multigrid call succeeds).
+  int mgPausedCalls_ = 0;
+  int mgPause_ = 0;
+  bool gaveUpThisCall_ = false;
   bool valuesCurrent_ = false;  // pat_.values hold the current Jacobian (multigrid mode)
   int multigridBuilds_ = 0;
   CholmodLdl chol_;

@@ -1,5 +1,6 @@
 #include "FilmPostprocess.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pistondyn::lubrication::detail {
@@ -83,9 +84,27 @@ void postprocess(const FilmGrid& grid, const FilmProblem& pr, const FilmSystem& 
     st.cavitated[k] = s.status[k] == kCav ? 1 : 0;
     res.cavitatedNodes += st.cavitated[k];
   }
+  // Mass-conserving model: an edge node at p_cav that no oil enters through holds the oil the
+  // film brings to it, i.e. the fill fraction of the node inside it (diagonally at a corner),
+  // not the full film its fixed pressure was solved with. Counting it full once put a full-film
+  // shear on a strip half a cell wide around a starved skirt, which outweighed the starved
+  // interior's shear and made fmep depend on the cell size.
+  if (s.jfo) {
+    for (int j = 0; j < ny; ++j) {
+      const int jIn = std::clamp(j, 1, ny - 2);
+      for (int i = 0; i < nx; ++i) {
+        const int k = i + nx * j;
+        if (!s.fillFromInterior[k])
+          continue;
+        const int iIn = s.periodicX ? i : std::clamp(i, 1, nx - 2);
+        st.fillFraction[k] = s.theta[iIn + nx * jIn];
+      }
+    }
+  }
 
   const Eigen::ArrayXd& A = grid.areaWeights_m2();
   res.areaWeights_m2 = A;
+  res.expectedGap_m = s.hT;
   const Eigen::Vector2d& c = pr.momentPoint_m;
   const double pref = pr.referencePressure_Pa;
   const LoadAndMoments lm = integrateLoad(grid, c, n, [&](int k) { return s.p[k] - pref; });

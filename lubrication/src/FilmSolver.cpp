@@ -122,6 +122,20 @@ void validate(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm
         fail("problem.previousFillFraction2[", k, "] = ", t, " must lie in [0, 1]");
     }
   }
+  checkSize(pr.previousExpectedGap_m.size(), n, "problem.previousExpectedGap_m", true);
+  checkSize(pr.previousExpectedGap2_m.size(), n, "problem.previousExpectedGap2_m", true);
+  if (pr.previousExpectedGap_m.size() > 0 && pr.previousFillFraction.size() != n)
+    fail("problem.previousExpectedGap_m needs problem.previousFillFraction");
+  if (pr.previousExpectedGap2_m.size() > 0 && (pr.previousFillFraction2.size() != n ||
+                                                pr.previousExpectedGap_m.size() != n))
+    fail("problem.previousExpectedGap2_m needs problem.previousFillFraction2 and "
+         "problem.previousExpectedGap_m");
+  for (const Eigen::ArrayXd* a : {&pr.previousExpectedGap_m, &pr.previousExpectedGap2_m})
+    for (Eigen::Index k = 0; k < a->size(); ++k)
+      if (!(std::isfinite((*a)[k]) && (*a)[k] > 0.0))
+        fail(a == &pr.previousExpectedGap_m ? "problem.previousExpectedGap_m["
+                                            : "problem.previousExpectedGap2_m[",
+             k, "] = ", (*a)[k], " m must be positive and finite");
   if (pr.squeezeBasis.cols() > 0) {
     if (pr.squeezeBasis.rows() != n)
       fail("problem.squeezeBasis has ", pr.squeezeBasis.rows(), " rows, expected ", n,
@@ -145,6 +159,7 @@ void validate(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm
 void validateOptions(const FilmSolverOptions& o) {
   constexpr const char* kSetOptions = "FilmSolver::setOptions";
   common::requirePositiveFinite(o.tolerance, kSetOptions, "tolerance", "");
+  common::requirePositiveFinite(o.derivativeTolerance, kSetOptions, "derivativeTolerance", "");
   if (!(o.overRelaxation > 0.0 && o.overRelaxation < 2.0))
     common::throwInvalidArgument(
         kSetOptions, common::message("overRelaxation = ", o.overRelaxation, " must lie in (0, 2)"));
@@ -283,7 +298,7 @@ void FilmSolver::Impl::solve(const FilmGrid& grid, const FilmProblem& pr, const 
     for (Eigen::Index c = 0; c < m; ++c)
       for (int k = 0; k < sys.n; ++k)
         derivRhs(k, c) = -sys.theta[k] * area[k] * sys.dhTdh[k] * pr.squeezeBasis(k, c);
-    fast.solveWithCurrentSet(sys, derivRhs, options.tolerance);
+    fast.solveWithCurrentSet(sys, derivRhs, options.derivativeTolerance);
     for (int k = 0; k < sys.n; ++k)
       if (sys.status[k] != detail::kFull)
         derivRhs.row(k).setZero();

@@ -48,6 +48,7 @@ void FilmSystem::resizeFor(const FilmGrid& grid) {
   inIy.assign(n, 0);
   status.assign(n, kFull);
   dry.assign(n, 0);
+  fillFromInterior.assign(n, 0);
 }
 
 void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
@@ -162,6 +163,12 @@ void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
   const double w = bdf2 ? pr.timeStep_s / pr.previousTimeStep_s : 0.0;
   const double c0 = bdf2 ? (1.0 + 2.0 * w) / (1.0 + w) : 1.0;
   const double cn = bdf2 ? (1.0 + w) / c0 : 1.0, cn1 = bdf2 ? -w * w / (1.0 + w) / c0 : 0.0;
+  // With the previous expected gaps (FilmProblem::previousExpectedGap_m) the capacity and the
+  // reference take hT_n (and hT_{n-1}) instead of this step's hT, which keeps the oil content
+  // of a cavitated node whose gap moves linearly over the step (FilmProblem.h).
+  const bool prevGap = transient && hasPrev && pr.previousExpectedGap_m.size() == n;
+  const bool prevGap2 = bdf2 && prevGap && pr.previousExpectedGap2_m.size() == n;
+  const double wn = 1.0 + w, wn1 = w * w / (1.0 + w);
   for (int k = 0; k < n; ++k) {
     const double rate = hasRate ? pr.gapRate_mps[k] : 0.0;
     squeeze[k] = area[k] * dhTdh[k] * rate;
@@ -169,12 +176,28 @@ void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
     thetaPrev[k] = (jfo && hasPrev) ? pr.previousFillFraction[k] : 1.0;
     if (bdf2)
       thetaPrev[k] = cn * pr.previousFillFraction[k] + cn1 * pr.previousFillFraction2[k];
+    if (prevGap) {
+      const double hn = pr.previousExpectedGap_m[k];
+      const double scale = area[k] / pr.timeStep_s;
+      const double hn1 = prevGap2 ? pr.previousExpectedGap2_m[k] : hn;
+      const double cap = bdf2 ? wn * hn - wn1 * hn1 : 0.0;
+      if (bdf2 && cap >= 0.5 * c0 * hn) {
+        capacity[k] = scale * cap;
+        thetaPrev[k] = (wn * hn * pr.previousFillFraction[k] -
+                        wn1 * hn1 * pr.previousFillFraction2[k]) / cap;
+      } else {
+        // Backward Euler (also a BDF2 node whose gap shrank too fast for a positive capacity).
+        capacity[k] = scale * hn;
+        thetaPrev[k] = pr.previousFillFraction[k];
+      }
+    }
     thetaCoef[k] = aOut[k] + squeeze[k] + capacity[k];
   }
 
   // ---- fixed nodes: open edges, starved inlets, dry zones ----
   std::fill(status.begin(), status.end(), static_cast<std::uint8_t>(kFull));
   std::fill(dry.begin(), dry.end(), static_cast<std::uint8_t>(0));
+  std::fill(fillFromInterior.begin(), fillFromInterior.end(), static_cast<std::uint8_t>(0));
   fixedTheta.setOnes();
   fixedPressure.setZero();
   const FilmBoundary& b = pr.boundary;
@@ -187,6 +210,9 @@ void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
     status[k] = kFixed;
     fixedPressure[k] = edge.pressure_Pa;
     fixedTheta[k] = 1.0;
+    // An edge above p_cav is the oil bath at that pressure (full); one at p_cav that no oil
+    // enters through holds what the film carries there (FilmSystem.h).
+    fillFromInterior[k] = jfo && !(normalSpeed > 0.0) && !(edge.pressure_Pa > pCav);
     if (!(normalSpeed > 0.0))
       return;
     const double s = edgeSupply(edge, along);

@@ -51,6 +51,10 @@ struct FilmSystem {
 
   std::vector<std::uint8_t> status;  // NodeStatus per node
   std::vector<std::uint8_t> dry;     // 1: dry node of the Reynolds partial-flooding heuristic
+  // 1: mass-conserving model, a fixed edge node that no oil enters through (an outflow edge, or
+  // one the sliding runs along) at or below p_cav: it holds the oil the film brings, so its
+  // reported fill fraction is that of the node inside it (FilmPostprocess), not a full film.
+  std::vector<std::uint8_t> fillFromInterior;
   Eigen::ArrayXd fixedPressure;      // pressure of fixed nodes
   Eigen::ArrayXd fixedTheta;         // fill fraction of fixed nodes (JFO inflow content)
 

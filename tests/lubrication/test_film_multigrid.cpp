@@ -353,6 +353,47 @@ TEST(FilmMultigrid, FallsBackToFactorisationWhenKrylovFails) {
   EXPECT_EQ(second.multigridBuilds, 0);
 }
 
+// Automatic does not keep to the factorisation for good after a multigrid failure: on a grid
+// shape where multigrid works (a uniform 64 x 40 pad), one call with an operator it cannot
+// handle (the opposite anisotropies above, same shape) is factorised, the next calls are too
+// (a pause of 8), and then multigrid is back and stays (no further factorisation). Before,
+// Automatic kept to the factorisation for the grid shape: a skirt cycle whose first call was a
+// degenerate steady film at TDC ran on KLU throughout.
+TEST(FilmMultigrid, AutomaticReturnsToMultigridAfterAFailure) {
+  const test::InclinedSlider s;
+  const double dy = s.length_m / 39;
+  Eigen::VectorXd x(64);
+  for (int i = 0; i < 64; ++i)
+    x[i] = i < 32 ? i * dy / 300 : 31 * dy / 300 + (i - 31) * 40 * dy;
+  const FilmGrid bad =
+      FilmGrid::fromCoordinates(x, FilmGrid::clusteredCoordinates(40, 0.0, s.length_m, 0.0));
+  const FilmGrid good = FilmGrid::uniform(64, 0.02, 40, s.length_m);
+  FilmProblem badProblem = s.problem(bad), goodProblem = s.problem(good);
+  badProblem.cavitation = goodProblem.cavitation = CavitationModel::Reynolds;
+  FilmSolver automatic(test::tightOptions(FilmSolverType::FastActiveSet, 1e-10));
+  const FilmResult before = automatic.solve(good, goodProblem);
+  ASSERT_TRUE(before.converged);
+  ASSERT_EQ(before.factorisations, 0);  // multigrid suits the uniform pad
+  const FilmResult failed = automatic.solve(bad, badProblem);
+  ASSERT_TRUE(failed.converged);
+  ASSERT_GE(failed.factorisations, 1);  // multigrid failed and the matrix was factorised
+  int firstMultigridCall = -1;
+  FilmResult r = before;
+  for (int call = 1; call <= 20; ++call) {
+    // A slightly different problem each call, as in a time integration (the warm start alone
+    // would settle an unchanged one without a linear solve).
+    goodProblem.slidingVelocity_mps.y() = s.speed_mps * (1.0 + 0.01 * call);
+    r = automatic.solve(good, goodProblem, &r.state);
+    ASSERT_TRUE(r.converged);
+    if (firstMultigridCall < 0 && r.multigridBuilds > 0)
+      firstMultigridCall = call;
+    if (firstMultigridCall > 0 && call > firstMultigridCall)
+      EXPECT_EQ(r.factorisations, 0) << "call " << call;
+  }
+  test::reportFigure("multigrid.callsBeforeRetry", firstMultigridCall);
+  EXPECT_EQ(firstMultigridCall, 9);  // after the pause of 8 calls
+}
+
 // Grid-aligned anisotropy is handled by semi-coarsening: the same pad with cells 1, 10 and 100
 // times longer along y than along x (and the transposed grids) needs about the same number of
 // iterations (asserted: at most 1.5 times the isotropic count) and no factorisation.

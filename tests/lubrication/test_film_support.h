@@ -304,6 +304,7 @@ inline FilmSolverOptions tightOptions(FilmSolverType type, double tolerance) {
   FilmSolverOptions o;
   o.solver = type;
   o.tolerance = tolerance;
+  o.derivativeTolerance = tolerance;  // derivatives as accurate as the film in the tests
   o.maxSweeps = 1000000;
   return o;
 }

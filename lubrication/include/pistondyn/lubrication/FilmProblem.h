@@ -120,6 +120,23 @@ struct FilmProblem {
   // integration is second order, so that the film's history does not limit it to first.
   Eigen::ArrayXd previousFillFraction2;
   double previousTimeStep_s = std::numeric_limits<double>::quiet_NaN();
+  // Optional, recommended whenever the gap moves: the expected gap hT at the start of the
+  // step, per node [m] (FilmResult::expectedGap_m of the solve that gave previousFillFraction),
+  // and for the BDF2 history the one a step earlier (previousExpectedGap2_m, with
+  // previousFillFraction2). The storage term d(theta hT)/dt is then split as
+  //   theta dhT/dt  +  [hT_n (theta - theta_n)] / h                        (backward Euler)
+  //   theta dhT/dt  +  [(1 + w) hT_n (theta - theta_n)
+  //                     - w^2/(1 + w) hT_{n-1} (theta - theta_{n-1})] / h   (BDF2)
+  // with the instantaneous squeeze rate dhT/dt of gapRate_mps, so a full film still sees the
+  // exact squeeze term, while a cavitated node whose gap moves linearly over the step keeps
+  // its oil content theta hT exactly. Without them hT of THIS step stands for hT_n (and
+  // hT_{n-1}): that form is exact only for a fixed gap and, where the gap closes within a
+  // step, creates oil, without bound as the closure approaches the gap (theta_{n+1} =
+  // theta_n hT / (hT + dhT/dt h)). A BDF2 node whose capacity (1 + w) hT_n - w^2/(1 + w)
+  // hT_{n-1} is not at least half of c0 hT_n (a gap that shrank by more than ~2x in one step)
+  // takes the backward-Euler form for that step. Empty (default): hT of this step.
+  Eigen::ArrayXd previousExpectedGap_m;
+  Eigen::ArrayXd previousExpectedGap2_m;
 
   // Optional squeeze basis: column m is d(gapRate)/d(v_m) per node ([m/s per unit v_m]) for a
   // generalised velocity v_m. The result then holds d(p)/d(v_m) and the derivatives of load and
@@ -136,8 +153,9 @@ struct FilmProblem {
 enum class FastLinearSolver {
   // Multigrid from kMultigridMinNodes grid nodes up, SparseDirect below (BENCHMARKS.md: the
   // lagged factorisation is the cheaper one on small grids, multigrid grows linearly with the
-  // grid). Should a multigrid solve ever fail (it then factorises that matrix), the solver object
-  // keeps to SparseDirect for the grid shape.
+  // grid). Should a multigrid solve fail (it then factorises that matrix), the solver object
+  // uses SparseDirect for the next 8 calls (16, 32, ... up to 1024 after further failures) and
+  // then tries multigrid again.
   Automatic,
   // Lagged sparse factorisation: CHOLMOD LDL' (AMD ordering, drift-rescaled) for PCG on the
   // symmetric Reynolds / full-Sommerfeld systems, KLU for GMRES on the mass-conserving ones.
@@ -166,6 +184,12 @@ struct FilmState {
 struct FilmSolverOptions {
   FilmSolverType solver = FilmSolverType::FastActiveSet;  // default: the fast solver
   double tolerance = 1e-8;  // relative residual (see top of file), default 1e-8
+  // Relative accuracy of the squeeze-derivative solves (FilmResult::dPressure_dVelocity, each
+  // column to this fraction of its right-hand side's largest entry), default 1e-6. They
+  // serve the Jacobians of implicit steppers, whose Newton iterations converge with an
+  // approximate Jacobian: they need not be as accurate as the film itself (each column is a
+  // Krylov solve of its own; BENCHMARKS.md has what the looser default saves).
+  double derivativeTolerance = 1e-6;
   int maxSweeps = 200000;   // Gauss-Seidel sweeps before giving up, default 200000
   // SOR factor of the pressure update, (0, 2), default 1.8. The best value grows with the grid
   // (the best values found on the skirt benchmark are in BENCHMARKS.md).
@@ -200,6 +224,10 @@ struct FilmResult {
   const Eigen::ArrayXd& fillFraction() const { return state.fillFraction; }
 
   Eigen::ArrayXd areaWeights_m2;  // nodal area weights (copy of the grid's), [m^2]
+  // Expected gap hT per node, [m] (the nominal gap h without a flow-factor model): the oil
+  // content of a node is theta hT per area. Pass it as FilmProblem::previousExpectedGap_m of
+  // the next transient step.
+  Eigen::ArrayXd expectedGap_m;
 
   // Load = integral of (p - referencePressure) over the film (exact for the bilinear field), [N]
   double load_N = 0.0;

@@ -12,10 +12,11 @@
 namespace pistondyn::plugin {
 namespace {
 
-// One accepted point of the trajectory: time and free coordinates y = (q_f, u_f, z).
+// One accepted point of the trajectory: time, free coordinates y = (q_f, u_f, z) and their
+// time derivatives f there (every accepted point is evaluated).
 struct Point {
   double t = 0.0;
-  Eigen::VectorXd y;
+  Eigen::VectorXd y, f;
 };
 
 // Times and step sizes in messages: the shortest text that reads back to the same double.
@@ -33,33 +34,31 @@ struct LinearlyImplicitStepper::Impl {
   LinearlyImplicitStepperStats stats;
   FailureDescriber describe;
 
-  // Three states, held by pointer so that acceptance swaps pointers instead of copying:
-  //  base     the start of the next step, with the history installed (after the swap of
-  //           the auto-update variables): the trial of each step is a copy of it;
-  //  current  the accepted state getState() returns, with the history of the step that
-  //           led to it NOT yet installed, so that realizing it (an output row) evaluates
-  //           the elements exactly as that step did (t - lastUpdateTime = h) and
-  //           recomputes the update values there;
-  //  trial    scratch for the predictor evaluation.
-  // Simbody keeps update values only while q and u are unchanged, and a State copy keeps
-  // only what was realized through Stage::Instance: hence the swap into the trial right
-  // after its evaluation, before the corrected y is installed.
-  std::unique_ptr<SimTK::State> basePtr = std::make_unique<SimTK::State>();
+  // Two states, held by pointer so that acceptance swaps pointers instead of copying:
+  //  current  the accepted state getState() returns: the evaluated iterate of the last step,
+  //           realized, with the history of that step installed (the auto-update variables
+  //           swapped in place: the swap and the corrected z invalidate Stage::Dynamics only,
+  //           so the element results cached at that state stay valid and an output row
+  //           reads them instead of evaluating the elements again); every iterate of the
+  //           next step is a copy of it;
+  //  trial    the iterate being evaluated.
+  // Simbody keeps update values only while t, q and u are unchanged, and a State copy keeps
+  // only what was realized through Stage::Instance: hence the swap in place in the
+  // evaluated iterate itself.
   std::unique_ptr<SimTK::State> currentPtr = std::make_unique<SimTK::State>();
   std::unique_ptr<SimTK::State> trialPtr = std::make_unique<SimTK::State>();
-  bool currentAwaitsSwap = false;  // current holds an accepted step's end, history pending
   SimTK::Array_<SimTK::QIndex> freeQ;
   SimTK::Array_<SimTK::UIndex> freeU;
   int nq = 0, nu = 0, nz = 0, n = 0;
   Eigen::VectorXd absTol;        // per q_f, u_f entry
   std::array<Point, 3> history;  // history[0] newest accepted point
   int historySize = 0;
-  Eigen::VectorXd f0;  // derivative at the initial state (first predictor)
   double hNext = 0.0;  // proposed next step
   int failuresInRow = 0;
 
   // Workspaces (sized at initialize).
-  Eigen::VectorXd yp, fp, r, delta, y1, weights;
+  Eigen::VectorXd yp, fpred, ft, base, r, delta, y, weights;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu;  // of A = M - g C - g^2 K for the current g
   Eigen::MatrixXd M, K, C, A;
   SimTK::Matrix mFull;
   ForceJacobian jac;
@@ -172,24 +171,62 @@ struct LinearlyImplicitStepper::Impl {
     nz = current.getNZ();
     n = nq + nu + nz;
     system.prescribe(current);
-    std::string reason;
-    if (!evaluate(current, reason))
-      fail(current.getTime(), "initial state: " + reason);
-    computeTolerances(current);
-    derivatives(current, f0);
-    current.autoUpdateDiscreteVariables();
-    *basePtr = current;
-    currentAwaitsSwap = false;
-    history[0].t = current.getTime();
-    pack(current, history[0].y);
-    historySize = 1;
-    hNext = std::min(options.initialStep_s, options.maxStep_s);
-    failuresInRow = 0;
     M.resize(nu, nu);
     K.resize(nu, nq);
     C.resize(nu, nu);
     A.resize(nu, nu);
     weights.resize(nq + nu);
+    std::string reason;
+    if (!evaluate(current, reason))
+      fail(current.getTime(), "initial state: " + reason);
+    computeTolerances(current);
+    updateJacobian(current);
+    history[0].t = current.getTime();
+    pack(current, history[0].y);
+    derivatives(current, history[0].f);
+    current.autoUpdateDiscreteVariables();
+    historySize = 1;
+    hNext = std::min(options.initialStep_s, options.maxStep_s);
+    failuresInRow = 0;
+  }
+
+  // M, K = d f_gen / d q and C = d f_gen / d u of the free mobilities at an evaluated state
+  // (the elements' parts, ForceElement::addForceJacobian).
+  void updateJacobian(const SimTK::State& s) {
+    matter.calcM(s, mFull);
+    model.calcElementForceJacobian(s, jac);
+    for (int i = 0; i < nu; ++i) {
+      for (int j = 0; j < nu; ++j) {
+        M(i, j) = mFull(freeU[i], freeU[j]);
+        C(i, j) = jac.dfdu(freeU[i], freeU[j]);
+      }
+      for (int j = 0; j < nq; ++j)
+        K(i, j) = jac.dfdq(freeU[i], freeQ[j]);
+    }
+  }
+
+  // Solves (I - g W) d = rhs for W = [[0, I, 0], [M^-1 K, M^-1 C, 0], [0, 0, 0]] with the
+  // factorisation `lu` of A = M - g C - g^2 K.
+  void solveCorrection(double g, const Eigen::VectorXd& rhs, Eigen::VectorXd& d) const {
+    const Eigen::VectorXd rq = rhs.head(nq), ru = rhs.segment(nq, nu);
+    const Eigen::VectorXd du = lu.solve(M * ru + g * (K * rq));
+    d.resize(n);
+    d.head(nq) = rq + g * du;
+    d.segment(nq, nu) = du;
+    if (nz > 0)
+      d.tail(nz) = rhs.tail(nz);
+  }
+
+  // Weighted RMS norm of v over (q_f, u_f) in units of the absolute tolerances.
+  double weightedNorm(const Eigen::VectorXd& v, double scale) const {
+    double sum = 0.0;
+    for (int i = 0; i < nq + nu; ++i) {
+      const double tol = absTol[i] + options.relativeTolerance *
+                                         std::max(std::abs(history[0].y[i]), std::abs(y[i]));
+      const double e = scale * v[i] / tol;
+      sum += e * e;
+    }
+    return nq + nu > 0 ? std::sqrt(sum / (nq + nu)) : 0.0;
   }
 
   // Error constants (solution error / y''' or y'') of the corrector and of the predictor
@@ -210,16 +247,20 @@ struct LinearlyImplicitStepper::Impl {
     return ec / (ec - ep);
   }
 
-  void predict(double h, Eigen::VectorXd& y) const {
+  // Extrapolates the accepted points' y and f to t0 + h (the same polynomial weights).
+  void predict(double h, Eigen::VectorXd& yOut, Eigen::VectorXd& fOut) const {
     const Point& p0 = history[0];
     if (historySize == 1) {
-      y = p0.y + h * f0;
+      yOut = p0.y + h * p0.f;
+      fOut = p0.f;
       return;
     }
     const Point& p1 = history[1];
     const double t = p0.t + h;
     if (historySize == 2) {
-      y = p0.y + (t - p0.t) / (p0.t - p1.t) * (p0.y - p1.y);
+      const double w = (t - p0.t) / (p0.t - p1.t);
+      yOut = p0.y + w * (p0.y - p1.y);
+      fOut = p0.f + w * (p0.f - p1.f);
       return;
     }
     const Point& p2 = history[2];
@@ -227,7 +268,18 @@ struct LinearlyImplicitStepper::Impl {
     const double l0 = (t - p1.t) * (t - p2.t) / ((p0.t - p1.t) * (p0.t - p2.t));
     const double l1 = (t - p0.t) * (t - p2.t) / ((p1.t - p0.t) * (p1.t - p2.t));
     const double l2 = (t - p0.t) * (t - p1.t) / ((p2.t - p0.t) * (p2.t - p1.t));
-    y = l0 * p0.y + l1 * p1.y + l2 * p2.y;
+    yOut = l0 * p0.y + l1 * p1.y + l2 * p2.y;
+    fOut = l0 * p0.f + l1 * p1.f + l2 * p2.f;
+  }
+
+  // A step that did not work out: count it, give up after too many in a row, retry shorter.
+  bool retry(double t1, double h, double shrink, const std::string& what) {
+    if (++failuresInRow > options.maxConsecutiveFailures) {
+      fail(t1, what + " " + std::to_string(failuresInRow) +
+                   " times in a row, the last at step size " + formatTime(h) + " s");
+    }
+    hNext = shrink * h;
+    return false;
   }
 
   // Tries one step from the newest point to t1 (h = t1 - t0). Returns true if accepted;
@@ -235,23 +287,9 @@ struct LinearlyImplicitStepper::Impl {
   bool tryStep(double t1) {
     const double t0 = history[0].t, h = t1 - t0;
     const int order = historySize >= 3 ? 2 : 1;
-    predict(h, yp);
-    SimTK::State& trial = *trialPtr;
-    trial = *basePtr;
-    unpack(yp, t1, trial);
-    std::string reason;
-    if (!evaluate(trial, reason)) {
-      ++stats.failedEvaluations;
-      if (++failuresInRow > options.maxConsecutiveFailures) {
-        fail(t1, "the force evaluation failed " + std::to_string(failuresInRow) +
-                     " times in a row, the last at step size " + formatTime(h) + " s: " + reason);
-      }
-      hNext = 0.25 * h;
-      return false;
-    }
-    derivatives(trial, fp);
+    predict(h, yp, fpred);
 
-    // BDF coefficients.
+    // BDF coefficients: y1 = a0 y_n + a1 y_{n-1} + g f(y1).
     double a0 = 1.0, a1 = 0.0, beta = 1.0;
     if (order == 2) {
       const double w = h / (t0 - history[1].t);
@@ -260,79 +298,83 @@ struct LinearlyImplicitStepper::Impl {
       beta = (1.0 + w) / (1.0 + 2.0 * w);
     }
     const double g = beta * h;
-    r = a0 * history[0].y - yp + g * fp;
+    base = a0 * history[0].y;
     if (order == 2)
-      r += a1 * history[1].y;
+      base += a1 * history[1].y;
 
-    // The approximate Jacobian at the predictor.
-    matter.calcM(trial, mFull);
-    model.calcElementForceJacobian(trial, jac);
-    for (int i = 0; i < nu; ++i) {
-      for (int j = 0; j < nu; ++j) {
-        M(i, j) = mFull(freeU[i], freeU[j]);
-        C(i, j) = jac.dfdu(freeU[i], freeU[j]);
-      }
-      for (int j = 0; j < nq; ++j)
-        K(i, j) = jac.dfdq(freeU[i], freeQ[j]);
-    }
+    // First iterate: one linearised step from the predictor with the extrapolated
+    // derivative and the Jacobian of the last evaluated state (no evaluation yet).
     A = M - g * C - g * g * K;
-    const Eigen::VectorXd rq = r.head(nq), ru = r.segment(nq, nu);
-    const Eigen::VectorXd du = A.partialPivLu().solve(M * ru + g * (K * rq));
-    delta.resize(n);
-    delta.head(nq) = rq + g * du;
-    delta.segment(nq, nu) = du;
-    if (nz > 0)
-      delta.tail(nz) = r.tail(nz);
-    y1 = yp + delta;
-    if (!y1.allFinite()) {
-      ++stats.failedEvaluations;
-      if (++failuresInRow > options.maxConsecutiveFailures) {
-        fail(t1, "the step solution is not finite at step size " + formatTime(h) + " s");
-      }
-      hNext = 0.25 * h;
-      return false;
-    }
+    lu.compute(A);
+    r = base + g * fpred - yp;
+    solveCorrection(g, r, delta);
+    y = yp + delta;
 
-    // Local error estimate in the weighted RMS norm over (q_f, u_f).
-    const double factor = std::abs(errorFactor(h, order));
-    double sum = 0.0;
-    for (int i = 0; i < nq + nu; ++i) {
-      const double scale = absTol[i] + options.relativeTolerance *
-                                           std::max(std::abs(history[0].y[i]), std::abs(y1[i]));
-      const double e = factor * delta[i] / scale;
-      sum += e * e;
+    // Newton iterations: evaluate the iterate, correct it with the BDF2 residual there.
+    SimTK::State& trial = *trialPtr;
+    double previousNorm = 0.0;
+    for (int it = 1;; ++it) {
+      if (!y.allFinite())
+        return retry(t1, h, 0.25, "the step solution was not finite");
+      trial = *currentPtr;
+      unpack(y, t1, trial);
+      std::string reason;
+      if (!evaluate(trial, reason)) {
+        ++stats.failedEvaluations;
+        return retry(t1, h, 0.25, "the force evaluation failed (" + reason + ")");
+      }
+      derivatives(trial, ft);
+      updateJacobian(trial);
+      A = M - g * C - g * g * K;
+      lu.compute(A);
+      r = base + g * ft - y;
+      solveCorrection(g, r, delta);
+      const double norm = weightedNorm(delta, 1.0);
+      if (norm <= options.newtonTolerance)
+        break;  // converged: the evaluated iterate is the step's solution
+      if (it >= options.maxNewtonIterations || (it > 1 && norm > 0.9 * previousNorm)) {
+        ++stats.newtonFailures;
+        return retry(t1, h, 0.25, "the step's Newton iteration did not converge");
+      }
+      previousNorm = norm;
+      y += delta;
     }
-    const double err = nq + nu > 0 ? std::sqrt(sum / (nq + nu)) : 0.0;
+    // The z are quadratures: BDF2 with the rates of the evaluated solution.
+    if (nz > 0)
+      y.tail(nz) = base.tail(nz) + g * ft.tail(nz);
+
+    // Local error estimate from the corrector-predictor difference.
+    delta = y - yp;
+    const double err = weightedNorm(delta, std::abs(errorFactor(h, order)));
     const double exponent = order == 2 ? 1.0 / 3.0 : 0.5;
     const double grow = err > 0.0 ? 0.9 * std::pow(err, -exponent) : 2.0;
     if (err > 1.0) {
       ++stats.rejectedSteps;
-      if (++failuresInRow > options.maxConsecutiveFailures) {
-        fail(t1, "the error test failed " + std::to_string(failuresInRow) +
-                     " times in a row, the last at step size " + formatTime(h) + " s");
-      }
-      hNext = h * std::clamp(grow, 0.2, 0.9);
-      return false;
+      return retry(t1, h, std::clamp(grow, 0.2, 0.9), "the error test failed");
     }
 
-    // Accept. The next step starts from the predictor's history with y1 installed; the
-    // state returned holds y1 with the history as it was during the step.
+    // Accept the evaluated iterate with the history of this step installed.
     failuresInRow = 0;
     ++stats.steps;
     trial.autoUpdateDiscreteVariables();
-    unpack(y1, t1, trial);
-    *currentPtr = *basePtr;
-    unpack(y1, t1, *currentPtr);
-    std::swap(basePtr, trialPtr);
-    currentAwaitsSwap = true;
+    if (nz > 0)
+      setZ(y, trial);
+    std::swap(currentPtr, trialPtr);
     history[2] = std::move(history[1]);
     history[1] = std::move(history[0]);
     history[0].t = t1;
-    history[0].y = y1;
+    history[0].y = y;
+    history[0].f = ft;
     historySize = std::min(historySize + 1, 3);
     // BDF2 stays zero-stable for step ratios below 1 + sqrt(2); keep below 2.
     hNext = h * std::clamp(grow, 0.2, 2.0);
     return true;
+  }
+
+  void setZ(const Eigen::VectorXd& v, SimTK::State& s) const {
+    SimTK::Vector& z = s.updZ();
+    for (int i = 0; i < nz; ++i)
+      z[i] = v[nq + nu + i];
   }
 
   void stepTo(double tOut) {
@@ -347,14 +389,6 @@ struct LinearlyImplicitStepper::Impl {
         fail(history[0].t,
              "the step budget of " + std::to_string(options.maxSteps) + " steps is used up");
       }
-      // The step starts. If the accepted state was realized since (an output row), its
-      // update values are the better ones (computed at y1, not at the predictor): start
-      // from it with them installed.
-      if (currentAwaitsSwap && currentPtr->getSystemStage() >= SimTK::Stage::Dynamics) {
-        currentPtr->autoUpdateDiscreteVariables();
-        *basePtr = *currentPtr;
-      }
-      currentAwaitsSwap = false;
       double h = std::min(hNext, options.maxStep_s);
       const double remaining = tOut - history[0].t;
       if (h >= remaining * (1.0 - 1e-12)) {
@@ -391,6 +425,10 @@ LinearlyImplicitStepper::LinearlyImplicitStepper(const PistonAssemblyModel& mode
     bad("maxSteps must be at least 1");
   if (o.maxConsecutiveFailures < 1)
     bad("maxConsecutiveFailures must be at least 1");
+  if (!(o.newtonTolerance > 0.0) || !std::isfinite(o.newtonTolerance))
+    bad("newtonTolerance must be positive and finite");
+  if (o.maxNewtonIterations < 1)
+    bad("maxNewtonIterations must be at least 1");
 }
 
 LinearlyImplicitStepper::~LinearlyImplicitStepper() = default;

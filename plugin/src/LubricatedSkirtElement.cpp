@@ -138,7 +138,10 @@ void LubricatedSkirtElement::addToModel(const ModelBuildContext& context) {
 }
 
 void LubricatedSkirtElement::realizeTopology(SimTK::State&, ElementStateAllocator& alloc) const {
-  cache_.allocate(alloc);
+  // The results depend on t, q, u and the fill / slap history, not on the z (friction work
+  // and wear are integrals of the results): a stepper correcting z after an evaluation must
+  // not make the next realization of that state solve the films again.
+  cache_.allocate(alloc, SimTK::Stage::Dynamics, /*resultsDependOnZ=*/false);
   work_.allocate(alloc, SimTK::Vector(5, 0.0));
   fillThrust_.allocate(alloc, FillHistory{});  // empty: full film
   fillAntiThrust_.allocate(alloc, FillHistory{});
@@ -188,11 +191,13 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     if (massConserving) {
       const FillHistory& history = fill.getValue(s);
       in.previousFillFraction = history.current.size() > 0 ? &history.current : nullptr;
+      in.previousExpectedGap = history.currentGap.size() > 0 ? &history.currentGap : nullptr;
       dt = fill.calcTimeSinceLastUpdate(s);
       in.timeStep_s = dt > 0.0 ? dt : std::numeric_limits<double>::infinity();
       if (parameters_.fillFractionHistoryOrder == 2 && history.previous.size() > 0 &&
           history.previousStep_s > 0.0) {
         in.previousFillFraction2 = &history.previous;
+        in.previousExpectedGap2 = &history.previousGap;
         in.previousTimeStep_s = history.previousStep_s;
       }
     }
@@ -216,10 +221,12 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
       // The history this step leads to, if accepted (a zero step keeps the history).
       const FillHistory& history = fill.getValue(s);
       if (dt > 0.0) {
-        fill.setUpdateValue(s, FillHistory{out.film.fillFraction(), history.current, dt});
+        fill.setUpdateValue(s, FillHistory{out.film.fillFraction(), out.film.expectedGap_m,
+                                           history.current, history.currentGap, dt});
       } else {
-        fill.setUpdateValue(
-            s, FillHistory{out.film.fillFraction(), history.previous, history.previousStep_s});
+        fill.setUpdateValue(s, FillHistory{out.film.fillFraction(), out.film.expectedGap_m,
+                                           history.previous, history.previousGap,
+                                           history.previousStep_s});
       }
     }
 

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "SkirtTestDeck.h"
+#include "pistondyn/contact_forces/GreenwoodTrippLaw.h"
 #include "pistondyn/plugin/CycleSimulation.h"
 
 namespace {
@@ -20,6 +21,7 @@ struct CycleRun {
   plugin::ResultTable table;  // the last cycle
   plugin::SimulationStats stats;
   double sigma_m = 0.0, hotClearance_m = 0.0;
+  contact_forces::GreenwoodTrippParameters asperity;  // as the element used it
 };
 
 CycleRun run(const plugin::LubricatedSkirtParameters& p, plugin::SimulationSettings s) {
@@ -42,6 +44,7 @@ CycleRun run(const plugin::LubricatedSkirtParameters& p, plugin::SimulationSetti
   r.stats = sim.getStats();
   r.sigma_m = std::hypot(p.roughness.rq1_m, p.roughness.rq2_m);
   r.hotClearance_m = *m.skirt().getHotRunningClearance_m();
+  r.asperity = m.skirt().getParameters().asperity;
   return r;
 }
 
@@ -132,13 +135,18 @@ TEST(SkirtNumerics, FullyFloodedCycleBecomesPeriodic) {
   EXPECT_LT(std::abs(f.back() - f.rbegin()[1]), 0.005 * f.back());
 }
 
-// The piston never passes through the liner: the smallest nominal gap on each side stays
-// above -2 sigma (an overlap the Greenwood-Tripp pressure resists with ~1e8 Pa) over the
-// cycle, fully flooded and starved.
+// The piston never passes through the liner: where the surfaces' mean planes overlap, the
+// asperities carry the load elastically. Fully flooded, the film keeps them apart (smallest
+// nominal gap above 0); starved, the deepest overlap of the cycle (at firing TDC, where the
+// side force throws the piston onto the thrust side) stays where the Greenwood-Tripp
+// pressure is below the hardness of the Al-Si skirt alloy, ~1.1 GPa (100-120 HB: beyond it
+// the asperities would flow plastically and the elastic law no longer holds): the
+// lateral motion is the hot clearance plus the asperities' elastic compliance, no more.
 TEST(SkirtNumerics, LateralMotionStaysWithinClearanceAndAsperityCompliance) {
   auto full = ts::exampleSkirtParameters(32, 24);
   auto starved = full;
   starved.supplyFilm.constant_m = 0.5e-6;
+  constexpr double kSkirtAlloyHardness_Pa = 1.1e9;
   for (const auto* p : {&full, &starved}) {
     const CycleRun r = run(*p, settings(2));
     double minThrust = 1e9, minAnti = 1e9, maxLat = 0.0;
@@ -148,13 +156,19 @@ TEST(SkirtNumerics, LateralMotionStaysWithinClearanceAndAsperityCompliance) {
       minAnti = std::min(minAnti, h);
     for (double u : r.table.column("u_lat_um"))
       maxLat = std::max(maxLat, std::abs(u));
+    const contact_forces::GreenwoodTrippLaw law(r.asperity);
+    const double deepest_m = 1e-6 * std::min(minThrust, minAnti);
+    const double peak_Pa = law.calcPressureAndSlope(deepest_m).pressure_Pa;
     std::printf(
-        "  %s: min film thrust %.3f um, anti-thrust %.3f um (sigma %.3f um); max |u_lat| "
-        "%.2f um, hot clearance %.2f um\n",
-        p == &full ? "fully flooded" : "starved", minThrust, minAnti, 1e6 * r.sigma_m, maxLat,
-        1e6 * r.hotClearance_m);
-    EXPECT_GT(minThrust, -2e6 * r.sigma_m);
-    EXPECT_GT(minAnti, -2e6 * r.sigma_m);
+        "  %s: min film thrust %.3f um, anti-thrust %.3f um (sigma %.3f um), asperity pressure "
+        "there %.3g Pa; max |u_lat| %.2f um, hot clearance %.2f um\n",
+        p == &full ? "fully flooded" : "starved", minThrust, minAnti, 1e6 * r.sigma_m, peak_Pa,
+        maxLat, 1e6 * r.hotClearance_m);
+    if (p == &full) {
+      EXPECT_GT(minThrust, 0.0);
+      EXPECT_GT(minAnti, 0.0);
+    }
+    EXPECT_LT(peak_Pa, kSkirtAlloyHardness_Pa);
   }
 }
 

@@ -122,6 +122,7 @@ ps::SkirtLubricationParameters tightSolver(
   ps::SkirtLubricationParameters p;
   p.cavitation = model;
   p.solver.tolerance = tolerance;
+  p.solver.derivativeTolerance = tolerance;  // the squeeze derivatives are checked too
   return p;
 }
 

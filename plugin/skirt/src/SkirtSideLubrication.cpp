@@ -327,6 +327,20 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
     } else {
       p.previousFillFraction2.resize(0);
     }
+    auto copyGap = [&](const Eigen::ArrayXd* from, bool wanted, Eigen::ArrayXd& to,
+                       const char* name) {
+      if (wanted && from != nullptr && from->size() > 0) {
+        if (from->size() != n)
+          badInput("inputs.", name, " has ", from->size(), " entries, expected ", n);
+        to = *from;
+      } else {
+        to.resize(0);
+      }
+    };
+    copyGap(in.previousExpectedGap, p.previousFillFraction.size() == n && std::isfinite(p.timeStep_s),
+            p.previousExpectedGap_m, "previousExpectedGap");
+    copyGap(in.previousExpectedGap2, second && p.previousExpectedGap_m.size() == n,
+            p.previousExpectedGap2_m, "previousExpectedGap2");
   }
 
   using Clock = std::chrono::steady_clock;

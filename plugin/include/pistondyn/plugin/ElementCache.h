@@ -36,8 +36,19 @@ namespace pistondyn::plugin {
 template <class T>
 class ElementCache {
  public:
-  void allocate(ElementStateAllocator& a, SimTK::Stage dependsOn = SimTK::Stage::Dynamics) const {
+  // resultsDependOnZ = false: the results are a function of t, q, u (and the element's
+  // discrete variables) alone, not of the auxiliary states z, e.g. an element whose z are
+  // only integrals of its own outputs (friction work, wear volume). The entry then depends
+  // on Stage::Velocity at most and ignores z in its stamp, so that an integrator which
+  // corrects z after a force evaluation (LinearlyImplicitStepper: the implicit quadrature
+  // of the z with the accepted state's rates) does not make the next realization of that
+  // state solve everything again.
+  void allocate(ElementStateAllocator& a, SimTK::Stage dependsOn = SimTK::Stage::Dynamics,
+                bool resultsDependOnZ = true) const {
     subsystem_ = &a.getSubsystem();
+    dependsOnZ_ = resultsDependOnZ;
+    if (!resultsDependOnZ && dependsOn > SimTK::Stage::Velocity)
+      dependsOn = SimTK::Stage::Velocity;
     index_ =
         subsystem_->allocateLazyCacheEntry(a.updState(), dependsOn, new SimTK::Value<Stamped>());
   }
@@ -50,7 +61,8 @@ class ElementCache {
     // updCacheEntry: readable below the entry's stage (inside calcForces), unlike
     // getCacheEntry which checks the stage.
     Stamped& entry = SimTK::Value<Stamped>::updDowncast(subsystem_->updCacheEntry(s, index_)).upd();
-    const Stamp now{s.getTime(), s.getQValueVersion(), s.getUValueVersion(), s.getZValueVersion()};
+    const Stamp now{s.getTime(), s.getQValueVersion(), s.getUValueVersion(),
+                    dependsOnZ_ ? s.getZValueVersion() : SimTK::ValueVersion(-1)};
     if (!subsystem_->isCacheValueRealized(s, index_) || !(entry.stamp == now)) {
       calc(entry.value);
       entry.stamp = now;
@@ -75,6 +87,7 @@ class ElementCache {
   // Set once per realizeTopology (Simbody's own pattern for topology indices).
   mutable const SimTK::Subsystem* subsystem_ = nullptr;
   mutable SimTK::CacheEntryIndex index_;
+  mutable bool dependsOnZ_ = true;
 };
 
 }  // namespace pistondyn::plugin

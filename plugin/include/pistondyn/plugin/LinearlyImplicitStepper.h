@@ -16,36 +16,42 @@
 // can be left to the explicit part of the linearisation.
 //
 // Method. y = (q_f, u_f, z): free q and u (not prescribed by a Motion), and the z of
-// the elements. One step from t_n to t_{n+1} = t_n + h:
-//   1. predict y_p by extrapolating the polynomial through the last three accepted
-//      states (two on the second step, one with the last derivative on the first);
-//   2. evaluate f(y_p) (one realization: one film solve per skirt side) and the
-//      approximate Jacobian W = [[0, I, 0], [M^-1 K, M^-1 C, 0], [0, 0, 0]], where
-//      K = d f_gen / d q and C = d f_gen / d u are the elements' parts and M the mass
-//      matrix of the free mobilities;
-//   3. one Newton step of variable-step BDF2 from y_p:
-//        (I - beta h W) (y_{n+1} - y_p) = a0 y_n + a1 y_{n-1} + beta h f(y_p) - y_p,
-//      with a0 = (1+w)^2/(1+2w), a1 = -w^2/(1+2w), beta = (1+w)/(1+2w), w = h_n/h_{n-1}
-//      (backward Euler, a0 = 1, a1 = 0, beta = 1, on the first step);
-//   4. estimate the local error from the corrector-predictor difference,
+// the elements. One step from t_n to t_{n+1} = t_n + h solves the variable-step BDF2
+//   y_{n+1} = a0 y_n + a1 y_{n-1} + g f(y_{n+1}),   g = beta h,
+// a0 = (1+w)^2/(1+2w), a1 = -w^2/(1+2w), beta = (1+w)/(1+2w), w = h_n/h_{n-1} (backward
+// Euler, a0 = 1, a1 = 0, beta = 1, on the first step), by Newton iterations with the
+// approximate Jacobian W = [[0, I, 0], [M^-1 K, M^-1 C, 0], [0, 0, 0]] (K = d f_gen / d q,
+// C = d f_gen / d u: the elements' parts; M the mass matrix of the free mobilities):
+//   1. predict y_p and f_p by extrapolating the polynomial through the last three accepted
+//      points (two on the second step, one with its derivative on the first);
+//   2. first iterate without an evaluation: (I - g W_n) d = a0 y_n + a1 y_{n-1} + g f_p - y_p,
+//      y^1 = y_p + d, W_n the Jacobian of the last evaluated state;
+//   3. evaluate f(y^m) (one realization: one film solve per skirt side) and W there, and
+//      solve (I - g W) d = a0 y_n + a1 y_{n-1} + g f(y^m) - y^m; if the weighted norm of d
+//      (the error norm below) is at most newtonTolerance the iterate y^m is the solution;
+//      else y^{m+1} = y^m + d and repeat (at most maxNewtonIterations; a correction that
+//      does not shrink below 0.9 of the previous one retries the step at h/4);
+//   4. the z (quadratures such as friction work) take the BDF2 formula with f(y_{n+1});
+//   5. estimate the local error from the corrector-predictor difference,
 //      err ~ C_bdf / (C_bdf - C_pred) (y_{n+1} - y_p) = (2/7)(y_{n+1} - y_p) for constant
 //      steps (C_bdf = -2/9 of BDF2, C_pred = -1 of quadratic extrapolation), in a weighted
 //      RMS norm over (q_f, u_f) with absolute tolerances per coordinate (below); accept
 //      if err <= 1, and choose the next step from err^(-1/3) (err^(-1/2) on the
 //      backward-Euler start-up steps).
-// Linearising about the predictor rather than about y_n makes the linearisation error
-// h W_err (y_{n+1} - y_p) = O(h^4): what W leaves out costs no order. The z (integrals
-// such as friction work) are quadratures of the trajectory: they take the same BDF2
-// formula with f(y_p) and are not in the error norm (their error follows the
-// trajectory's).
+// Every accepted state is an evaluated one, so its forces and the elements' history
+// updates belong to the trajectory itself, and an output row at a step's end reads the
+// cached results. Where the elements' Jacobian describes the forces well (a smooth,
+// flooded film) one evaluation per step suffices; where it does not (a starved film's
+// pressurised islands that grow and vanish with the motion, the cavitation set that
+// changes with the squeeze velocity) the Newton iteration converges the step instead of
+// leaving an unconverged linearised solution for the error test to fight with. Until
+// 2026-12 the stepper made the single linearised step from an evaluation at y_p and
+// accepted it: on the starved example skirt the steps then fell to ~5e-7 s with half of
+// them rejected, and the history (fill fractions) was taken at the predictor.
 //
 // History (auto-update discrete variables, ElementState.h): as in Simbody's integrators,
-// an element sees t - lastUpdateTime = h over a step and the update values it computes
-// at the step's end are installed for the next step. Which ones: those computed at the
-// accepted state if it was realized before the next step starts (an output row does
-// that: getState() returns the accepted state with the step's history not yet
-// installed, so a realization there evaluates the elements exactly as the step did),
-// else those computed at the predictor y_p (the one realization the step made).
+// an element sees t - lastUpdateTime = h over a step, and the update values it computes at
+// the accepted (evaluated) state are installed for the next step.
 //
 // Requirements: no enabled constraints (the piston is held by force elements, not by
 // joints); mobilizers with qdot = u (Pin, Slider, Cylinder, Weld, ...; a ball or free
@@ -74,6 +80,11 @@ struct LinearlyImplicitStepperOptions {
   double initialStep_s = 1e-6;      // first step [s]
   long maxSteps = 10000000;         // step budget of one stepper (a run never hangs)
   int maxConsecutiveFailures = 30;  // element errors or rejections in a row before giving up
+  // Newton iterations of a step: converged when the weighted RMS norm of the last correction
+  // (in units of the error tolerances above) is at most newtonTolerance, default 0.2; at
+  // most maxNewtonIterations evaluations per attempt, default 4.
+  double newtonTolerance = 0.2;
+  int maxNewtonIterations = 4;
 };
 
 struct LinearlyImplicitStepperStats {
@@ -81,6 +92,7 @@ struct LinearlyImplicitStepperStats {
   long rejectedSteps = 0;      // by the error test
   long failedEvaluations = 0;  // steps retried because an element threw
   long forceEvaluations = 0;   // realizations to Stage::Acceleration done by the stepper
+  long newtonFailures = 0;     // steps retried because the Newton iteration did not converge
 };
 
 class LinearlyImplicitStepper {

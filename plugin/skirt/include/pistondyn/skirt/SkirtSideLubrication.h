@@ -113,6 +113,13 @@ struct SkirtSideInputs {
   // second-order (BDF2) history (FilmProblem::previousFillFraction2); nullptr = first order.
   const Eigen::ArrayXd* previousFillFraction2 = nullptr;
   double previousTimeStep_s = std::numeric_limits<double>::quiet_NaN();
+  // Optional, with the fill fractions above: the film's expected gap at those two steps
+  // (SkirtSideResults::film.expectedGap_m of the solves that gave them; nodeCount entries).
+  // With them the film keeps the oil content of cavitated nodes whose gap moves within a
+  // step (FilmProblem::previousExpectedGap_m); without them it creates oil where the gap
+  // closes.
+  const Eigen::ArrayXd* previousExpectedGap = nullptr;
+  const Eigen::ArrayXd* previousExpectedGap2 = nullptr;
 };
 
 struct SkirtSideResults {

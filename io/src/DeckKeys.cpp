@@ -370,7 +370,7 @@ const DeckKeyTable& getEngineDeckKeys() {
               .means("`linearly_implicit_bdf2`: per-step tolerance on u_lat, u_tran, tilt × "
                      "skirt length"),
           K::number("simulation.max_step_deg", Q::Angle)
-              .byDefault(0.5)
+              .byDefault(0.25)
               .within(Bounds{0.0, 10.0, true})
               .means("`linearly_implicit_bdf2`: largest step"),
           K::wholeNumber("simulation.max_steps", 1, 2000000000)

@@ -195,7 +195,7 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
               .within(Bounds::between(1e-14, 1e-3))
               .means("film solver's relative residual"),
           K::choice("liner.film.fill_fraction_history", {"backward_euler", "bdf2"})
-              .byDefault("backward_euler")
+              .byDefault("bdf2")
               .means("mass-conserving model: order of the fill fraction's storage term in time "
                      "(BDF2 over the last two accepted steps)"),
           K::onOff("liner.tertiary_motion")

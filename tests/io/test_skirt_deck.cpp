@@ -55,7 +55,7 @@ TEST(SkirtDeck, TheGasolineExampleSectionBecomesTheElementsParametersInSI) {
   EXPECT_EQ(p.grid.arcWidth_rad, 80.0 * kDeg);
   EXPECT_EQ(p.grid.nPhi, 64);
   EXPECT_EQ(p.grid.nY, 48);
-  EXPECT_EQ(p.grid.axialClustering, 2.5);
+  EXPECT_EQ(p.grid.axialClustering, 0.0);
   // The profile table: 101 rows, -25 .. +25 mm, 0.12 um/mm^2 (y + 6 mm)^2.
   const auto& axial = p.gap.skirtProfile.axial;
   ASSERT_EQ(axial.height_m.size(), 101);
@@ -111,7 +111,7 @@ TEST(SkirtDeck, TheGasolineExampleSectionBecomesTheElementsParametersInSI) {
   EXPECT_TRUE(s.untilPeriodic);
   EXPECT_EQ(s.cycles, 8);
   EXPECT_EQ(s.poseTolerance_m, 10.0 * 1e-9);
-  EXPECT_EQ(s.maxStep_deg, 0.5);
+  EXPECT_EQ(s.maxStep_deg, 0.25);
   EXPECT_EQ(s.periodicFmepTolerance, 0.005);
   EXPECT_EQ(s.periodicPoseTolerance_m, 0.2 * 1e-6);
   // The hot running clearance without thermal growth is the cold one at the profile's

@@ -447,6 +447,8 @@ void readSurfaces(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
       {{"fast", lubrication::FilmSolverType::FastActiveSet},
        {"reference_gauss_seidel", lubrication::FilmSolverType::ReferenceGaussSeidel}});
   p.lubrication.solver.tolerance = film.getNumber(skirtKey("liner.film.tolerance"));
+  p.lubrication.solver.derivativeTolerance =
+      film.getNumber(skirtKey("liner.film.derivative_tolerance"));
   // The fill fraction's storage term in time (mass-conserving model): BDF2 converges with
   // the step where backward Euler smears a starved film's oil (plugin/README.md).
   p.fillFractionHistoryOrder = film.getChoice<int>(skirtKey("liner.film.fill_fraction_history"),
@@ -568,6 +570,7 @@ LinerElementMaker readLubricatedSkirt(DeckSection& liner, LinerDeckContext& cont
   readSurfaces(liner, p);
 
   p.tertiaryMotion = liner.getBool(skirtKey("liner.tertiary_motion"));
+  p.parallelSides = liner.getBool(skirtKey("liner.parallel_sides"));
   p.pinRetainerPlay_m = liner.getSI(skirtKey("liner.pin_retainer_play_mm"));
   p.pinRetainerStiffness_Npm = liner.getSI(skirtKey("liner.pin_retainer_stiffness_N_per_mm"));
   readFieldDumps(liner, context);

@@ -194,10 +194,19 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
               .byDefault(1e-8)
               .within(Bounds::between(1e-14, 1e-3))
               .means("film solver's relative residual"),
+          K::number("liner.film.derivative_tolerance")
+              .byDefault(1e-6)
+              .within(Bounds::between(1e-14, 1e-2))
+              .means("relative accuracy of the squeeze-derivative solves (the stepper's "
+                     "Jacobian only)"),
           K::choice("liner.film.fill_fraction_history", {"backward_euler", "bdf2"})
               .byDefault("bdf2")
               .means("mass-conserving model: order of the fill fraction's storage term in time "
                      "(BDF2 over the last two accepted steps)"),
+          K::onOff("liner.parallel_sides")
+              .byDefault(1.0)
+              .means("solve the thrust and anti-thrust films on two threads (the same "
+                     "results; faster where a second core is free)"),
           K::onOff("liner.tertiary_motion")
               .byDefault(0.0)
               .means("motion along the pin axis; sets both the element and the crank train's "

@@ -9,6 +9,8 @@
 #include "pistondyn/mbd_models/SliderCrank.h"
 #include "pistondyn/plugin/PistonPose.h"
 
+#include "ForkJoinWorker.h"
+
 namespace pistondyn::plugin {
 namespace {
 
@@ -56,6 +58,7 @@ struct LubricatedSkirtElement::Workspace {
   std::array<std::unique_ptr<skirt::SkirtSideLubrication>, 2> lubrication;
   std::array<skirt::GapFields, 2> gapFields;
   std::array<skirt::SkirtSideResults, 2> results;
+  std::unique_ptr<detail::ForkJoinWorker> worker;  // parallelSides: the anti-thrust side
 };
 
 LubricatedSkirtElement::LubricatedSkirtElement(const LubricatedSkirtParameters& p)
@@ -171,14 +174,14 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
   Eigen::Matrix<double, 6, 3> dRate = Eigen::Matrix<double, 6, 3>::Zero();
   Eigen::Matrix<double, 6, 3> dPose = Eigen::Matrix<double, 6, 3>::Zero();
   r.frictionPower_W = r.hydrodynamicFrictionPower_W = r.asperityFrictionPower_W = 0.0;
+  // Per side: the inputs from the State (main thread), then gap and film (the two sides
+  // concurrently with parallelSides: they share nothing but read-only data), then the
+  // history and the sums (main thread, thrust first, so the results do not depend on it).
+  std::array<skirt::SkirtSideInputs, 2> inputs;
+  std::array<double, 2> dts{0.0, 0.0};
   for (int k : {kThrust, kAntiThrust}) {
     const auto& fill = k == kThrust ? fillThrust_ : fillAntiThrust_;
-    skirt::GapFields& fields = workspace_->gapFields[k];
-    const auto gapStart = Clock::now();
-    workspace_->gap[k]->calc(skirtPose, skirtRate, pose.pinHeight_m, pose.axialVelocity_mps,
-                             fields);
-    gapTime += std::chrono::duration<double>(Clock::now() - gapStart).count();
-    skirt::SkirtSideInputs in;
+    skirt::SkirtSideInputs& in = inputs[k];
     in.slidingVelocityAxial_mps = -pose.axialVelocity_mps;
     // The skirt's tangential velocity on the side's centre line is +dz_t/dt on the thrust
     // side (e_phi = +z at phi = 0) and -dz_t/dt on the anti-thrust side.
@@ -187,12 +190,12 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     in.viscosity_Pas = viscosity_Pas_;
     in.supplyFilm_m = r.supplyFilm_m;
     in.squeezeColumns = parameters_.tertiaryMotion ? 3 : 2;
-    double dt = 0.0;
     if (massConserving) {
       const FillHistory& history = fill.getValue(s);
       in.previousFillFraction = history.current.size() > 0 ? &history.current : nullptr;
       in.previousExpectedGap = history.currentGap.size() > 0 ? &history.currentGap : nullptr;
-      dt = fill.calcTimeSinceLastUpdate(s);
+      const double dt = fill.calcTimeSinceLastUpdate(s);
+      dts[k] = dt;
       in.timeStep_s = dt > 0.0 ? dt : std::numeric_limits<double>::infinity();
       if (parameters_.fillFractionHistoryOrder == 2 && history.previous.size() > 0 &&
           history.previousStep_s > 0.0) {
@@ -201,16 +204,47 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
         in.previousTimeStep_s = history.previousStep_s;
       }
     }
-    skirt::SkirtSideResults& out = workspace_->results[k];
-    try {
-      workspace_->lubrication[k]->solve(fields, in, out);
-    } catch (const std::runtime_error& e) {
-      double inCycle = std::fmod(crankAngle_deg, 720.0);
-      if (inCycle < 0.0)
-        inCycle += 720.0;
-      throw std::runtime_error(
-          common::message("lubricated skirt at crank angle ", inCycle, " deg: ", e.what()));
+  }
+  std::array<double, 2> gapTimes{0.0, 0.0};
+  auto solveSide = [&](int k) {
+    skirt::GapFields& fields = workspace_->gapFields[k];
+    const auto gapStart = Clock::now();
+    workspace_->gap[k]->calc(skirtPose, skirtRate, pose.pinHeight_m, pose.axialVelocity_mps,
+                             fields);
+    gapTimes[k] = std::chrono::duration<double>(Clock::now() - gapStart).count();
+    workspace_->lubrication[k]->solve(fields, inputs[k], workspace_->results[k]);
+  };
+  try {
+    if (parameters_.parallelSides) {
+      if (!workspace_->worker)
+        workspace_->worker = std::make_unique<detail::ForkJoinWorker>();
+      workspace_->worker->start([&] { solveSide(kAntiThrust); });
+      std::exception_ptr thrustError;
+      try {
+        solveSide(kThrust);
+      } catch (...) {
+        thrustError = std::current_exception();
+      }
+      workspace_->worker->join();  // always: the task refers to this frame
+      if (thrustError)
+        std::rethrow_exception(thrustError);
+    } else {
+      solveSide(kThrust);
+      solveSide(kAntiThrust);
     }
+  } catch (const std::runtime_error& e) {
+    double inCycle = std::fmod(crankAngle_deg, 720.0);
+    if (inCycle < 0.0)
+      inCycle += 720.0;
+    throw std::runtime_error(
+        common::message("lubricated skirt at crank angle ", inCycle, " deg: ", e.what()));
+  }
+  gapTime = gapTimes[kThrust] + gapTimes[kAntiThrust];
+
+  for (int k : {kThrust, kAntiThrust}) {
+    const auto& fill = k == kThrust ? fillThrust_ : fillAntiThrust_;
+    const double dt = dts[k];
+    const skirt::SkirtSideResults& out = workspace_->results[k];
     ++filmSolves_;
     timings_.film_s += out.filmTime_s;
     timings_.contact_s += out.contactTime_s;

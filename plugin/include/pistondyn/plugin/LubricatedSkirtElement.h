@@ -92,6 +92,12 @@ struct LubricatedSkirtParameters {
   bool tertiaryMotion = false;            // must match EngineDescription::tertiaryMotion
   double pinRetainerPlay_m = 0.5e-3;      // tertiary: free axial play each way [m], > 0
   double pinRetainerStiffness_Npm = 2e7;  // tertiary: spring outside the play [N/m], > 0
+  // Solve the two sides' films on two threads (the anti-thrust side on a helper thread the
+  // element owns). Results are bit-identical to the serial run: the sides share only
+  // read-only data and are summed in the same order. Off by default for library users
+  // (whose own threads may already use every core); the deck key liner.parallel_sides
+  // turns it on for `pistondyn run`.
+  bool parallelSides = false;
 };
 
 // The per-state results the element caches (small: no nodal fields).

@@ -179,7 +179,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   overrides.insert(overrides.begin(),
-                   std::string("liner.parallel_sides=") + (parallelSides ? "on" : "off"));
+                   std::string("liner.parallel_sides=") + (parallelSides ? "true" : "false"));
   try {
     for (const std::string& solver : solvers)
       if (const int rc = runConfiguration(deckPath, overrides, solver); rc != 0)

@@ -141,6 +141,26 @@ void checkResult(const io::EngineDeck& deck) {
 }
 
 // Readers whose result has no checks of its own.
+void checkResult(const Eigen::MatrixXd& m) {
+  require(m.rows() > 0 && m.cols() > 0, "an empty matrix was accepted");
+  require(m.allFinite(), "a non-finite matrix entry was accepted");
+}
+
+// The reader's promises (ComplianceInput.h): a square symmetric matrix of the node count,
+// positive diagonal, finite; a tensor grid of strictly increasing angles and heights.
+void checkResult(const pistondyn::mapping::StructuralCompliance& c) {
+  const auto& C = c.compliance_m_per_N;
+  require(c.nodeCount() > 0 && C.rows() == c.nodeCount() && C.cols() == c.nodeCount(),
+          "compliance size differs from the node count");
+  require(C.allFinite(), "a non-finite compliance entry was accepted");
+  require((C - C.transpose()).cwiseAbs().maxCoeff() == 0.0, "the result is not symmetrised");
+  require((C.diagonal().array() > 0.0).all(), "a non-positive diagonal was accepted");
+  for (int i = 1; i < c.nPhi(); ++i)
+    require(c.phi_rad[i] > c.phi_rad[i - 1], "node angles not increasing");
+  for (int i = 1; i < c.nY(); ++i)
+    require(c.y_m[i] > c.y_m[i - 1], "node heights not increasing");
+}
+
 template <class T>
 void checkResult(const T&) {}
 
@@ -191,6 +211,11 @@ void makeWorkFolder() {
                       fs::copy_options::overwrite_existing);
     }
   }
+}
+
+// A file of the work folder (fuzz/data and the example engines' files).
+std::string dataFile(const std::string& name) {
+  return (gWork->dir / name).string();
 }
 
 // The lubricated-skirt deck of fuzz/data with the table `key` replaced by the input

@@ -5,6 +5,7 @@
 //   - at the same pose the elastic skirt's converged deformation opens the gap (the sign), the
 //     coupling converges and reports its iterations, and the same pose again starts from the
 //     last converged deformation (one film evaluation);
+//   - the deck keys liner.elastic_skirt.* switch it on, and half of them is an error.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +13,8 @@
 
 #include "SkirtTestDeck.h"
 #include "pistondyn/io/ComplianceInput.h"
+#include "pistondyn/io/DeckError.h"
+#include "pistondyn/io/EngineDeck.h"
 #include "pistondyn/plugin/LubricatedSkirtElement.h"
 
 namespace {
@@ -76,6 +79,49 @@ TEST(ElasticSkirtElement, OpensTheGapAtAFixedPoseAndWarmStarts) {
   const Evaluation again = evaluate(em);
   EXPECT_EQ(again.thrust.elasticIterations, 1);
   EXPECT_NEAR(again.thrust.minFilmThickness_m, e.thrust.minFilmThickness_m, 2e-9);
+}
+
+TEST(ElasticSkirtElement, DeckKeysSwitchItOn) {
+  const std::string deck = ts::gasolineDeckPath();
+  // Paths relative to the deck's folder (examples/engines/gasoline_1400_2000rpm/).
+  const std::string mtx =
+      "liner.elastic_skirt.compliance_file=../../fe/gasoline_1400_2000rpm/"
+      "skirt_compliance.mtx";
+  const std::string nodes =
+      "liner.elastic_skirt.nodes_file=../../fe/gasoline_1400_2000rpm/"
+      "skirt_nodes.csv";
+  {
+    const io::EngineDeck d =
+        io::loadEngineDeck(deck, {mtx, nodes, "liner.elastic_skirt.max_iterations=25"});
+    const auto liner = d.makeLinerElement();
+    const auto& p = dynamic_cast<const plugin::LubricatedSkirtElement&>(*liner).getParameters();
+    EXPECT_TRUE(p.elasticSkirt.enabled);
+    EXPECT_EQ(p.elasticSkirt.compliance.nodeCount(), 264);
+    EXPECT_EQ(p.elasticSkirt.coupling.maxIterations, 25);
+    EXPECT_DOUBLE_EQ(p.elasticSkirt.coupling.absoluteTolerance_m, 1e-9);
+  }
+  {
+    const io::EngineDeck d = io::loadEngineDeck(deck, {});
+    const auto liner = d.makeLinerElement();
+    EXPECT_FALSE(dynamic_cast<const plugin::LubricatedSkirtElement&>(*liner)
+                     .getParameters()
+                     .elasticSkirt.enabled);
+  }
+  // A skirt reaching 2 mm above the structural grid's top row (12 mm above the pin).
+  try {
+    (void)io::loadEngineDeck(deck, {mtx, nodes, "piston.skirt_top_above_pin_mm=14"});
+    ADD_FAILURE() << "a compliance that does not cover the skirt was accepted";
+  } catch (const io::DeckError& ex) {
+    EXPECT_NE(std::string(ex.what()).find("the compliance does not fit this skirt"),
+              std::string::npos)
+        << ex.what();
+  }
+  try {
+    (void)io::loadEngineDeck(deck, {mtx});
+    ADD_FAILURE() << "a compliance without its node table was accepted";
+  } catch (const io::DeckError& ex) {
+    EXPECT_NE(std::string(ex.what()).find("nodes_file"), std::string::npos) << ex.what();
+  }
 }
 
 }  // namespace

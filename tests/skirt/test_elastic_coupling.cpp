@@ -5,7 +5,8 @@
 //      Love's uniform-patch integral;
 //   2. a load symmetric about the side's centre line (local stiff film law, symmetric gap and
 //      grids): the converged deformation is mirror-symmetric to round-off;
-//   3. bad input, each message naming the member.
+//   3. the gas field alone: minus the field's bicubic interpolant times the cylinder pressure;
+//   4. bad input, each message naming the member.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -175,6 +176,46 @@ TEST(ElasticCoupling, SymmetricLoadGivesASymmetricDeformation) {
   Eigen::Index kMax = 0;
   c.film.referencePressure_Pa.maxCoeff(&kMax);
   EXPECT_GT(d[kMax], 0.0);
+}
+
+// ------------------------------------------------------------------------------------------
+// The gas field alone (no film pressure): the gap term is minus the field times the cylinder
+// pressure, read on the film grid by the bicubic spline. A field that is a bicubic polynomial
+// in (phi, y) is reproduced exactly by it (sector, >= 4 nodes per direction; mapping/README.md),
+// so the film-grid values are known in closed form.
+TEST(ElasticCoupling, GasFieldAloneGivesMinusItsScaledInterpolant) {
+  SymmetricCase c = symmetricCase();
+  const auto poly = [](double phi, double y) {  // [m/Pa], a bicubic polynomial
+    const double t = phi / 0.6, u = (y + 0.005) / 0.02;
+    return 1e-12 * (-3.0 + 0.5 * t - 2.0 * t * t + 0.3 * t * t * t * u + u * u * u - t * u);
+  };
+  const int ns = c.compliance.nodeCount(), np = c.compliance.nPhi();
+  c.compliance.gasDisplacement_m_per_Pa.resize(ns);
+  for (int k = 0; k < ns; ++k)
+    c.compliance.gasDisplacement_m_per_Pa[k] =
+        poly(c.compliance.phi_rad[k % np], c.compliance.y_m[k / np]);
+  ps::ElasticCoupling coupling(c.side, c.compliance);
+  const double pCyl = 5e6;
+  const ps::ElasticCouplingReport rep = coupling.solve(
+      [&](const Eigen::ArrayXd&, ps::FilmPressureEvaluation& out) {
+        out.normalPressure_Pa = Eigen::ArrayXd::Zero(c.side.nodeCount());
+        out.minFilmThickness_m = 1e-6;
+      },
+      pCyl);
+  ASSERT_TRUE(rep.converged);
+  double worst = 0.0, scale = 0.0;
+  for (int k = 0; k < c.side.nodeCount(); ++k) {
+    const double expected = -pCyl * poly(c.side.getNodePhi_rad()[k], c.side.getNodeY_m()[k]);
+    worst = std::max(worst, std::abs(coupling.pistonElastic_m()[k] - expected));
+    scale = std::max(scale, std::abs(expected));
+  }
+  std::printf(
+      "[ElasticCoupling] gas field alone: largest term %.3e m, error %.1e of it, %d "
+      "iterations\n",
+      scale, worst / scale, rep.iterations);
+  EXPECT_GT(scale, 1e-6);
+  EXPECT_LT(worst, 1e-10 * scale);  // the residual tolerance is 1 nm: the last step is exact here
+  EXPECT_EQ(rep.structureForce_N, 0.0);
 }
 
 // ------------------------------------------------------------------------------------------

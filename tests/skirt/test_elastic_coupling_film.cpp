@@ -21,6 +21,7 @@
 #include <random>
 #include <string>
 
+#include "AllocationCounter.h"
 #include "ElasticCouplingTestSupport.h"
 #include "SkirtTestSupport.h"
 #include "pistondyn/contact_forces/BoundaryFriction.h"
@@ -230,6 +231,25 @@ TEST(ElasticCouplingFilm, PlainFixedPointFailsWhereAitkenConverges) {
   const ps::ElasticCouplingReport again = aitken.solve(film);
   EXPECT_TRUE(again.converged);
   EXPECT_EQ(again.iterations, 1);
+}
+
+// After the first solve, a whole coupled solve (film included) allocates nothing: the
+// coupling's iterates, the force map, the Hermite surface and the film reuse their storage.
+TEST(ElasticCouplingFilm, SecondSolveAllocatesNothing) {
+  GasolineSide s;
+  ps::ElasticCoupling coupling(s.side(), gasolineSkirt());
+  const ps::FilmPressureFunction film = s.filmAt(kThinFilmLateral_m);
+  ASSERT_TRUE(coupling.solve(film).converged);
+  coupling.resetWarmStart();  // a full solve again, from zero
+  int iterations = 0;
+  const long count = pistondyn::test::allocationsDuring([&] {
+    const ps::ElasticCouplingReport r = coupling.solve(film);
+    iterations = r.iterations;
+  });
+  std::printf("[ElasticCouplingFilm] solve from zero: %d iterations, %ld allocations\n", iterations,
+              count);
+  EXPECT_GT(iterations, 3);
+  EXPECT_EQ(count, 0);
 }
 
 // Lateral displacement at which the side carries `load_N` [N] (secant on log load, bracketed),

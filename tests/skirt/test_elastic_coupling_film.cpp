@@ -207,7 +207,8 @@ TEST(ElasticCouplingFilm, PlainFixedPointFailsWhereAitkenConverges) {
   GasolineSide s;
   const auto compliance = gasolineSkirt();
   // 39 um: 1 um rigid minimum gap. (At 38 um the plain iteration still converges, at
-  // lambda ~ -0.94 per step, too slowly for 60 iterations; at 42 um it blows up.)
+  // the residual shrinking by 0.88 per step, too slowly for 60 iterations; at 42 um it blows
+  // up.)
   const auto film = s.filmAt(39e-6);
   ps::ElasticCouplingParameters plain;
   plain.initialRelaxation = plain.minRelaxation = plain.maxRelaxation = 1.0;

@@ -8,10 +8,12 @@
 #include <vector>
 
 #include "pistondyn/common/Validation.h"
+#include "pistondyn/io/ComplianceInput.h"
 #include "pistondyn/io/DeckSection.h"
 #include "pistondyn/lubrication/OilGrades.h"
 #include "pistondyn/mbd_models/SliderCrank.h"
 #include "pistondyn/plugin/LubricatedSkirtElement.h"
+#include "pistondyn/skirt/ElasticCoupling.h"
 #include "pistondyn/skirt/HotRunningClearance.h"
 
 namespace pistondyn::io {
@@ -455,6 +457,32 @@ void readSurfaces(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
                                                    {{"backward_euler", 1}, {"bdf2", 2}});
 }
 
+// The elastic skirt: on when both files are given (compliance and its node table).
+void readElasticSkirt(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
+  DeckSection e = liner.getSection("elastic_skirt");
+  plugin::ElasticSkirtParameters& el = p.elasticSkirt;
+  el.coupling.absoluteTolerance_m = e.getSI(skirtKey("liner.elastic_skirt.tolerance_nm"));
+  el.coupling.relativeTolerance = e.getNumber(skirtKey("liner.elastic_skirt.relative_tolerance"));
+  el.coupling.maxIterations =
+      static_cast<int>(e.getInteger(skirtKey("liner.elastic_skirt.max_iterations")));
+  const auto matrix = e.getOptionalFilePath("compliance_file");
+  const auto nodes = e.getOptionalFilePath("nodes_file");
+  if (!matrix && !nodes)
+    return;
+  if (!matrix || !nodes) {
+    e.addProblem(matrix ? "nodes_file" : "compliance_file",
+                 "give both compliance_file (the matrix) and nodes_file (its node table), or "
+                 "neither (rigid skirt)");
+    return;
+  }
+  try {
+    el.compliance = readStructuralCompliance(*matrix, *nodes);
+    el.enabled = true;
+  } catch (const std::exception& ex) {
+    e.addProblem("compliance_file", ex.what());
+  }
+}
+
 void readFieldDumps(DeckSection& liner, LinerDeckContext& context) {
   DeckSection dumps = liner.getSection("field_dumps");
   const std::string key = "crank_angles_deg";
@@ -541,6 +569,22 @@ void checkAgainstEngine(DeckSection& liner, const mbd::EngineDescription& e,
   } catch (const std::exception& ex) {
     liner.addProblem("model", std::string("the skirt data do not fit this engine: ") + ex.what());
   }
+
+  // The elastic skirt's structural grid must cover both sides' film grids.
+  if (p.elasticSkirt.enabled) {
+    for (const skirt::SkirtSide side : {skirt::SkirtSide::Thrust, skirt::SkirtSide::AntiThrust}) {
+      g.side = side;
+      try {
+        const skirt::ElasticCoupling check(skirt::SkirtSideGrid(g), p.elasticSkirt.compliance,
+                                           p.elasticSkirt.coupling);
+      } catch (const std::exception& ex) {
+        liner.getSection("elastic_skirt")
+            .addProblem("nodes_file",
+                        std::string("the compliance does not fit this skirt: ") + ex.what());
+        return;
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -573,6 +617,7 @@ LinerElementMaker readLubricatedSkirt(DeckSection& liner, LinerDeckContext& cont
   p.parallelSides = liner.getBool(skirtKey("liner.parallel_sides"));
   p.pinRetainerPlay_m = liner.getSI(skirtKey("liner.pin_retainer_play_mm"));
   p.pinRetainerStiffness_Npm = liner.getSI(skirtKey("liner.pin_retainer_stiffness_N_per_mm"));
+  readElasticSkirt(liner, p);
   readFieldDumps(liner, context);
 
   context.tertiaryMotion = p.tertiaryMotion;

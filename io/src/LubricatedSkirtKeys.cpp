@@ -219,6 +219,30 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
               .byDefault(2e4)
               .within(Bounds{0.0, 1e9, true})
               .means("tertiary motion: retainer spring outside the play"),
+          K::file("liner.elastic_skirt.compliance_file",
+                  "Matrix Market `array` or `coordinate`, n x n [m/N]")
+              .byDefault("rigid skirt")
+              .means("radial compliance of the skirt on its structural grid (`io/"
+                     "ComplianceInput.h`, e.g. `examples/fe/`); with nodes_file it switches "
+                     "the elastic skirt on: film pressure and deformation converged together "
+                     "at every force evaluation (`skirt/ElasticCoupling.h`)"),
+          K::file("liner.elastic_skirt.nodes_file", "CSV `node, phi_deg, y_mm[, gas_...]`")
+              .byDefault("rigid skirt")
+              .means("node table of compliance_file (piston frame: heights above the pin); "
+                     "its grid must cover both film grids. The gas column is not applied yet"),
+          K::number("liner.elastic_skirt.tolerance_nm", Q::Length)
+              .byDefault(1.0)
+              .within(Bounds{0.0, 1000.0, true})
+              .means("elastic coupling converged when the deformation changes by at most "
+                     "max(this, relative_tolerance x smallest film) on the film grid"),
+          K::number("liner.elastic_skirt.relative_tolerance")
+              .byDefault(1e-3)
+              .within(Bounds::between(0, 0.1))
+              .means("elastic coupling tolerance relative to the smallest film thickness"),
+          K::wholeNumber("liner.elastic_skirt.max_iterations", 1, 10000)
+              .byDefault(60.0)
+              .means("film evaluations per side and force evaluation before the run stops "
+                     "with an error (never silent)"),
           K::numberList("liner.field_dumps.crank_angles_deg", Q::Angle)
               .byDefault("none")
               .within(Bounds{0.0, 720.0, false, true})

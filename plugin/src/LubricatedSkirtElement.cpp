@@ -58,6 +58,9 @@ struct LubricatedSkirtElement::Workspace {
   std::array<std::unique_ptr<skirt::SkirtSideLubrication>, 2> lubrication;
   std::array<skirt::GapFields, 2> gapFields;
   std::array<skirt::SkirtSideResults, 2> results;
+  // Elastic skirt: one coupling per side (its warm start is the side's last deformation).
+  std::array<std::unique_ptr<skirt::ElasticCoupling>, 2> elastic;
+  std::array<skirt::ElasticCouplingReport, 2> elasticReports;
   std::unique_ptr<detail::ForkJoinWorker> worker;  // parallelSides: the anti-thrust side
 };
 
@@ -86,6 +89,13 @@ LubricatedSkirtElement::LubricatedSkirtElement(const LubricatedSkirtParameters& 
     badParameter("pinRetainerStiffness_Npm must be positive and finite");
   if (p.fillFractionHistoryOrder != 1 && p.fillFractionHistoryOrder != 2)
     badParameter("fillFractionHistoryOrder must be 1 (backward Euler) or 2 (BDF2)");
+  if (p.elasticSkirt.enabled) {
+    if (!p.gap.terms.pistonElastic)
+      badParameter("elasticSkirt.enabled needs the gap term switch gap.terms.pistonElastic on");
+    if (!(std::isfinite(p.elasticSkirt.crankcasePressure_Pa) &&
+          p.elasticSkirt.crankcasePressure_Pa >= 0.0))
+      badParameter("elasticSkirt.crankcasePressure_Pa must be finite and >= 0");
+  }
 }
 
 LubricatedSkirtElement::~LubricatedSkirtElement() = default;
@@ -137,6 +147,11 @@ void LubricatedSkirtElement::addToModel(const ModelBuildContext& context) {
     workspace_->lubrication[k] = std::make_unique<skirt::SkirtSideLubrication>(
         grid, flowFactors, contactLaw, friction, parameters_.lubrication);
     workspace_->gapFields[k] = workspace_->gap[k]->makeFields();
+    if (parameters_.elasticSkirt.enabled) {
+      // Checks the compliance against this side's grid (size, finiteness, coverage).
+      workspace_->elastic[k] = std::make_unique<skirt::ElasticCoupling>(
+          grid, parameters_.elasticSkirt.compliance, parameters_.elasticSkirt.coupling);
+    }
   }
 }
 
@@ -206,13 +221,43 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     }
   }
   std::array<double, 2> gapTimes{0.0, 0.0};
+  const ElasticSkirtParameters& elastic = parameters_.elasticSkirt;
+  const double gasGauge_Pa =
+      elastic.enabled && elastic.cylinderPressure
+          ? elastic.cylinderPressure->calcPressure_Pa(crankAngle_deg) - elastic.crankcasePressure_Pa
+          : 0.0;
   auto solveSide = [&](int k) {
     skirt::GapFields& fields = workspace_->gapFields[k];
-    const auto gapStart = Clock::now();
-    workspace_->gap[k]->calc(skirtPose, skirtRate, pose.pinHeight_m, pose.axialVelocity_mps,
-                             fields);
-    gapTimes[k] = std::chrono::duration<double>(Clock::now() - gapStart).count();
-    workspace_->lubrication[k]->solve(fields, inputs[k], workspace_->results[k]);
+    gapTimes[k] = 0.0;
+    auto gapAndFilm = [&] {
+      const auto gapStart = Clock::now();
+      workspace_->gap[k]->calc(skirtPose, skirtRate, pose.pinHeight_m, pose.axialVelocity_mps,
+                               fields);
+      gapTimes[k] += std::chrono::duration<double>(Clock::now() - gapStart).count();
+      workspace_->lubrication[k]->solve(fields, inputs[k], workspace_->results[k]);
+    };
+    skirt::ElasticCoupling* coupling = workspace_->elastic[k].get();
+    if (!coupling) {
+      gapAndFilm();
+      return;
+    }
+    // The coupling's last film evaluation is the one of its returned deformation, so the
+    // results left in the workspace belong to the converged gap.
+    const skirt::ElasticCouplingReport report = coupling->solve(
+        [&](const Eigen::ArrayXd& elastic_m, skirt::FilmPressureEvaluation& out) {
+          fields.pistonElastic_m = elastic_m;
+          gapAndFilm();
+          out.normalPressure_Pa = workspace_->results[k].normalPressure_Pa;
+          out.minFilmThickness_m = workspace_->results[k].minFilmThickness_m;
+        },
+        gasGauge_Pa);
+    workspace_->elasticReports[k] = report;
+    if (!report.converged)
+      throw std::runtime_error(common::message(
+          "elastic skirt (", k == kThrust ? "thrust" : "anti-thrust", " side) did not converge in ",
+          report.iterations, " film evaluations: deformation change ", report.residual_m,
+          " m > tolerance ", report.tolerance_m,
+          " m (raise elasticSkirt.coupling.maxIterations or the tolerance)"));
   };
   try {
     if (parameters_.parallelSides) {
@@ -282,6 +327,11 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     side.filmOilVolume_m3 = out.filmOilVolume_m3;
     side.filmIterations = out.film.iterations;
     side.filmUsedFallback = out.film.usedFallback;
+    if (workspace_->elastic[k]) {
+      side.elasticIterations = workspace_->elasticReports[k].iterations;
+      side.maxElasticDeformation_m = workspace_->elasticReports[k].maxDeformation_m;
+      filmSolves_ += side.elasticIterations - 1;  // one is counted above
+    }
     total.force_N += out.totalLoads.force_N;
     total.moment_Nm += out.totalLoads.moment_Nm;
     dRate += out.dLoads_dPoseRate;
@@ -520,6 +570,17 @@ ElementOutputs LubricatedSkirtElement::getOutputs() const {
   if (!supply.crankAngle_deg.empty() || std::isfinite(supply.constant_m)) {
     o.push_back({"supply_film", "um", "oil film on the liner ahead of the skirt",
                  [this](S s) { return 1e6 * getResults(s).supplyFilm_m; }});
+  }
+  if (parameters_.elasticSkirt.enabled) {
+    for (int k : {kThrust, kAntiThrust}) {
+      const std::string n = names[k];
+      o.push_back({"elastic_iterations_" + n, "1",
+                   "film evaluations of the elastic coupling, " + n + " side",
+                   [side, k](S s) { return double(side(s, k).elasticIterations); }});
+      o.push_back({"max_elastic_deformation_" + n, "um",
+                   "largest elastic gap term of the skirt (+ opens the gap), " + n + " side",
+                   [side, k](S s) { return 1e6 * side(s, k).maxElasticDeformation_m; }});
+    }
   }
   if (parameters_.tertiaryMotion) {
     o.push_back({"retainer_force", "N", "pin-retainer force on the piston along +z",

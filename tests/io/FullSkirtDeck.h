@@ -21,6 +21,11 @@ class FullSkirtDeck : public SkirtScratchDeck {
     writeFile("piston_t.csv", "height_above_pin_mm,temperature_degC\n-18,60\n12,70\n");
     writeFile("liner_t.csv", "depth_mm,temperature_degC\n0,130\n140,100\n");
     writeFile("supply.csv", "crank_angle_deg,film_um\n0,0.5\n360,2\n540,1\n");
+    // The example's FE skirt compliance (examples/fe/gasoline_1400_2000rpm).
+    const std::string fe =
+        std::string(PISTONDYN_SOURCE_DIR) + "/examples/fe/gasoline_1400_2000rpm/";
+    writeFile("skirt_compliance.mtx", readFile(fe + "skirt_compliance.mtx"));
+    writeFile("skirt_nodes.csv", readFile(fe + "skirt_nodes.csv"));
     std::string text = readFile(deck());
     text = replaceSection(text, "liner", R"(liner:
   model: lubricated_skirt
@@ -63,6 +68,12 @@ class FullSkirtDeck : public SkirtScratchDeck {
   pin_retainer_play_mm: 0.3
   pin_retainer_stiffness_N_per_mm: 1e4
   field_dumps: {crank_angles_deg: [0, 370]}
+  elastic_skirt:
+    compliance_file: skirt_compliance.mtx
+    nodes_file: skirt_nodes.csv
+    tolerance_nm: 2
+    relative_tolerance: 2e-3
+    max_iterations: 40
 
 )");
     std::ofstream(deck()) << text;

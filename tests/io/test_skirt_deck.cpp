@@ -194,6 +194,11 @@ TEST_F(FullSkirtDeck, EveryKeyReachesTheElementInSI) {
   EXPECT_EQ(p.pinRetainerPlay_m, 0.3 * 1e-3);
   EXPECT_EQ(p.pinRetainerStiffness_Npm, 1e4 * 1e3);
   EXPECT_EQ(b.deck.fieldDumpAngles_deg, (std::vector<double>{0.0, 370.0}));
+  EXPECT_TRUE(p.elasticSkirt.enabled);
+  EXPECT_EQ(p.elasticSkirt.compliance.nodeCount(), 24 * 11);
+  EXPECT_EQ(p.elasticSkirt.coupling.absoluteTolerance_m, 2.0 * 1e-9);
+  EXPECT_EQ(p.elasticSkirt.coupling.relativeTolerance, 2e-3);
+  EXPECT_EQ(p.elasticSkirt.coupling.maxIterations, 40);
   // Thermal growth: the skirt grows by R alpha_p (T_p - T_ref) (60..70 degC), the bore by
   // R alpha_l (T_l - T_ref) (100..130 degC), T_ref = 25 degC. The hot clearance is the
   // smallest c0 + drop + both terms: at most its value on the mirrored profile's zero-drop

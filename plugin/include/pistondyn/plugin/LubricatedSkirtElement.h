@@ -21,7 +21,9 @@
 //                 the approach, energy of the last completed slap event, event count)
 //   cache:        the per-state results (loads, their derivatives, figures of both sides)
 // Mutable workspace: the two sides' film solvers and their warm starts (results depend on
-// them only within the film solver's tolerance; one model per thread, ForceElement.h). The
+// them only within the film solver's tolerance; one model per thread, ForceElement.h), and
+// with the elastic skirt each side's last converged deformation, the start of the next
+// coupling (results depend on it only within the coupling tolerance). The
 // nodal fields of the last evaluation are kept there too (getLastSideResults(): valid
 // right after realizing a state, e.g. at an output row, for field dumps).
 //
@@ -48,8 +50,11 @@
 #include "pistondyn/contact_forces/GreenwoodTrippLaw.h"
 #include "pistondyn/lubrication/Oil.h"
 #include "pistondyn/lubrication/PatirChengFlowFactors.h"
+#include "pistondyn/mapping/StructuralCompliance.h"
+#include "pistondyn/mbd_models/CylinderPressureCurve.h"
 #include "pistondyn/plugin/ElementCache.h"
 #include "pistondyn/plugin/LinerElement.h"
+#include "pistondyn/skirt/ElasticCoupling.h"
 #include "pistondyn/skirt/GapAssembly.h"
 #include "pistondyn/skirt/SkirtSideLubrication.h"
 
@@ -63,6 +68,26 @@ struct SupplyFilm {
   std::vector<double> thickness_m;     // [m], > 0, same size
   // Thickness at a crank angle [m] (any angle; wrapped into [0, 720)).
   double calcThickness_m(double angle_deg) const;
+};
+
+// Elastic skirt (issue 11): at every force evaluation each side's film pressure and the
+// skirt's elastic deformation are converged together (skirt::ElasticCoupling.h: Aitken-relaxed
+// fixed point, warm-started from the side's last converged deformation, which is mutable
+// workspace: results depend on it only within the coupling tolerance). The converged
+// deformation goes into GapFields::pistonElastic_m (the gap term switch pistonElastic must be
+// on). Its rate (pistonElasticRate_mps) is left 0: the deformation is quasi-static and its
+// squeeze is neglected; the Jacobian is the film's at the converged deformation. A coupling that
+// does not converge within coupling.maxIterations throws std::runtime_error (never silent).
+struct ElasticSkirtParameters {
+  bool enabled = false;  // default off: rigid skirt
+  // Radial compliance of the skirt in the piston frame (io::readStructuralCompliance): its
+  // grid must cover both skirt sides.
+  mapping::StructuralCompliance compliance;
+  skirt::ElasticCouplingParameters coupling;  // tolerances, iteration cap, relaxation
+  // Cylinder pressure scaling the compliance's gas field, gauge against crankcasePressure_Pa;
+  // null = no gas deformation (also when the compliance has no gas field).
+  std::shared_ptr<const mbd::CylinderPressureCurve> cylinderPressure;
+  double crankcasePressure_Pa = 1.0e5;  // [Pa] absolute, the pressure under the crown
 };
 
 struct LubricatedSkirtParameters {
@@ -98,6 +123,7 @@ struct LubricatedSkirtParameters {
   // (whose own threads may already use every core); the deck key liner.parallel_sides
   // turns it on for `pistondyn run`.
   bool parallelSides = false;
+  ElasticSkirtParameters elasticSkirt;  // elastic skirt, off by default
 };
 
 // The per-state results the element caches (small: no nodal fields).
@@ -113,6 +139,10 @@ struct LubricatedSkirtResults {
     double filmOilVolume_m3 = 0;
     int filmIterations = 0;
     bool filmUsedFallback = false;
+    // Elastic skirt only: film evaluations of the coupling and the largest elastic gap term
+    // [m] (+ opens the gap) of this evaluation.
+    int elasticIterations = 0;
+    double maxElasticDeformation_m = 0;
   };
   std::array<Side, 2> sides;                                    // [0] thrust, [1] anti-thrust
   Eigen::Vector3d forceOnPiston_N = Eigen::Vector3d::Zero();    // ground, at the origin

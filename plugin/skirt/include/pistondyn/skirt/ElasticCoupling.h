@@ -1,0 +1,189 @@
+#pragma once
+// Elastohydrodynamic (EHD) coupling of ONE skirt side at one instant (issue 11, item 3): the
+// film + asperity pressure and the elastic deformation of the skirt are converged together.
+//
+// One iteration (film grid = SkirtSideGrid::getCylinderGrid(), structural grid = the
+// compliance's nodes, both in the piston frame, offset 0):
+//   1. h_el = -u_film, u_film = HermiteSurface(structural u) on the film nodes (bicubic
+//      Hermite, mapping/HermiteSurface.h)
+//   2. p = film(h_el): the caller's film evaluation writes h_el into
+//      GapFields::pistonElastic_m, assembles the gap and solves film + contact; p is the
+//      total normal pressure on the skirt (SkirtSideResults::normalPressure_Pa)
+//   3. f = -ForceMap(p): consistent radial nodal forces on the structural grid (static
+//      equivalence, mapping/ForceMap.h), + outward
+//   4. u~ = C f + g p_cyl (compliance [m/N], optional gas field [m/Pa] times the cylinder
+//      pressure), the displacement the pressure p produces
+//   5. r = u~ - u; converged when max |Hermite(r)| over the film nodes <= tolerance_m, else
+//      u <- u + omega r (Aitken, below) and repeat.
+//
+// Sign (examples/fe/README.md, GapFields.h): u and f are radial, + OUTWARD. A film pressure
+// p > 0 pushes the skirt inwards: f < 0, u < 0 where it acts, and the gap term
+// h_pistonElastic = -u > 0 OPENS the gap. GapAssembly adds GapFields::pistonElastic_m to the
+// gap as it is (when the pistonElastic switch is on); this class returns that term.
+//
+// Tolerance: tolerance_m = max(absoluteTolerance_m, relativeTolerance * h_min), h_min the
+// smallest nominal gap of the last film evaluation (negative in contact counts as 0). Defaults
+// 1 nm and 1e-3: the change the next plain fixed-point step would make to the gap, anywhere on
+// the film grid, is below 0.1 % of the thinnest film and never required finer than 1 nm (film
+// solver noise times the compliance; a roughness sigma is 500x that).
+//
+// Why this scheme. The film pressure is stiff in the gap: dp/dh ~ -3p/h in the hydrodynamic
+// part and steeper still in asperity contact, so the loop's gain |d u~ / d u| (compliance x
+// film stiffness) is >= 1 for thin films and a plain fixed point (omega = 1) oscillates
+// (opening the gap drops the pressure, which closes it). Seen on the gasoline FE skirt
+// (tests/skirt/test_elastic_coupling_film.cpp): 2 um rigid gap, the residual shrinks by only 0.88
+// per step (not converged in 60); 1 um, a 2-cycle; overlap, it blows up. The feedback is
+// mainly negative (a film whose pressure falls as it opens; the shell's ovalisation can push
+// other nodes outward), so an under-relaxed step with omega ~ 1/(1 - lambda) <= 1 converges;
+// the right omega changes with
+// the film thickness along the cycle. Aitken's dynamic relaxation (vector form, Irons & Tuck
+// 1969; Kuettler & Wall 2008) estimates it from the last two residuals,
+//   omega_k = -omega_{k-1} r_{k-1}.(r_k - r_{k-1}) / |r_k - r_{k-1}|^2,
+// for the price of two dot products: no pressure-gap Jacobian of the film (which the film
+// solver does not return; a Newton scheme would need one film solve per structural node for
+// it), no extra film solves. Omega is clamped to [minRelaxation, maxRelaxation] (the negative
+// feedback never needs omega > 1). A safeguard for bad starts: a step after which the residual
+// grows more than residualGrowthLimit-fold is retaken from the previous iterate with a quarter
+// of its factor (backtracking; one film evaluation each). Without it a start that closes the
+// gap somewhere (contact pressure ~ 1e4 x the film's) sends the first step millimetres away
+// and the iteration never returns (seen with a random start on the gasoline skirt). Each solve
+// starts from the last converged deformation (warm start) with the last relaxation factor, so along
+// a cycle most calls converge in a few film evaluations.
+//
+// Non-convergence is never silent: solve() returns converged = false after maxIterations
+// film evaluations; the deformation then holds the last iterate (and the pressure of it), and
+// the warm start keeps the last CONVERGED deformation.
+//
+// Not done here: the liner's deformation (its compliance moves with the piston); the elastic
+// gap RATE (GapFields::pistonElasticRate_mps) is the caller's (e.g. the change of the converged
+// deformation between steps over the step).
+//
+// Cost: per iteration one film evaluation (the caller's), one sparse force map (film nodes),
+// one dense compliance product (structural nodes^2) and two Hermite updates (O(nodes)).
+// Stateful (warm start, workspaces): one object per skirt side and thread; not thread-safe.
+
+#include <functional>
+
+#include <Eigen/Core>
+
+#include "pistondyn/mapping/CylinderGrid.h"
+#include "pistondyn/mapping/ForceMap.h"
+#include "pistondyn/mapping/HermiteSurface.h"
+#include "pistondyn/mapping/StructuralCompliance.h"
+#include "pistondyn/skirt/SkirtSideGrid.h"
+
+namespace pistondyn::skirt {
+
+struct ElasticCouplingParameters {
+  // Convergence: max |change of the deformation on the film grid| <= max(absoluteTolerance_m,
+  // relativeTolerance * smallest nominal gap). Both >= 0, finite, not both 0.
+  double absoluteTolerance_m = 1.0e-9;  // [m], default 1 nm
+  double relativeTolerance = 1.0e-3;    // [-], default 1e-3
+  int maxIterations = 60;               // film evaluations per solve, >= 1
+  // Aitken relaxation: the first step of a solve after construction or resetWarmStart() uses
+  // initialRelaxation; later solves start with the last factor. All in (0, 1], min <= max.
+  double initialRelaxation = 0.5;  // [-]
+  double minRelaxation = 1.0e-3;   // [-]
+  double maxRelaxation = 1.0;      // [-]
+  // Backtracking: when the residual on the film grid grows by more than this factor in one
+  // step, the step is retaken from the previous iterate with a quarter of its factor
+  // (finite, >= 1; default 2).
+  double residualGrowthLimit = 2.0;  // [-]
+};
+
+// What the caller's film evaluation returns for one elastic gap term.
+struct FilmPressureEvaluation {
+  // Normal pressure on the skirt at the film nodes [Pa] (film + asperity - edge pressure),
+  // + pushes the skirt inwards; side.nodeCount() finite entries (k = i + nPhi j).
+  Eigen::ArrayXd normalPressure_Pa;
+  double minFilmThickness_m = 0.0;  // smallest nominal gap of this evaluation [m] (finite)
+};
+
+// The film: given h_pistonElastic on the film nodes [m] (+ opens the gap), fill `out`.
+using FilmPressureFunction =
+    std::function<void(const Eigen::ArrayXd& pistonElastic_m, FilmPressureEvaluation& out)>;
+
+struct ElasticCouplingReport {
+  bool converged = false;
+  int iterations = 0;        // film evaluations in this solve
+  double residual_m = 0.0;   // max |Hermite(u~ - u)| on the film grid, last iteration [m]
+  double tolerance_m = 0.0;  // the tolerance it was compared with [m]
+  double relaxation = 0.0;   // the Aitken factor in use at the end [-]
+  int backtracks = 0;        // steps retaken with a quarter of their factor (of iterations)
+  // Force bookkeeping of the last iteration: pistonForce_N = integral of p over the film grid
+  // (ForceMap's sourceTotal_N) [N], + inward; structureForce_N = sum of the radial nodal
+  // forces [N], + outward; unmapped_N = part of pistonForce_N outside the structural grid.
+  // Static equivalence: structureForce_N = -(pistonForce_N - unmapped_N).
+  double pistonForce_N = 0.0;
+  double structureForce_N = 0.0;
+  double unmapped_N = 0.0;
+  double maxDeformation_m = 0.0;  // max |h_pistonElastic| on the film grid [m]
+};
+
+class ElasticCoupling {
+ public:
+  // Inputs:
+  //   side        the skirt side (its film grid, absolute angles, piston-frame heights)
+  //   skirt       radial compliance of the skirt on its structural grid (StructuralCompliance.h:
+  //               u = C f, + outward, [m/N]; optional gas field [m/Pa]), piston frame
+  //   parameters  tolerances and relaxation (ElasticCouplingParameters)
+  // Throws std::invalid_argument with the member named for: a compliance whose size is not
+  // nodes x nodes of its grid, a gas field of the wrong size, non-finite entries, a film grid
+  // reaching outside the structural grid (heights, or angles of a sector), bad parameters.
+  ElasticCoupling(const SkirtSideGrid& side, const mapping::StructuralCompliance& skirt,
+                  const ElasticCouplingParameters& parameters = {});
+
+  // Converges the film pressure and the skirt deformation.
+  // Inputs:
+  //   film                the film evaluation (called once per iteration)
+  //   cylinderPressure_Pa gauge cylinder pressure scaling the gas field [Pa] (finite; ignored
+  //                       when the compliance has no gas field)
+  // Outputs: the report; pistonElastic_m(), structuralDisplacement_m(), structuralForce_N()
+  // and film() hold the last iterate (the converged one when report.converged).
+  // Throws std::invalid_argument for a non-finite cylinder pressure or a film evaluation of
+  // the wrong size or with non-finite entries (naming it); whatever the film throws passes.
+  [[nodiscard]] ElasticCouplingReport solve(const FilmPressureFunction& film,
+                                            double cylinderPressure_Pa = 0.0);
+
+  // h_pistonElastic on the film nodes [m] (+ opens the gap): the term for GapFields.
+  const Eigen::ArrayXd& pistonElastic_m() const { return pistonElastic_m_; }
+  // Radial displacement of the structural nodes [m] and the nodal forces [N], + outward.
+  const Eigen::VectorXd& structuralDisplacement_m() const { return u_m_; }
+  const Eigen::VectorXd& structuralForce_N() const { return force_N_; }
+  // The film evaluation at the returned deformation.
+  const FilmPressureEvaluation& film() const { return film_; }
+
+  // Starting guess of the next solve: structural radial displacement [m] (nodes entries,
+  // finite). solve() replaces it by its converged result.
+  void setStart(const Eigen::Ref<const Eigen::VectorXd>& structuralDisplacement_m);
+  const Eigen::VectorXd& getStart() const { return start_m_; }
+  // Start the next solve from zero deformation with the initial relaxation factor.
+  void resetWarmStart();
+
+  const mapping::CylinderGrid& getStructuralGrid() const { return structural_; }
+  const ElasticCouplingParameters& getParameters() const { return parameters_; }
+  int structuralNodeCount() const { return structural_.nodeCount(); }
+  int filmNodeCount() const { return filmGrid_.nodeCount(); }
+
+ private:
+  // Hermite of structural nodal values onto the film nodes.
+  void toFilmGrid(const Eigen::VectorXd& structural, Eigen::Ref<Eigen::VectorXd> film);
+
+  ElasticCouplingParameters parameters_;
+  mapping::CylinderGrid filmGrid_, structural_;
+  Eigen::MatrixXd compliance_m_per_N_;
+  Eigen::VectorXd gas_m_per_Pa_;  // empty without a gas field
+  mapping::ForceMap forceMap_;
+  mapping::HermiteSurface surface_;
+  mapping::HermiteGridWorkspace hermiteWs_;
+
+  Eigen::VectorXd start_m_;  // warm start
+  double startRelaxation_;
+  // Iterates and scratch (sized once).
+  Eigen::VectorXd u_m_, force_N_, target_m_, residual_m_, previousResidual_m_, residualFilm_m_,
+      uFilm_m_, previousU_m_;
+  Eigen::ArrayXd pistonElastic_m_;
+  FilmPressureEvaluation film_;
+};
+
+}  // namespace pistondyn::skirt

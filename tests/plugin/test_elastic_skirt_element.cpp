@@ -1,0 +1,127 @@
+// The lubricated skirt element with the elastic skirt (LubricatedSkirtParameters::elasticSkirt,
+// skirt::ElasticCoupling) on the passenger-car example engine with its committed FE skirt
+// compliance (examples/fe/gasoline_1400_2000rpm), at fixed poses (no cycle):
+//   - off by default, and off the deck's elastic keys change nothing;
+//   - at the same pose the elastic skirt's converged deformation opens the gap (the sign), the
+//     coupling converges and reports its iterations, and the same pose again starts from the
+//     last converged deformation (one film evaluation);
+//   - the deck keys liner.elastic_skirt.* switch it on, and half of them is an error.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "SkirtTestDeck.h"
+#include "pistondyn/io/ComplianceInput.h"
+#include "pistondyn/io/DeckError.h"
+#include "pistondyn/io/EngineDeck.h"
+#include "pistondyn/plugin/LubricatedSkirtElement.h"
+
+namespace {
+
+using namespace pistondyn;
+namespace ts = pistondyn::testsupport;
+
+const std::string kFe = std::string(PISTONDYN_SOURCE_DIR) + "/examples/fe/gasoline_1400_2000rpm/";
+
+struct Evaluation {
+  plugin::LubricatedSkirtResults::Side thrust;
+  bool hasElasticOutput = false;
+};
+
+// The thrust side at 20 deg after firing TDC, the piston 38 um towards thrust (2 um rigid gap at
+// the barrel's minimum-clearance line), no tilt.
+Evaluation evaluate(const ts::SkirtModel& m, int times = 1) {
+  m.model->buildSystem();
+  const auto& ct = m.model->getCrankTrain();
+  Evaluation e;
+  for (int i = 0; i < times; ++i) {
+    SimTK::State st = m.model->getDefaultState();
+    ct.setPose(st, 20.0 * M_PI / 180.0, 38e-6);
+    ct.setRates(st, m.engine.drive.speed_radps);
+    m.model->getSystem().realize(st, SimTK::Stage::Dynamics);
+    e.thrust = m.skirt().getResults(st).sides[0];
+  }
+  for (const auto& o : m.skirt().getOutputs())
+    e.hasElasticOutput = e.hasElasticOutput || o.name == "elastic_iterations_thrust";
+  return e;
+}
+
+TEST(ElasticSkirtElement, OpensTheGapAtAFixedPoseAndWarmStarts) {
+  plugin::LubricatedSkirtParameters rigid = ts::exampleSkirtParameters(32, 24);
+  EXPECT_FALSE(rigid.elasticSkirt.enabled);  // off by default
+  plugin::LubricatedSkirtParameters elastic = rigid;
+  elastic.elasticSkirt.enabled = true;
+  elastic.elasticSkirt.compliance =
+      io::readStructuralCompliance(kFe + "skirt_compliance.mtx", kFe + "skirt_nodes.csv");
+
+  const Evaluation r = evaluate(ts::makeGasolineSkirtModel(32, 24, &rigid));
+  const ts::SkirtModel em = ts::makeGasolineSkirtModel(32, 24, &elastic);
+  const Evaluation e = evaluate(em);
+  std::printf(
+      "[ElasticSkirtElement] thrust side, 20 deg, e = 38 um: min film %.3f um rigid, "
+      "%.3f um elastic (peak deformation %.3f um, %d film evaluations); normal force "
+      "%.1f N rigid, %.1f N elastic\n",
+      r.thrust.minFilmThickness_m * 1e6, e.thrust.minFilmThickness_m * 1e6,
+      e.thrust.maxElasticDeformation_m * 1e6, e.thrust.elasticIterations,
+      r.thrust.hydrodynamicNormalForce_N + r.thrust.asperityNormalForce_N,
+      e.thrust.hydrodynamicNormalForce_N + e.thrust.asperityNormalForce_N);
+  EXPECT_FALSE(r.hasElasticOutput);
+  EXPECT_TRUE(e.hasElasticOutput);
+  EXPECT_EQ(r.thrust.elasticIterations, 0);
+  EXPECT_GT(e.thrust.elasticIterations, 1);
+  EXPECT_GT(e.thrust.maxElasticDeformation_m, 1e-6);
+  // The film pushes the skirt in: a thicker film and a smaller load at the same pose.
+  EXPECT_GT(e.thrust.minFilmThickness_m, r.thrust.minFilmThickness_m + 1e-6);
+  EXPECT_LT(e.thrust.hydrodynamicNormalForce_N + e.thrust.asperityNormalForce_N,
+            r.thrust.hydrodynamicNormalForce_N + r.thrust.asperityNormalForce_N);
+  // A new state at the same pose: the coupling starts from its last converged deformation.
+  const Evaluation again = evaluate(em);
+  EXPECT_EQ(again.thrust.elasticIterations, 1);
+  EXPECT_NEAR(again.thrust.minFilmThickness_m, e.thrust.minFilmThickness_m, 2e-9);
+}
+
+TEST(ElasticSkirtElement, DeckKeysSwitchItOn) {
+  const std::string deck = ts::gasolineDeckPath();
+  // Paths relative to the deck's folder (examples/engines/gasoline_1400_2000rpm/).
+  const std::string mtx =
+      "liner.elastic_skirt.compliance_file=../../fe/gasoline_1400_2000rpm/"
+      "skirt_compliance.mtx";
+  const std::string nodes =
+      "liner.elastic_skirt.nodes_file=../../fe/gasoline_1400_2000rpm/"
+      "skirt_nodes.csv";
+  {
+    const io::EngineDeck d =
+        io::loadEngineDeck(deck, {mtx, nodes, "liner.elastic_skirt.max_iterations=25"});
+    const auto liner = d.makeLinerElement();
+    const auto& p = dynamic_cast<const plugin::LubricatedSkirtElement&>(*liner).getParameters();
+    EXPECT_TRUE(p.elasticSkirt.enabled);
+    EXPECT_EQ(p.elasticSkirt.compliance.nodeCount(), 264);
+    EXPECT_EQ(p.elasticSkirt.coupling.maxIterations, 25);
+    EXPECT_DOUBLE_EQ(p.elasticSkirt.coupling.absoluteTolerance_m, 1e-9);
+  }
+  {
+    const io::EngineDeck d = io::loadEngineDeck(deck, {});
+    const auto liner = d.makeLinerElement();
+    EXPECT_FALSE(dynamic_cast<const plugin::LubricatedSkirtElement&>(*liner)
+                     .getParameters()
+                     .elasticSkirt.enabled);
+  }
+  // A skirt reaching 2 mm above the structural grid's top row (12 mm above the pin).
+  try {
+    (void)io::loadEngineDeck(deck, {mtx, nodes, "piston.skirt_top_above_pin_mm=14"});
+    ADD_FAILURE() << "a compliance that does not cover the skirt was accepted";
+  } catch (const io::DeckError& ex) {
+    EXPECT_NE(std::string(ex.what()).find("the compliance does not fit this skirt"),
+              std::string::npos)
+        << ex.what();
+  }
+  try {
+    (void)io::loadEngineDeck(deck, {mtx});
+    ADD_FAILURE() << "a compliance without its node table was accepted";
+  } catch (const io::DeckError& ex) {
+    EXPECT_NE(std::string(ex.what()).find("nodes_file"), std::string::npos) << ex.what();
+  }
+}
+
+}  // namespace

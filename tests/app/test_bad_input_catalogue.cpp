@@ -4,9 +4,9 @@
 // non-monotonic axes, wrong column counts or NaN, unreadable paths and hostile files, bad
 // overrides and an output folder that is a file. Each case must exit with its code (1: bad
 // input, 2: bad command line), print one message per problem that names the file:line or
-// the key and what is expected, and leave no result file behind. (Compliance files of the
-// wrong size or not symmetric are not deck inputs yet: tests/io ComplianceInput.* checks
-// their reader the same way.)
+// the key and what is expected, and leave no result file behind. Compliance files of the
+// wrong size or not symmetric (liner.elastic_skirt.*) are here too; tests/io
+// ComplianceInput.* checks their reader's every other rejection.
 
 #include <gtest/gtest.h>
 
@@ -104,6 +104,32 @@ TEST_F(BadInputCatalogue, EachCaseExitsNamingWhereAndWhatAndWritesNothing) {
        "--set geometry.conrod_length_mm=30",
        1,
        {"--set geometry.conrod_length_mm: the rod must be longer than half the stroke"}},
+      // The elastic skirt's compliance (liner.elastic_skirt.*): a 2 x 2 node table with a
+      // matrix of the wrong size, and with one that breaks Maxwell-Betti reciprocity.
+      {"compliance of the wrong size for its node table",
+       [](auto& f) {
+         f.writeFile("nodes.csv", "node,phi_deg,y_mm\n1,0,-1\n2,30,-1\n3,0,3\n4,30,3\n");
+         f.writeFile("c.mtx",
+                     "%%MatrixMarket matrix array real general\n3 3\n"
+                     "4e-9\n0\n0\n0\n4e-9\n0\n0\n0\n4e-9\n");
+       },
+       "--set liner.elastic_skirt.compliance_file=c.mtx "
+       "--set liner.elastic_skirt.nodes_file=nodes.csv",
+       1,
+       {"liner.elastic_skirt.compliance_file", "c.mtx: 3 x 3 matrix, expected 4 x 4",
+        "nodes.csv"}},
+      {"compliance not symmetric",
+       [](auto& f) {
+         f.writeFile("nodes.csv", "node,phi_deg,y_mm\n1,0,-1\n2,30,-1\n3,0,3\n4,30,3\n");
+         f.writeFile("c.mtx",
+                     "%%MatrixMarket matrix array real general\n4 4\n"
+                     "4e-9\n3e-9\n0\n0\n1e-9\n4e-9\n0\n0\n0\n0\n4e-9\n0\n0\n0\n0\n4e-9\n");
+       },
+       "--set liner.elastic_skirt.compliance_file=c.mtx "
+       "--set liner.elastic_skirt.nodes_file=nodes.csv",
+       1,
+       {"liner.elastic_skirt.compliance_file", "c.mtx: not symmetric: entry (2, 1)",
+        "Maxwell-Betti"}},
       {"pressure table: angles not increasing",
        [table](auto& f) {
          f.writeTable("crank_angle_deg,pressure_bar\n0,40\n10,30\n5,20\n720,40\n");

@@ -72,33 +72,33 @@ struct LinearlyImplicitStepper::Impl {
                                             " s: " + reason);
   }
 
-  void pack(const SimTK::State& s, Eigen::VectorXd& y) const {
-    y.resize(n);
+  void pack(const SimTK::State& s, Eigen::VectorXd& packed) const {
+    packed.resize(n);
     const SimTK::Vector& q = s.getQ();
     const SimTK::Vector& u = s.getU();
     const SimTK::Vector& z = s.getZ();
     for (int i = 0; i < nq; ++i)
-      y[i] = q[freeQ[i]];
+      packed[i] = q[freeQ[i]];
     for (int i = 0; i < nu; ++i)
-      y[nq + i] = u[freeU[i]];
+      packed[nq + i] = u[freeU[i]];
     for (int i = 0; i < nz; ++i)
-      y[nq + nu + i] = z[i];
+      packed[nq + nu + i] = z[i];
   }
 
-  void unpack(const Eigen::VectorXd& y, double t, SimTK::State& s) const {
+  void unpack(const Eigen::VectorXd& packed, double t, SimTK::State& s) const {
     // Only a new time invalidates Stage::Time (and with it the auto-update values).
     if (s.getTime() != t)
       s.setTime(t);
     SimTK::Vector& q = s.updQ();
     for (int i = 0; i < nq; ++i)
-      q[freeQ[i]] = y[i];
+      q[freeQ[i]] = packed[i];
     SimTK::Vector& u = s.updU();
     for (int i = 0; i < nu; ++i)
-      u[freeU[i]] = y[nq + i];
+      u[freeU[i]] = packed[nq + i];
     if (nz > 0) {
       SimTK::Vector& z = s.updZ();
       for (int i = 0; i < nz; ++i)
-        z[i] = y[nq + nu + i];
+        z[i] = packed[nq + nu + i];
     }
     system.prescribe(s);
   }

@@ -15,6 +15,7 @@
 #include <fstream>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ScratchDeck.h"
@@ -44,6 +45,21 @@ struct BadInput {
 
 std::string lineText(int n) {
   return std::to_string(n);
+}
+
+// A case of the elastic skirt: the 2 x 2 node table nodes.csv and the matrix c.mtx (a
+// Matrix Market array of the given size line and entries) beside the deck, both set.
+BadInput complianceCase(const std::string& name, const std::string& sizeAndEntries,
+                        std::vector<std::string> expected) {
+  return {name,
+          [sizeAndEntries](auto& f) {
+            f.writeFile("nodes.csv", "node,phi_deg,y_mm\n1,0,-1\n2,30,-1\n3,0,3\n4,30,3\n");
+            f.writeFile("c.mtx", "%%MatrixMarket matrix array real general\n" + sizeAndEntries);
+          },
+          "--set liner.elastic_skirt.compliance_file=c.mtx "
+          "--set liner.elastic_skirt.nodes_file=nodes.csv",
+          1,
+          std::move(expected)};
 }
 
 TEST_F(BadInputCatalogue, EachCaseExitsNamingWhereAndWhatAndWritesNothing) {
@@ -106,30 +122,14 @@ TEST_F(BadInputCatalogue, EachCaseExitsNamingWhereAndWhatAndWritesNothing) {
        {"--set geometry.conrod_length_mm: the rod must be longer than half the stroke"}},
       // The elastic skirt's compliance (liner.elastic_skirt.*): a 2 x 2 node table with a
       // matrix of the wrong size, and with one that breaks Maxwell-Betti reciprocity.
-      {"compliance of the wrong size for its node table",
-       [](auto& f) {
-         f.writeFile("nodes.csv", "node,phi_deg,y_mm\n1,0,-1\n2,30,-1\n3,0,3\n4,30,3\n");
-         f.writeFile("c.mtx",
-                     "%%MatrixMarket matrix array real general\n3 3\n"
-                     "4e-9\n0\n0\n0\n4e-9\n0\n0\n0\n4e-9\n");
-       },
-       "--set liner.elastic_skirt.compliance_file=c.mtx "
-       "--set liner.elastic_skirt.nodes_file=nodes.csv",
-       1,
-       {"liner.elastic_skirt.compliance_file", "c.mtx: 3 x 3 matrix, expected 4 x 4",
-        "nodes.csv"}},
-      {"compliance not symmetric",
-       [](auto& f) {
-         f.writeFile("nodes.csv", "node,phi_deg,y_mm\n1,0,-1\n2,30,-1\n3,0,3\n4,30,3\n");
-         f.writeFile("c.mtx",
-                     "%%MatrixMarket matrix array real general\n4 4\n"
-                     "4e-9\n3e-9\n0\n0\n1e-9\n4e-9\n0\n0\n0\n0\n4e-9\n0\n0\n0\n0\n4e-9\n");
-       },
-       "--set liner.elastic_skirt.compliance_file=c.mtx "
-       "--set liner.elastic_skirt.nodes_file=nodes.csv",
-       1,
-       {"liner.elastic_skirt.compliance_file", "c.mtx: not symmetric: entry (2, 1)",
-        "Maxwell-Betti"}},
+      complianceCase("compliance of the wrong size for its node table",
+                     "3 3\n4e-9\n0\n0\n0\n4e-9\n0\n0\n0\n4e-9\n",
+                     {"liner.elastic_skirt.compliance_file", "c.mtx: 3 x 3 matrix, expected 4 x 4",
+                      "nodes.csv"}),
+      complianceCase("compliance not symmetric",
+                     "4 4\n4e-9\n3e-9\n0\n0\n1e-9\n4e-9\n0\n0\n0\n0\n4e-9\n0\n0\n0\n0\n4e-9\n",
+                     {"liner.elastic_skirt.compliance_file", "c.mtx: not symmetric: entry (2, 1)",
+                      "Maxwell-Betti"}),
       {"pressure table: angles not increasing",
        [table](auto& f) {
          f.writeTable("crank_angle_deg,pressure_bar\n0,40\n10,30\n5,20\n720,40\n");

@@ -22,6 +22,17 @@ FilmSolverOptions multigridOptions(double tolerance) {
   return o;
 }
 
+// Opposite anisotropies in one 64 x 40 grid over the slider: cells 300 times longer along y
+// than along x in the left half, 40 times longer along x in the right half. No single
+// coarsening direction suits both, and point smoothing fails on it.
+FilmGrid oppositeAnisotropiesGrid(const test::InclinedSlider& s) {
+  const double dy = s.length_m / 39;
+  Eigen::VectorXd x(64);
+  for (int i = 0; i < 64; ++i)
+    x[i] = i < 32 ? i * dy / 300 : 31 * dy / 300 + (i - 31) * 40 * dy;
+  return FilmGrid::fromCoordinates(x, FilmGrid::clusteredCoordinates(40, 0.0, s.length_m, 0.0));
+}
+
 // Multigrid fast solver vs the reference Gauss-Seidel and vs the sparse-direct fast solver, run
 // to a residual of 1e-11 (as in test_film_solver_agreement.cpp: far below 1e-6 of the peak
 // pressure on these grids). The multigrid path must do the work itself: no factorisation (its
@@ -316,19 +327,13 @@ TEST(FilmMultigrid, IndependentSolversOnThreads) {
   test::expectSameLoadsOnThreads(o, 64, 48);
 }
 
-// Opposite anisotropies in one grid (cells 300 times longer along y than along x in the left
-// half, 40 times longer along x in the right half): no single coarsening direction suits both,
-// point smoothing fails, the multigrid Krylov solve gives up and the solver factorises the
+// Opposite anisotropies in one grid (oppositeAnisotropiesGrid): the multigrid Krylov solve
+// gives up and the solver factorises the
 // current matrix instead (its documented fallback). The answer must still be the sparse-direct
 // one.
 TEST(FilmMultigrid, FallsBackToFactorisationWhenKrylovFails) {
   const test::InclinedSlider s;
-  const double dy = s.length_m / 39;
-  Eigen::VectorXd x(64);
-  for (int i = 0; i < 64; ++i)
-    x[i] = i < 32 ? i * dy / 300 : 31 * dy / 300 + (i - 31) * 40 * dy;
-  const FilmGrid g =
-      FilmGrid::fromCoordinates(x, FilmGrid::clusteredCoordinates(40, 0.0, s.length_m, 0.0));
+  const FilmGrid g = oppositeAnisotropiesGrid(s);
   FilmProblem pr = s.problem(g);
   pr.cavitation = CavitationModel::Reynolds;
   FilmSolverOptions directOptions = test::tightOptions(FilmSolverType::FastActiveSet, 1e-10);
@@ -342,7 +347,8 @@ TEST(FilmMultigrid, FallsBackToFactorisationWhenKrylovFails) {
   EXPECT_GE(c.factorisations, 1);
   const double peak = b.pressure_Pa().abs().maxCoeff();
   EXPECT_LT((b.pressure_Pa() - c.pressure_Pa()).abs().maxCoeff(), 1e-6 * peak);
-  // Automatic (multigrid at this size) falls back likewise, then keeps to the factorisation.
+  // Automatic (multigrid at this size) falls back likewise, then keeps to the factorisation
+  // for its pause (AutomaticReturnsToMultigridAfterAFailure).
   FilmSolver automatic(test::tightOptions(FilmSolverType::FastActiveSet, 1e-10));
   const FilmResult first = automatic.solve(g, pr);
   EXPECT_TRUE(first.converged);
@@ -361,12 +367,7 @@ TEST(FilmMultigrid, FallsBackToFactorisationWhenKrylovFails) {
 // degenerate steady film at TDC ran on KLU throughout.
 TEST(FilmMultigrid, AutomaticReturnsToMultigridAfterAFailure) {
   const test::InclinedSlider s;
-  const double dy = s.length_m / 39;
-  Eigen::VectorXd x(64);
-  for (int i = 0; i < 64; ++i)
-    x[i] = i < 32 ? i * dy / 300 : 31 * dy / 300 + (i - 31) * 40 * dy;
-  const FilmGrid bad =
-      FilmGrid::fromCoordinates(x, FilmGrid::clusteredCoordinates(40, 0.0, s.length_m, 0.0));
+  const FilmGrid bad = oppositeAnisotropiesGrid(s);
   const FilmGrid good = FilmGrid::uniform(64, 0.02, 40, s.length_m);
   FilmProblem badProblem = s.problem(bad), goodProblem = s.problem(good);
   badProblem.cavitation = goodProblem.cavitation = CavitationModel::Reynolds;
@@ -387,8 +388,9 @@ TEST(FilmMultigrid, AutomaticReturnsToMultigridAfterAFailure) {
     ASSERT_TRUE(r.converged);
     if (firstMultigridCall < 0 && r.multigridBuilds > 0)
       firstMultigridCall = call;
-    if (firstMultigridCall > 0 && call > firstMultigridCall)
+    if (firstMultigridCall > 0 && call > firstMultigridCall) {
       EXPECT_EQ(r.factorisations, 0) << "call " << call;
+    }
   }
   test::reportFigure("multigrid.callsBeforeRetry", firstMultigridCall);
   EXPECT_EQ(firstMultigridCall, 9);  // after the pause of 8 calls

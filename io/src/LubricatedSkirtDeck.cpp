@@ -465,6 +465,10 @@ void readElasticSkirt(DeckSection& liner, plugin::LubricatedSkirtParameters& p) 
   el.coupling.relativeTolerance = e.getNumber(skirtKey("liner.elastic_skirt.relative_tolerance"));
   el.coupling.maxIterations =
       static_cast<int>(e.getInteger(skirtKey("liner.elastic_skirt.max_iterations")));
+  el.coupling.scheme = e.getChoice<skirt::ElasticCouplingScheme>(
+      skirtKey("liner.elastic_skirt.scheme"),
+      {{"aitken", skirt::ElasticCouplingScheme::Aitken},
+       {"newton", skirt::ElasticCouplingScheme::Newton}});
   const auto matrix = e.getOptionalFilePath("compliance_file");
   const auto nodes = e.getOptionalFilePath("nodes_file");
   if (!matrix && !nodes)

@@ -243,6 +243,11 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
               .byDefault(60.0)
               .means("film evaluations per side and force evaluation before the run stops "
                      "with an error (never silent)"),
+          K::choice("liner.elastic_skirt.scheme", {"aitken", "newton"})
+              .byDefault("aitken")
+              .means("elastic coupling iteration (skirt/ElasticCoupling.h): Aitken-relaxed "
+                     "fixed point, or inexact Newton (GMRES on film evaluations, preconditioned "
+                     "by the film's local pressure-gap stiffness)"),
           K::numberList("liner.field_dumps.crank_angles_deg", Q::Angle)
               .byDefault("none")
               .within(Bounds{0.0, 720.0, false, true})

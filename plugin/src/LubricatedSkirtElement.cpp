@@ -247,8 +247,18 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
         [&](const Eigen::ArrayXd& elastic_m, skirt::FilmPressureEvaluation& out) {
           fields.pistonElastic_m = elastic_m;
           gapAndFilm();
-          out.normalPressure_Pa = workspace_->results[k].normalPressure_Pa;
-          out.minFilmThickness_m = workspace_->results[k].minFilmThickness_m;
+          const skirt::SkirtSideResults& res = workspace_->results[k];
+          out.normalPressure_Pa = res.normalPressure_Pa;
+          out.minFilmThickness_m = res.minFilmThickness_m;
+          if (coupling->getParameters().scheme == skirt::ElasticCouplingScheme::Newton) {
+            const Eigen::Index n = res.normalPressure_Pa.size();
+            const Eigen::Map<const Eigen::ArrayXd> pc(res.contact.pressure_Pa.data(), n);
+            const Eigen::Map<const Eigen::ArrayXd> slope(res.contact.dPressure_dGap_PaPerM.data(),
+                                                         n);
+            skirt::localPressureStiffness(res.normalPressure_Pa, pc, res.filmGap_m, slope,
+                                          workspace_->lubrication[k]->getCompositeSigma_m(),
+                                          out.pressureStiffness_Pa_per_m);
+          }
         },
         gasGauge_Pa);
     workspace_->elasticReports[k] = report;

@@ -265,6 +265,28 @@ TEST(ElasticCouplingBadInput, NamesTheMember) {
     p.absoluteTolerance_m = 0.0;
     p.relativeTolerance = 0.0;
     expectInvalidArgument([&] { ps::ElasticCoupling(c.side, c.compliance, p); }, {"both 0"});
+    p = {};
+    p.maxKrylovIterations = 0;
+    expectInvalidArgument([&] { ps::ElasticCoupling(c.side, c.compliance, p); },
+                          {"maxKrylovIterations = 0", "1 ... 50"});
+    p = {};
+    p.krylovTolerance = 1.0;
+    expectInvalidArgument([&] { ps::ElasticCoupling(c.side, c.compliance, p); },
+                          {"krylovTolerance", "(0, 1)"});
+  }
+  {
+    // The Newton scheme needs the film's local stiffness with every evaluation.
+    ps::ElasticCouplingParameters p;
+    p.scheme = ps::ElasticCouplingScheme::Newton;
+    ps::ElasticCoupling newton(c.side, c.compliance, p);
+    const int n = c.side.nodeCount();
+    expectInvalidArgument(
+        [&] {
+          (void)newton.solve([n](const Eigen::ArrayXd&, ps::FilmPressureEvaluation& out) {
+            out.normalPressure_Pa = Eigen::ArrayXd::Constant(n, 1e5);
+          });
+        },
+        {"Newton scheme needs", "pressureStiffness_Pa_per_m"});
   }
   ps::ElasticCoupling coupling(c.side, c.compliance);
   expectInvalidArgument(

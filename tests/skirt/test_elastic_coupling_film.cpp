@@ -104,6 +104,12 @@ class GasolineSide {
       solve(e_m, elastic_m);
       out.normalPressure_Pa = results_.normalPressure_Pa;
       out.minFilmThickness_m = results_.minFilmThickness_m;
+      const Eigen::Index n = results_.normalPressure_Pa.size();
+      const Eigen::Map<const Eigen::ArrayXd> pc(results_.contact.pressure_Pa.data(), n);
+      const Eigen::Map<const Eigen::ArrayXd> slope(results_.contact.dPressure_dGap_PaPerM.data(),
+                                                   n);
+      ps::localPressureStiffness(results_.normalPressure_Pa, pc, results_.filmGap_m, slope,
+                                 sigma_m(), out.pressureStiffness_Pa_per_m);
     };
   }
   // Side force the film and the contact put on the liner (+ towards thrust) [N].
@@ -232,6 +238,40 @@ TEST(ElasticCouplingFilm, PlainFixedPointFailsWhereAitkenConverges) {
   const ps::ElasticCouplingReport again = aitken.solve(film);
   EXPECT_TRUE(again.converged);
   EXPECT_EQ(again.iterations, 1);
+}
+
+// The Newton scheme (GMRES on film evaluations, preconditioned by the local stiffness) and
+// Aitken's relaxation are different iterations on the same equations: where both converge they
+// must give the same deformation (to the tolerance), from a 2 um, a 1 um and a 0.5 um rigid
+// gap (the last with asperity contact). The film evaluations each needs are printed.
+TEST(ElasticCouplingFilm, NewtonAndAitkenReachTheSameDeformation) {
+  GasolineSide s;
+  const auto compliance = gasolineSkirt();
+  ps::ElasticCouplingParameters newtonParameters;
+  newtonParameters.scheme = ps::ElasticCouplingScheme::Newton;
+  newtonParameters.maxIterations = 200;
+  ps::ElasticCouplingParameters aitkenParameters;
+  aitkenParameters.maxIterations = 200;
+  for (const double e_m : {38e-6, 39e-6, 39.5e-6}) {
+    const auto film = s.filmAt(e_m);
+    ps::ElasticCoupling aitken(s.side(), compliance, aitkenParameters);
+    const ps::ElasticCouplingReport a = aitken.solve(film);
+    ps::ElasticCoupling newton(s.side(), compliance, newtonParameters);
+    const ps::ElasticCouplingReport b = newton.solve(film);
+    ASSERT_TRUE(a.converged) << "Aitken at e = " << e_m << ": residual " << a.residual_m;
+    ASSERT_TRUE(b.converged) << "Newton at e = " << e_m << ": residual " << b.residual_m;
+    const double difference = (newton.pistonElastic_m() - aitken.pistonElastic_m()).abs().maxCoeff();
+    const double tol = std::max(a.tolerance_m, b.tolerance_m);
+    std::printf(
+        "[ElasticCouplingFilm] rigid gap %.1f um: Aitken %d film evaluations, Newton %d (%d "
+        "Newton steps, %d GMRES, %d backtracks); peak deformation %.3f um, min film %.3f um; "
+        "difference %.2e m (tolerance %.2e m)\n",
+        (40e-6 - e_m) * 1e6, a.iterations, b.iterations, b.newtonSteps, b.krylovIterations,
+        b.backtracks, b.maxDeformation_m * 1e6, newton.film().minFilmThickness_m * 1e6, difference,
+        tol);
+    EXPECT_GT(b.maxDeformation_m, 20.0 * tol);
+    EXPECT_LE(difference, 2.0 * tol);
+  }
 }
 
 // After the first solve, a whole coupled solve (film included) allocates nothing: the

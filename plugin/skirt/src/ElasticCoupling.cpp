@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "Checks.h"
 
@@ -32,6 +33,12 @@ void checkParameters(const ElasticCouplingParameters& p) {
   if (!(std::isfinite(p.residualGrowthLimit) && p.residualGrowthLimit >= 1.0))
     detail::fail(kParams, detail::named("residualGrowthLimit", p.residualGrowthLimit, "") +
                               " must be finite and at least 1");
+  if (p.maxKrylovIterations < 1 || p.maxKrylovIterations > 50)
+    detail::fail(kParams, "maxKrylovIterations = " + std::to_string(p.maxKrylovIterations) +
+                              " must be in 1 ... 50");
+  if (!(std::isfinite(p.krylovTolerance) && p.krylovTolerance > 0.0 && p.krylovTolerance < 1.0))
+    detail::fail(kParams,
+                 detail::named("krylovTolerance", p.krylovTolerance, "") + " must be in (0, 1)");
   if (p.minRelaxation > p.maxRelaxation)
     detail::fail(kParams, detail::named("minRelaxation", p.minRelaxation, "") +
                               " must not exceed " +
@@ -129,6 +136,8 @@ ElasticCoupling::ElasticCoupling(const SkirtSideGrid& side,
   uFilm_m_ = Eigen::VectorXd::Zero(nf);
   pistonElastic_m_ = Eigen::ArrayXd::Zero(nf);
   film_.normalPressure_Pa = Eigen::ArrayXd::Zero(nf);
+  if (parameters_.scheme == ElasticCouplingScheme::Newton)
+    setUpNewton();
 }
 
 void ElasticCoupling::toFilmGrid(const Eigen::VectorXd& structural,
@@ -154,60 +163,78 @@ void ElasticCoupling::resetWarmStart() {
   startRelaxation_ = parameters_.initialRelaxation;
 }
 
+void ElasticCoupling::evaluate(const Eigen::VectorXd& u, const FilmPressureFunction& film,
+                               double cylinderPressure_Pa, Eigen::VectorXd& target,
+                               ElasticCouplingReport& report) {
+  const Eigen::Index nf = filmGrid_.nodeCount();
+  ++report.iterations;
+  // 1-2: the gap term of the deformation and the film's pressure for it.
+  toFilmGrid(u, uFilm_m_);
+  pistonElastic_m_ = -uFilm_m_.array();
+  film(pistonElastic_m_, film_);
+  if (film_.normalPressure_Pa.size() != nf)
+    detail::fail(kWhere, "the film evaluation returned normalPressure_Pa with " +
+                             std::to_string(film_.normalPressure_Pa.size()) +
+                             " entries, expected " + std::to_string(nf) + " (one per film node)");
+  detail::requireFiniteEntries(kWhere, "film evaluation normalPressure_Pa",
+                               film_.normalPressure_Pa.matrix(), "Pa");
+  detail::requireFinite(kWhere, "film evaluation minFilmThickness_m", film_.minFilmThickness_m,
+                        "m");
+  // 3-4: nodal forces (+ outward: the pressure pushes inwards) and the displacement they give.
+  const mapping::LoadBalance balance = forceMap_.apply(film_.normalPressure_Pa.matrix(), force_N_);
+  force_N_ = -force_N_;
+  target.noalias() = compliance_m_per_N_ * force_N_;
+  if (gas_m_per_Pa_.size() > 0)
+    target += cylinderPressure_Pa * gas_m_per_Pa_;
+  report.pistonForce_N = balance.sourceTotal_N;
+  report.unmapped_N = balance.unmapped_N;
+  report.structureForce_N = force_N_.sum();
+  report.maxDeformation_m = pistonElastic_m_.abs().maxCoeff();
+}
+
+double ElasticCoupling::filmGridNorm(const Eigen::VectorXd& residual) {
+  toFilmGrid(residual, residualFilm_m_);
+  return residualFilm_m_.cwiseAbs().maxCoeff();
+}
+
+bool ElasticCoupling::checkConvergence(ElasticCouplingReport& report) {
+  // 5: the change a plain fixed-point step would make, measured on the film grid.
+  residual_m_ = target_m_ - u_m_;
+  report.residual_m = filmGridNorm(residual_m_);
+  report.tolerance_m =
+      std::max(parameters_.absoluteTolerance_m,
+               parameters_.relativeTolerance * std::max(film_.minFilmThickness_m, 0.0));
+  report.converged = report.residual_m <= report.tolerance_m;
+  return report.converged;
+}
+
 ElasticCouplingReport ElasticCoupling::solve(const FilmPressureFunction& film,
                                              double cylinderPressure_Pa) {
   detail::requireFinite(kWhere, "solve(cylinderPressure_Pa)", cylinderPressure_Pa, "Pa");
   if (!film)
     detail::fail(kWhere, "solve(film): the film evaluation is empty");
-  const Eigen::Index nf = filmGrid_.nodeCount();
-  const bool gas = gas_m_per_Pa_.size() > 0;
-
+  u_m_ = start_m_;
   ElasticCouplingReport report;
+  ElasticCouplingReport result = parameters_.scheme == ElasticCouplingScheme::Newton
+                                     ? solveNewton(film, cylinderPressure_Pa, report)
+                                     : solveAitken(film, cylinderPressure_Pa, report);
+  return result;
+}
+
+ElasticCouplingReport ElasticCoupling::solveAitken(const FilmPressureFunction& film,
+                                                   double cylinderPressure_Pa,
+                                                   ElasticCouplingReport report) {
   double omega = startRelaxation_;
   double previousResidualNorm_m = 0.0;
-  u_m_ = start_m_;
-  for (int it = 1; it <= parameters_.maxIterations; ++it) {
-    report.iterations = it;
-    // 1-2: the gap term of the current deformation and the film's pressure for it.
-    toFilmGrid(u_m_, uFilm_m_);
-    pistonElastic_m_ = -uFilm_m_.array();
-    film(pistonElastic_m_, film_);
-    if (film_.normalPressure_Pa.size() != nf)
-      detail::fail(kWhere, "the film evaluation returned normalPressure_Pa with " +
-                               std::to_string(film_.normalPressure_Pa.size()) +
-                               " entries, expected " + std::to_string(nf) + " (one per film node)");
-    detail::requireFiniteEntries(kWhere, "film evaluation normalPressure_Pa",
-                                 film_.normalPressure_Pa.matrix(), "Pa");
-    detail::requireFinite(kWhere, "film evaluation minFilmThickness_m", film_.minFilmThickness_m,
-                          "m");
-
-    // 3-4: nodal forces (+ outward: the pressure pushes inwards) and the displacement they give.
-    const mapping::LoadBalance balance =
-        forceMap_.apply(film_.normalPressure_Pa.matrix(), force_N_);
-    force_N_ = -force_N_;
-    target_m_.noalias() = compliance_m_per_N_ * force_N_;
-    if (gas)
-      target_m_ += cylinderPressure_Pa * gas_m_per_Pa_;
-    report.pistonForce_N = balance.sourceTotal_N;
-    report.unmapped_N = balance.unmapped_N;
-    report.structureForce_N = force_N_.sum();
-    report.maxDeformation_m = pistonElastic_m_.abs().maxCoeff();
-
-    // 5: the change a plain fixed-point step would make, measured on the film grid.
-    residual_m_ = target_m_ - u_m_;
-    toFilmGrid(residual_m_, residualFilm_m_);
-    report.residual_m = residualFilm_m_.cwiseAbs().maxCoeff();
-    report.tolerance_m =
-        std::max(parameters_.absoluteTolerance_m,
-                 parameters_.relativeTolerance * std::max(film_.minFilmThickness_m, 0.0));
-    if (report.residual_m <= report.tolerance_m) {
-      report.converged = true;
+  while (report.iterations < parameters_.maxIterations) {
+    evaluate(u_m_, film, cylinderPressure_Pa, target_m_, report);
+    if (checkConvergence(report))
       break;
-    }
     // Keep the last iterate consistent with its pressure when giving up.
-    if (it == parameters_.maxIterations)
+    if (report.iterations == parameters_.maxIterations)
       break;
-    if (it > 1 && report.residual_m > parameters_.residualGrowthLimit * previousResidualNorm_m &&
+    if (report.iterations > 1 &&
+        report.residual_m > parameters_.residualGrowthLimit * previousResidualNorm_m &&
         omega > parameters_.minRelaxation) {
       // The last step overshot (e.g. it closed the gap into the asperities' steep range): back
       // to the previous iterate with a quarter of that step. The Aitken memory (the previous
@@ -217,7 +244,7 @@ ElasticCouplingReport ElasticCoupling::solve(const FilmPressureFunction& film,
       u_m_ = previousU_m_ + omega * previousResidual_m_;
       continue;
     }
-    if (it > 1) {
+    if (report.iterations > 1) {
       // Aitken: the secant estimate of the best factor along the last residual change
       // (target_m_ is free now: scratch for r_k - r_{k-1}).
       target_m_ = residual_m_ - previousResidual_m_;
@@ -236,6 +263,264 @@ ElasticCouplingReport ElasticCoupling::solve(const FilmPressureFunction& film,
     start_m_ = u_m_;
     startRelaxation_ = omega;
   }
+  return report;
+}
+
+void localPressureStiffness(const Eigen::Ref<const Eigen::ArrayXd>& normalPressure_Pa,
+                            const Eigen::Ref<const Eigen::ArrayXd>& asperityPressure_Pa,
+                            const Eigen::Ref<const Eigen::ArrayXd>& filmGap_m,
+                            const Eigen::Ref<const Eigen::ArrayXd>& asperitySlope_PaPerM,
+                            double hFloor_m, Eigen::ArrayXd& stiffness_Pa_per_m) {
+  const Eigen::Index n = normalPressure_Pa.size();
+  if (asperityPressure_Pa.size() != n || filmGap_m.size() != n || asperitySlope_PaPerM.size() != n)
+    detail::fail("localPressureStiffness",
+                 "normalPressure_Pa, asperityPressure_Pa, filmGap_m and asperitySlope_PaPerM "
+                 "must have equal sizes");
+  if (!(std::isfinite(hFloor_m) && hFloor_m > 0.0))
+    detail::fail("localPressureStiffness",
+                 detail::named("hFloor_m", hFloor_m, "m") + " must be finite and > 0");
+  stiffness_Pa_per_m.resize(n);
+  stiffness_Pa_per_m = 3.0 * (normalPressure_Pa - asperityPressure_Pa).max(0.0) /
+                           filmGap_m.max(hFloor_m) +
+                       (-asperitySlope_PaPerM).max(0.0);
+}
+
+void ElasticCoupling::setUpNewton() {
+  const Eigen::Index ns = structural_.nodeCount(), nf = filmGrid_.nodeCount();
+  // The Hermite interpolant is linear in the nodal values: its columns are the images of the
+  // unit vectors. The spline slopes spread a node's influence along its row and column,
+  // decaying about 0.27 per node; entries below 1e-9 are dropped.
+  std::vector<Eigen::Triplet<double>> entries;
+  std::vector<int> localS(ns, -1);
+  Eigen::VectorXd unit = Eigen::VectorXd::Zero(ns), column(nf);
+  int nS = 0;
+  for (Eigen::Index j = 0; j < ns; ++j) {
+    unit[j] = 1.0;
+    toFilmGrid(unit, column);
+    unit[j] = 0.0;
+    for (Eigen::Index n = 0; n < nf; ++n) {
+      if (std::abs(column[n]) <= 1e-9)
+        continue;
+      if (localS[j] < 0)
+        localS[j] = nS++;
+      entries.emplace_back(int(n), localS[j], column[n]);
+    }
+  }
+  nodesS_.resize(nS);
+  for (Eigen::Index j = 0; j < ns; ++j)
+    if (localS[j] >= 0)
+      nodesS_[localS[j]] = int(j);
+  hermiteS_.resize(nf, nS);
+  hermiteS_.setFromTriplets(entries.begin(), entries.end());
+  const auto& map = forceMap_.matrix();
+  std::vector<int> rowsF;
+  for (Eigen::Index i = 0; i < ns; ++i)
+    if (map.outerIndexPtr()[i + 1] > map.outerIndexPtr()[i])
+      rowsF.push_back(int(i));
+  const int nF = int(rowsF.size());
+  nodesF_ = Eigen::Map<Eigen::VectorXi>(rowsF.data(), nF);
+  complianceSF_.resize(nS, nF);
+  for (int a = 0; a < nS; ++a)
+    for (int b = 0; b < nF; ++b)
+      complianceSF_(a, b) = compliance_m_per_N_(nodesS_[a], nodesF_[b]);
+  stiffnessFS_ = Eigen::MatrixXd::Zero(nF, nS);
+  preconditioner_ = Eigen::MatrixXd::Identity(nS, nS);
+  preconditionerLu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(nS);
+  const int kMax = parameters_.maxKrylovIterations;
+  krylovV_ = Eigen::MatrixXd::Zero(nS, kMax + 1);
+  krylovZ_ = Eigen::MatrixXd::Zero(nS, kMax);
+  hessenberg_ = Eigen::MatrixXd::Zero(kMax + 1, kMax);
+  givensC_ = givensS_ = Eigen::VectorXd::Zero(kMax);
+  krylovG_ = Eigen::VectorXd::Zero(kMax + 1);
+  krylovY_ = Eigen::VectorXd::Zero(kMax);
+  vectorS_ = vectorS2_ = Eigen::VectorXd::Zero(nS);
+  baseU_m_ = baseTarget_m_ = step_m_ = perturbedU_m_ = perturbedTarget_m_ =
+      Eigen::VectorXd::Zero(ns);
+}
+
+void ElasticCoupling::factorPreconditioner() {
+  const Eigen::ArrayXd& k = film_.pressureStiffness_Pa_per_m;
+  if (k.size() != filmGrid_.nodeCount())
+    detail::fail(kWhere, "the Newton scheme needs the film evaluation's pressureStiffness_Pa_per_m"
+                         " (" + std::to_string(filmGrid_.nodeCount()) + " entries), got " +
+                             std::to_string(k.size()));
+  detail::requireFiniteEntries(kWhere, "film evaluation pressureStiffness_Pa_per_m", k.matrix(),
+                               "Pa/m");
+  // K_FS = M diag(k) H_S: the nodal force change per unit inward displacement (f = -M p,
+  // h = h_rigid - H u, dp/dh = -k), and P = I + C_SF K_FS, the local Newton matrix.
+  const auto& map = forceMap_.matrix();
+  using RowIterator = Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator;
+  stiffnessFS_.setZero();
+  for (Eigen::Index a = 0; a < nodesF_.size(); ++a) {
+    for (RowIterator m(map, nodesF_[a]); m; ++m) {
+      const double w = m.value() * std::max(k[m.col()], 0.0);
+      if (w == 0.0)
+        continue;
+      for (RowIterator h(hermiteS_, m.col()); h; ++h)
+        stiffnessFS_(a, h.col()) += w * h.value();
+    }
+  }
+  preconditioner_.setIdentity();
+  preconditioner_.noalias() += complianceSF_ * stiffnessFS_;
+  preconditionerLu_.compute(preconditioner_);
+}
+
+void ElasticCoupling::calcKrylovStep(const FilmPressureFunction& film, double cylinderPressure_Pa,
+                                     ElasticCouplingReport& report) {
+  // Right-preconditioned GMRES (Saad & Schultz 1986) from d = 0 for J d = r_S with
+  // J = I - dg/du on S, J z by a forward difference of the film around the base iterate:
+  // J z = z - (g(u + eps z) - g(u)) / eps, eps z moving the gap by about 1e-3 of the thinnest
+  // film (>= 1 nm): far above the film solver's noise, small against the film.
+  const Eigen::Index nS = nodesS_.size();
+  for (Eigen::Index a = 0; a < nS; ++a)
+    vectorS_[a] = residual_m_[nodesS_[a]];
+  const double beta = vectorS_.norm();
+  step_m_ = residual_m_;  // nodes outside S: the plain fixed-point step
+  for (Eigen::Index a = 0; a < nS; ++a)
+    step_m_[nodesS_[a]] = 0.0;
+  if (!(beta > 0.0))
+    return;
+  const double probe_m =
+      parameters_.absoluteTolerance_m + 1e-3 * std::max(film_.minFilmThickness_m, 1e-6);
+  krylovV_.col(0) = vectorS_ / beta;
+  krylovG_.setZero();
+  krylovG_[0] = beta;
+  int used = 0;
+  for (int j = 0; j < parameters_.maxKrylovIterations &&
+                  report.iterations < parameters_.maxIterations - 1;
+       ++j) {
+    krylovZ_.col(j) = preconditionerLu_.solve(krylovV_.col(j));
+    const double zMax = krylovZ_.col(j).cwiseAbs().maxCoeff();
+    if (!(zMax > 0.0))
+      break;
+    const double eps = probe_m / zMax;
+    perturbedU_m_ = baseU_m_;
+    for (Eigen::Index a = 0; a < nS; ++a)
+      perturbedU_m_[nodesS_[a]] += eps * krylovZ_(a, j);
+    evaluate(perturbedU_m_, film, cylinderPressure_Pa, perturbedTarget_m_, report);
+    ++report.krylovIterations;
+    for (Eigen::Index a = 0; a < nS; ++a)
+      vectorS2_[a] = krylovZ_(a, j) -
+                     (perturbedTarget_m_[nodesS_[a]] - baseTarget_m_[nodesS_[a]]) / eps;
+    // Arnoldi (modified Gram-Schmidt) and the Givens rotations of the least-squares problem.
+    for (int i = 0; i <= j; ++i) {
+      hessenberg_(i, j) = krylovV_.col(i).dot(vectorS2_);
+      vectorS2_ -= hessenberg_(i, j) * krylovV_.col(i);
+    }
+    hessenberg_(j + 1, j) = vectorS2_.norm();
+    for (int i = 0; i < j; ++i) {
+      const double t = givensC_[i] * hessenberg_(i, j) + givensS_[i] * hessenberg_(i + 1, j);
+      hessenberg_(i + 1, j) = -givensS_[i] * hessenberg_(i, j) + givensC_[i] * hessenberg_(i + 1, j);
+      hessenberg_(i, j) = t;
+    }
+    const double rho = std::hypot(hessenberg_(j, j), hessenberg_(j + 1, j));
+    used = j + 1;
+    if (!(rho > 0.0))
+      break;
+    givensC_[j] = hessenberg_(j, j) / rho;
+    givensS_[j] = hessenberg_(j + 1, j) / rho;
+    hessenberg_(j, j) = rho;
+    krylovG_[j + 1] = -givensS_[j] * krylovG_[j];
+    krylovG_[j] *= givensC_[j];
+    if (std::abs(krylovG_[j + 1]) <= parameters_.krylovTolerance * beta)
+      break;
+    if (j + 1 < parameters_.maxKrylovIterations) {
+      // The next basis vector: the orthogonalised J z before the rotations.
+      const double h = vectorS2_.norm();
+      if (!(h > 0.0))
+        break;
+      krylovV_.col(j + 1) = vectorS2_ / h;
+    }
+  }
+  // y = R^-1 g, d_S = Z y.
+  for (int i = used - 1; i >= 0; --i) {
+    double v = krylovG_[i];
+    for (int c = i + 1; c < used; ++c)
+      v -= hessenberg_(i, c) * krylovY_[c];
+    krylovY_[i] = v / hessenberg_(i, i);
+  }
+  for (Eigen::Index a = 0; a < nS; ++a) {
+    double v = 0.0;
+    for (int i = 0; i < used; ++i)
+      v += krylovZ_(a, i) * krylovY_[i];
+    step_m_[nodesS_[a]] = v;
+  }
+}
+
+ElasticCouplingReport ElasticCoupling::solveNewton(const FilmPressureFunction& film,
+                                                   double cylinderPressure_Pa,
+                                                   ElasticCouplingReport report) {
+  // Globalised inexact Newton (e.g. Kelley 1995, ch. 8) on r(u) = g(u) - u, g(u) = C f(u):
+  // the step d solves (I - dg/du) d = r approximately; first the preconditioner's own step
+  // (P^-1 r, no extra film evaluation), and GMRES once that step reduces the residual by less
+  // than half. Each step is tried at lambda = 1, 1/4, 1/16 until the residual's 2-norm on the
+  // nodes that move the gap falls (Armijo, 1e-4); the film evaluation of the accepted trial is
+  // the next base.
+  const Eigen::Index nS = nodesS_.size();
+  const auto normS = [&](const Eigen::VectorXd& r) {
+    double s = 0.0;
+    for (Eigen::Index a = 0; a < nS; ++a)
+      s += r[nodesS_[a]] * r[nodesS_[a]];
+    return std::sqrt(s);
+  };
+  evaluate(u_m_, film, cylinderPressure_Pa, target_m_, report);
+  bool krylov = false;
+  while (true) {
+    if (checkConvergence(report))
+      break;
+    if (report.iterations >= parameters_.maxIterations)
+      break;
+    // The base of this Newton step: its iterate, target and the preconditioner at its film.
+    baseU_m_ = u_m_;
+    baseTarget_m_ = target_m_;
+    const double baseNorm = normS(residual_m_);
+    factorPreconditioner();
+    if (krylov) {
+      calcKrylovStep(film, cylinderPressure_Pa, report);
+    } else {
+      for (Eigen::Index a = 0; a < nS; ++a)
+        vectorS_[a] = residual_m_[nodesS_[a]];
+      vectorS2_ = preconditionerLu_.solve(vectorS_);
+      step_m_ = residual_m_;
+      for (Eigen::Index a = 0; a < nS; ++a)
+        step_m_[nodesS_[a]] = vectorS2_[a];
+    }
+    bool accepted = false;
+    double lambda = 1.0, trialNorm = 0.0;
+    for (int ls = 0; ls < 3 && report.iterations < parameters_.maxIterations; ++ls) {
+      u_m_ = baseU_m_ + lambda * step_m_;
+      evaluate(u_m_, film, cylinderPressure_Pa, target_m_, report);
+      residual_m_ = target_m_ - u_m_;
+      trialNorm = normS(residual_m_);
+      if (trialNorm <= (1.0 - 1e-4 * lambda) * baseNorm) {
+        accepted = true;
+        break;
+      }
+      ++report.backtracks;
+      lambda *= 0.25;
+    }
+    if (accepted) {
+      ++report.newtonSteps;
+      if (!krylov && trialNorm > 0.5 * baseNorm)
+        krylov = true;  // the local stiffness misses too much of the film: GMRES from now on
+      continue;
+    }
+    if (!krylov) {
+      // The preconditioner's step failed: retake this step with GMRES from the base. Its
+      // film must be evaluated again (the trials replaced it).
+      krylov = true;
+      u_m_ = baseU_m_;
+      if (report.iterations >= parameters_.maxIterations)
+        break;
+      evaluate(u_m_, film, cylinderPressure_Pa, target_m_, report);
+      continue;
+    }
+    // GMRES's step failed too: keep the last (shortest) trial, which is the evaluated state,
+    // and go on from there.
+  }
+  report.relaxation = 1.0;
+  if (report.converged)
+    start_m_ = u_m_;
   return report;
 }
 

@@ -50,6 +50,17 @@
 // starts from the last converged deformation (warm start) with the last relaxation factor, so along
 // a cycle most calls converge in a few film evaluations.
 //
+// The alternative (scheme Newton): an inexact Newton method on r(u) = C f(u) - u. Its
+// preconditioner is the local Newton matrix P = I + C M diag(k) H on the structural nodes that
+// move the film gap (k = the film's and asperities' local -dp/dh, localPressureStiffness());
+// its step is P^-1 r first, and GMRES with finite-difference film evaluations once that step
+// reduces the residual by less than half; a backtracking line search (1, 1/4, 1/16) on the
+// residual's 2-norm. Measured 2026-12-02 (tests/skirt/test_elastic_coupling_film.cpp, the
+// gasoline FE skirt, 40 x 30 film, rigid gaps 2 / 1 / 0.5 um): Aitken 8 / 9 / 11 film
+// evaluations, Newton 10 / 12 / 12, both at the same deformation within 3.5 nm. In whole
+// cycles (32 x 24) neither carries the run past about 65 deg (plugin/README.md, known
+// limitations): the default stays Aitken, the cheaper of the two.
+//
 // Non-convergence is never silent: solve() returns converged = false after maxIterations
 // film evaluations; the deformation then holds the last iterate (and the pressure of it), and
 // the warm start keeps the last CONVERGED deformation.
@@ -65,6 +76,8 @@
 #include <functional>
 
 #include <Eigen/Core>
+#include <Eigen/LU>
+#include <Eigen/SparseCore>
 
 #include "pistondyn/mapping/CylinderGrid.h"
 #include "pistondyn/mapping/ForceMap.h"
@@ -74,7 +87,15 @@
 
 namespace pistondyn::skirt {
 
+// How the coupling steps (the header comment above says why each).
+enum class ElasticCouplingScheme {
+  Aitken,  // relaxed fixed point with Aitken's dynamic factor (needs no film derivative)
+  Newton,  // inexact Newton: GMRES on finite-difference film evaluations, preconditioned by
+           // the film's local pressure-gap stiffness, with a backtracking line search
+};
+
 struct ElasticCouplingParameters {
+  ElasticCouplingScheme scheme = ElasticCouplingScheme::Aitken;
   // Convergence: max |change of the deformation on the film grid| <= max(absoluteTolerance_m,
   // relativeTolerance * smallest nominal gap). Both >= 0, finite, not both 0.
   double absoluteTolerance_m = 1.0e-9;  // [m], default 1 nm
@@ -89,6 +110,10 @@ struct ElasticCouplingParameters {
   // step, the step is retaken from the previous iterate with a quarter of its factor
   // (finite, >= 1; default 2).
   double residualGrowthLimit = 2.0;  // [-]
+  // Newton: GMRES iterations (film evaluations) per Newton step at most, 1 ... 50, and the
+  // relative GMRES tolerance (0, 1) (an inexact Newton step: Eisenstat & Walker 1996).
+  int maxKrylovIterations = 10;
+  double krylovTolerance = 0.1;
 };
 
 // What the caller's film evaluation returns for one elastic gap term.
@@ -97,7 +122,25 @@ struct FilmPressureEvaluation {
   // + pushes the skirt inwards; side.nodeCount() finite entries (k = i + nPhi j).
   Eigen::ArrayXd normalPressure_Pa;
   double minFilmThickness_m = 0.0;  // smallest nominal gap of this evaluation [m] (finite)
+  // Newton only: -dp/dh at each film node [Pa/m] (>= 0, finite; nodeCount entries), the
+  // local stiffness of the film and the asperities (localPressureStiffness()).
+  Eigen::ArrayXd pressureStiffness_Pa_per_m;
 };
+
+// The local estimate of -dp/dh the Newton scheme's preconditioner uses [Pa/m], per film node:
+//   3 max(p_normal - p_c, 0) / max(h_film, hFloor) + max(-dp_c/dh, 0).
+// The film part (p_normal - p_c: the film's gauge pressure) is exact for a squeeze film under a
+// uniform change of the gap (p ~ h^-3; a sliding wedge has p ~ h^-2); the asperity part is the
+// contact law's own slope. What it lacks (the Reynolds equation spreads a local change of the
+// gap) GMRES supplies from film evaluations. Inputs (equal sizes): normal pressure [Pa],
+// asperity pressure [Pa], film gap [m], asperity slope dp_c/dh [Pa/m]; hFloor_m > 0 (e.g. the
+// composite roughness: the film does not stiffen like 1/h below it). Output: stiffness
+// (resized; no other allocation).
+void localPressureStiffness(const Eigen::Ref<const Eigen::ArrayXd>& normalPressure_Pa,
+                            const Eigen::Ref<const Eigen::ArrayXd>& asperityPressure_Pa,
+                            const Eigen::Ref<const Eigen::ArrayXd>& filmGap_m,
+                            const Eigen::Ref<const Eigen::ArrayXd>& asperitySlope_PaPerM,
+                            double hFloor_m, Eigen::ArrayXd& stiffness_Pa_per_m);
 
 // The film: given h_pistonElastic on the film nodes [m] (+ opens the gap), fill `out`.
 using FilmPressureFunction =
@@ -110,6 +153,8 @@ struct ElasticCouplingReport {
   double tolerance_m = 0.0;  // the tolerance it was compared with [m]
   double relaxation = 0.0;   // the Aitken factor in use at the end [-]
   int backtracks = 0;        // steps retaken with a quarter of their factor (of iterations)
+  int newtonSteps = 0;       // Newton: accepted Newton steps
+  int krylovIterations = 0;  // Newton: GMRES iterations (film evaluations, of iterations)
   // Force bookkeeping of the last iteration: pistonForce_N = integral of p over the film grid
   // (ForceMap's sourceTotal_N) [N], + inward; structureForce_N = sum of the radial nodal
   // forces [N], + outward; unmapped_N = part of pistonForce_N outside the structural grid.
@@ -166,6 +211,28 @@ class ElasticCoupling {
   int filmNodeCount() const { return filmGrid_.nodeCount(); }
 
  private:
+  // One film evaluation at structural displacement u: the gap term, the film, the nodal forces
+  // (force_N_) and the displacement they give (target); fills the report's force figures.
+  void evaluate(const Eigen::VectorXd& u, const FilmPressureFunction& film,
+                double cylinderPressure_Pa, Eigen::VectorXd& target, ElasticCouplingReport& report);
+  // max |Hermite(residual)| over the film nodes [m].
+  double filmGridNorm(const Eigen::VectorXd& residual);
+  // residual_m_ = target_m_ - u_m_, its film-grid norm and the tolerance into the report;
+  // true (and report.converged) when converged.
+  bool checkConvergence(ElasticCouplingReport& report);
+  // The schemes, from u_m_ = the start.
+  ElasticCouplingReport solveAitken(const FilmPressureFunction& film, double cylinderPressure_Pa,
+                                    ElasticCouplingReport report);
+  ElasticCouplingReport solveNewton(const FilmPressureFunction& film, double cylinderPressure_Pa,
+                                    ElasticCouplingReport report);
+  // Newton: the set-up (nodes S that move the film gap, F that take film forces, the Hermite
+  // rows on S, C_SF), the preconditioner P = I + C_SF M diag(k) H_S factorised at the film's
+  // stiffness k, and GMRES for (I - dg/du)_SS d = r_S (d into step_m_).
+  void setUpNewton();
+  void factorPreconditioner();
+  void calcKrylovStep(const FilmPressureFunction& film, double cylinderPressure_Pa,
+                      ElasticCouplingReport& report);
+
   // Hermite of structural nodal values onto the film nodes.
   void toFilmGrid(const Eigen::VectorXd& structural, Eigen::Ref<Eigen::VectorXd> film);
 
@@ -184,6 +251,15 @@ class ElasticCoupling {
       uFilm_m_, previousU_m_;
   Eigen::ArrayXd pistonElastic_m_;
   FilmPressureEvaluation film_;
+
+  // Newton scheme (sized once in setUpNewton()).
+  Eigen::VectorXi nodesS_, nodesF_;
+  Eigen::SparseMatrix<double, Eigen::RowMajor> hermiteS_;  // film node x S
+  Eigen::MatrixXd complianceSF_, stiffnessFS_, preconditioner_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> preconditionerLu_;
+  Eigen::MatrixXd krylovV_, krylovZ_, hessenberg_;  // Arnoldi basis, preconditioned basis
+  Eigen::VectorXd givensC_, givensS_, krylovG_, krylovY_, vectorS_, vectorS2_;
+  Eigen::VectorXd baseU_m_, baseTarget_m_, step_m_, perturbedU_m_, perturbedTarget_m_;
 };
 
 }  // namespace pistondyn::skirt

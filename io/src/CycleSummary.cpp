@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "pistondyn/common/CrankAngle.h"
 #include "pistondyn/plugin/LubricatedSkirtElement.h"
 
 namespace pistondyn::io {
@@ -24,14 +25,6 @@ const std::size_t kSpeed = crankTrainColumn("crank_speed_rpm");
 const std::size_t kConrod = crankTrainColumn("conrod_force_N");
 const std::size_t kCrankTorque = crankTrainColumn("crank_torque_Nm");
 const std::size_t kDriveTorque = crankTrainColumn("drive_torque_Nm");
-
-// A crank angle of the cycle in [0, 720) deg (rows carry the unwrapped angle).
-double cycleAngle_deg(double angle_deg) {
-  double a = std::fmod(angle_deg, 720.0);
-  if (a < 0.0)
-    a += 720.0;
-  return a < 720.0 ? a : 0.0;
-}
 
 }  // namespace
 
@@ -122,7 +115,7 @@ void CycleSummarySink::consumeRow(const SimTK::State& state, const std::vector<d
   if (k == perCycle_)
     return;  // the row closing the cycle: same crank angle as its first row
 
-  const double angle = cycleAngle_deg(r[kAngle]);
+  const double angle = common::wrapCrankAngle_deg(r[kAngle]);
   const mbd::CrankTrain& ct = model_.getCrankTrain();
   maxLateral_ = std::max(maxLateral_, std::abs(ct.getLateralDisplacement_m(state)));
   maxTilt_ = std::max(maxTilt_, std::abs(ct.getTilt_rad(state)));

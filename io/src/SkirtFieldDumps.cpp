@@ -4,6 +4,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "pistondyn/common/CrankAngle.h"
 #include "pistondyn/common/Validation.h"
 
 namespace pistondyn::io::detail {
@@ -13,13 +14,6 @@ constexpr double kAngleTolerance_deg = 1e-6;  // rows carry omega t in deg: roun
 
 const char* sideName(plugin::SkirtSide side) {
   return side == plugin::SkirtSide::Thrust ? "thrust" : "antithrust";
-}
-
-double cycleAngle_deg(double angle_deg) {
-  double a = std::fmod(angle_deg, 720.0);
-  if (a < 0.0)
-    a += 720.0;
-  return a;
 }
 
 const std::vector<std::string>& columns() {
@@ -76,7 +70,7 @@ void SkirtFieldDumpSink::consumeRow(const SimTK::State& state, const std::vector
   const long k = rowInCycle_++;
   if (k >= perCycle_)
     return;  // the row closing the cycle is the next cycle's first
-  const double angle = cycleAngle_deg(values.at(1));  // crank_angle_deg
+  const double angle = common::wrapCrankAngle_deg(values.at(1));  // crank_angle_deg
   for (std::size_t i = 0; i < angles_deg_.size(); ++i) {
     const double d = std::abs(angle - angles_deg_[i]);
     if (d <= kAngleTolerance_deg || std::abs(d - 720.0) <= kAngleTolerance_deg)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "pistondyn/common/CrankAngle.h"
 #include "pistondyn/common/Validation.h"
 #include "pistondyn/mbd_models/SliderCrank.h"
 #include "pistondyn/plugin/PistonPose.h"
@@ -35,9 +36,7 @@ double SupplyFilm::calcThickness_m(double angle_deg) const {
   if (crankAngle_deg.empty())
     return constant_m;
   const std::size_t n = crankAngle_deg.size();
-  double a = std::fmod(angle_deg, 720.0);
-  if (a < 0.0)
-    a += 720.0;
+  double a = common::wrapCrankAngle_deg(angle_deg);
   // Periodic linear interpolation: the segment after the last point wraps to the first.
   const auto it = std::upper_bound(crankAngle_deg.begin(), crankAngle_deg.end(), a);
   const std::size_t hi = static_cast<std::size_t>(it - crankAngle_deg.begin()) % n;
@@ -288,11 +287,9 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
       solveSide(kAntiThrust);
     }
   } catch (const std::runtime_error& e) {
-    double inCycle = std::fmod(crankAngle_deg, 720.0);
-    if (inCycle < 0.0)
-      inCycle += 720.0;
-    throw std::runtime_error(
-        common::message("lubricated skirt at crank angle ", inCycle, " deg: ", e.what()));
+    throw std::runtime_error(common::message("lubricated skirt at crank angle ",
+                                             common::wrapCrankAngle_deg(crankAngle_deg),
+                                             " deg: ", e.what()));
   }
   gapTime = gapTimes[kThrust] + gapTimes[kAntiThrust];
 

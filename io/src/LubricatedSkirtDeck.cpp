@@ -469,6 +469,7 @@ void readElasticSkirt(DeckSection& liner, plugin::LubricatedSkirtParameters& p) 
       skirtKey("liner.elastic_skirt.scheme"),
       {{"aitken", skirt::ElasticCouplingScheme::Aitken},
        {"newton", skirt::ElasticCouplingScheme::Newton}});
+  el.squeezeRate = e.getBool(skirtKey("liner.elastic_skirt.squeeze_rate"));
   const auto matrix = e.getOptionalFilePath("compliance_file");
   const auto nodes = e.getOptionalFilePath("nodes_file");
   if (!matrix && !nodes)

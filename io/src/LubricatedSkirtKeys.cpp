@@ -248,6 +248,10 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
               .means("elastic coupling iteration (skirt/ElasticCoupling.h): Aitken-relaxed "
                      "fixed point, or inexact Newton (GMRES on film evaluations, preconditioned "
                      "by the film's local pressure-gap stiffness)"),
+          K::onOff("liner.elastic_skirt.squeeze_rate")
+              .byDefault(0.0)
+              .means("the film's squeeze term includes the elastic deformation's rate "
+                     "(backward Euler over the step; mass-conserving film only)"),
           K::numberList("liner.field_dumps.crank_angles_deg", Q::Angle)
               .byDefault("none")
               .within(Bounds{0.0, 720.0, false, true})

@@ -236,6 +236,13 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
       workspace_->lubrication[k]->solve(fields, inputs[k], workspace_->results[k]);
     };
     skirt::ElasticCoupling* coupling = workspace_->elastic[k].get();
+    // The elastic term's rate from the last accepted step (backward Euler, like the fill
+    // fraction's storage term).
+    const FillHistory* history =
+        massConserving ? &(k == kThrust ? fillThrust_ : fillAntiThrust_).getValue(s) : nullptr;
+    const double dt = dts[k];
+    const bool elasticRate = coupling && parameters_.elasticSkirt.squeezeRate && history &&
+                             history->elastic_m.size() == fields.gap_m.size() && dt > 0.0;
     if (!coupling) {
       gapAndFilm();
       return;
@@ -245,6 +252,10 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     const skirt::ElasticCouplingReport report = coupling->solve(
         [&](const Eigen::ArrayXd& elastic_m, skirt::FilmPressureEvaluation& out) {
           fields.pistonElastic_m = elastic_m;
+          if (elasticRate)
+            fields.pistonElasticRate_mps = (elastic_m - history->elastic_m) / dt;
+          else
+            fields.pistonElasticRate_mps.setZero();
           gapAndFilm();
           const skirt::SkirtSideResults& res = workspace_->results[k];
           out.normalPressure_Pa = res.normalPressure_Pa;
@@ -257,6 +268,14 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
             skirt::localPressureStiffness(res.normalPressure_Pa, pc, res.filmGap_m, slope,
                                           workspace_->lubrication[k]->getCompositeSigma_m(),
                                           out.pressureStiffness_Pa_per_m);
+            if (elasticRate) {
+              // The squeeze part: d p / d(dh/dt) / dt, estimated node by node from the film's
+              // lateral squeeze derivative (dh/dt = -cos(phi) de/dt there).
+              const auto lateral = res.film.dPressure_dVelocity.col(0).array();
+              const auto basis = fields.squeezeBasis.col(0).array();
+              out.pressureStiffness_Pa_per_m +=
+                  lateral.abs() / (basis.abs().max(0.2) * dt);
+            }
           }
         },
         gasGauge_Pa);
@@ -306,13 +325,16 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     if (massConserving) {
       // The history this step leads to, if accepted (a zero step keeps the history).
       const FillHistory& history = fill.getValue(s);
+      // The elastic term is the state's at this time, whatever the step (also a zero one).
+      const Eigen::ArrayXd elasticNow =
+          workspace_->elastic[k] ? workspace_->elastic[k]->pistonElastic_m() : Eigen::ArrayXd();
       if (dt > 0.0) {
         fill.setUpdateValue(s, FillHistory{out.film.fillFraction(), out.film.expectedGap_m,
-                                           history.current, history.currentGap, dt});
+                                           history.current, history.currentGap, dt, elasticNow});
       } else {
         fill.setUpdateValue(s, FillHistory{out.film.fillFraction(), out.film.expectedGap_m,
                                            history.previous, history.previousGap,
-                                           history.previousStep_s});
+                                           history.previousStep_s, elasticNow});
       }
     }
 

@@ -88,6 +88,10 @@ struct ElasticSkirtParameters {
   // null = no gas deformation (also when the compliance has no gas field).
   std::shared_ptr<const mbd::CylinderPressureCurve> cylinderPressure;
   double crankcasePressure_Pa = 1.0e5;  // [Pa] absolute, the pressure under the crown
+  // The film's squeeze term includes the rate of the elastic gap term, backward Euler over
+  // the step (mass-conserving film only: the Reynolds model has no step and keeps it 0).
+  // Without it the film sees the rigid approach velocity in full (quasi-static skirt).
+  bool squeezeRate = false;
 };
 
 struct LubricatedSkirtParameters {
@@ -235,6 +239,9 @@ class LubricatedSkirtElement final : public LinerElement {
     Eigen::ArrayXd previous;      // theta_{n-1} (empty until two steps are accepted)
     Eigen::ArrayXd previousGap;   // hT_{n-1} [m]
     double previousStep_s = 0.0;  // t_n - t_{n-1} [s]
+    // Elastic skirt: the converged elastic gap term at t_n [m] (empty: none yet), for the rate
+    // (h_el - h_el,n) / (t - t_n) in the film's squeeze term (ElasticSkirtParameters).
+    Eigen::ArrayXd elastic_m;
   };
   ElementAutoUpdateVariable<FillHistory> fillThrust_, fillAntiThrust_;
   ElementAutoUpdateVariable<SlapTracker> slap_;

@@ -297,6 +297,8 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
   }
 
   LinerDeckContext liner;
+  liner.cylinderPressure = std::make_shared<std::shared_ptr<const mbd::CylinderPressureCurve>>();
+  liner.crankcasePressure_Pa = deck.crankcasePressure_Pa;
   readLiner(d, registry, deck, liner);
   readSimulation(d, liner, deck.linerModel, deck);
   deck.inputs = d.getResolvedInputs();
@@ -313,6 +315,10 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
   } catch (const std::invalid_argument& ex) {
     throw DeckError(deckPath + ": " + ex.what());
   }
+  // The pressure table first: the liner's maker may need it (a skirt deformed by the gas).
+  deck.cylinderPressure = std::make_shared<const mbd::CylinderPressureCurve>(
+      readCylinderPressure(d, deck.cylinderPressureFile));
+  *liner.cylinderPressure = deck.cylinderPressure;
   // A trial construction of the liner element: its own checks of the values its factory
   // read (std::invalid_argument, ...) are bad input too, reported before any simulation.
   try {
@@ -322,8 +328,6 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
     throw DeckError(deckPath + ": liner: the liner model '" + deck.linerModel +
                     "' rejected its parameters: " + ex.what());
   }
-  deck.cylinderPressure = std::make_shared<const mbd::CylinderPressureCurve>(
-      readCylinderPressure(d, deck.cylinderPressureFile));
   // The imep needs the geometry and the table; a geometry at the edge of the doubles (a
   // bore of 1e-300 mm that a deck allowed as implausible) could make it NaN.
   const double imep = calcDeckImep_Pa(deck);

@@ -458,7 +458,8 @@ void readSurfaces(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
 }
 
 // The elastic skirt: on when both files are given (compliance and its node table).
-void readElasticSkirt(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
+void readElasticSkirt(DeckSection& liner, plugin::LubricatedSkirtParameters& p,
+                      bool& gasDeformation) {
   DeckSection e = liner.getSection("elastic_skirt");
   plugin::ElasticSkirtParameters& el = p.elasticSkirt;
   el.coupling.absoluteTolerance_m = e.getSI(skirtKey("liner.elastic_skirt.tolerance_nm"));
@@ -470,6 +471,7 @@ void readElasticSkirt(DeckSection& liner, plugin::LubricatedSkirtParameters& p) 
       {{"aitken", skirt::ElasticCouplingScheme::Aitken},
        {"newton", skirt::ElasticCouplingScheme::Newton}});
   el.squeezeRate = e.getBool(skirtKey("liner.elastic_skirt.squeeze_rate"));
+  gasDeformation = e.getBool(skirtKey("liner.elastic_skirt.gas_deformation"));
   const auto matrix = e.getOptionalFilePath("compliance_file");
   const auto nodes = e.getOptionalFilePath("nodes_file");
   if (!matrix && !nodes)
@@ -622,7 +624,9 @@ LinerElementMaker readLubricatedSkirt(DeckSection& liner, LinerDeckContext& cont
   p.parallelSides = liner.getBool(skirtKey("liner.parallel_sides"));
   p.pinRetainerPlay_m = liner.getSI(skirtKey("liner.pin_retainer_play_mm"));
   p.pinRetainerStiffness_Npm = liner.getSI(skirtKey("liner.pin_retainer_stiffness_N_per_mm"));
-  readElasticSkirt(liner, p);
+  bool gasDeformation = false;
+  readElasticSkirt(liner, p, gasDeformation);
+  p.elasticSkirt.crankcasePressure_Pa = context.crankcasePressure_Pa;
   readFieldDumps(liner, context);
 
   context.tertiaryMotion = p.tertiaryMotion;
@@ -631,7 +635,16 @@ LinerElementMaker readLubricatedSkirt(DeckSection& liner, LinerDeckContext& cont
       "explicit steps collapse to nanoseconds where the film is thin";
   if (context.engineIsValid && context.engine != nullptr && !liner.hasProblems())
     checkAgainstEngine(liner, *context.engine, p, ends);
-  return [p] { return std::make_unique<plugin::LubricatedSkirtElement>(p); };
+  // The gas field of the compliance, scaled by the deck's cylinder pressure (read after this
+  // section: the slot is filled before any element is made).
+  const auto pressure = gasDeformation && p.elasticSkirt.compliance.hasGasDisplacement()
+                            ? context.cylinderPressure
+                            : nullptr;
+  return [p, pressure]() mutable {
+    if (pressure)
+      p.elasticSkirt.cylinderPressure = *pressure;
+    return std::make_unique<plugin::LubricatedSkirtElement>(p);
+  };
 }
 
 }  // namespace pistondyn::io

@@ -229,7 +229,8 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
           K::file("liner.elastic_skirt.nodes_file", "CSV `node, phi_deg, y_mm[, gas_...]`")
               .byDefault("rigid skirt")
               .means("node table of compliance_file (piston frame: heights above the pin); "
-                     "its grid must cover both film grids. The gas column is not applied yet"),
+                     "its grid must cover both film grids. Its optional gas column (radial "
+                     "displacement per unit cylinder pressure) is applied with gas_deformation"),
           K::number("liner.elastic_skirt.tolerance_nm", Q::Length)
               .byDefault(1.0)
               .within(Bounds{0.0, 1000.0, true})
@@ -248,6 +249,11 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
               .means("elastic coupling iteration (skirt/ElasticCoupling.h): Aitken-relaxed "
                      "fixed point, or inexact Newton (GMRES on film evaluations, preconditioned "
                      "by the film's local pressure-gap stiffness)"),
+          K::onOff("liner.elastic_skirt.gas_deformation")
+              .byDefault(1.0)
+              .means("the skirt also deforms under the cylinder pressure: the node table's "
+                     "gas column times the gauge pressure of gas.cylinder_pressure_file "
+                     "(nothing without that column)"),
           K::onOff("liner.elastic_skirt.squeeze_rate")
               .byDefault(0.0)
               .means("the film's squeeze term includes the elastic deformation's rate "

@@ -149,6 +149,19 @@ TEST(ElasticSkirtElement, DeckKeysSwitchItOn) {
     EXPECT_DOUBLE_EQ(p.elasticSkirt.coupling.absoluteTolerance_m, 1e-9);
     EXPECT_EQ(p.elasticSkirt.coupling.scheme, skirt::ElasticCouplingScheme::Aitken);
     EXPECT_FALSE(p.elasticSkirt.squeezeRate);
+    // The committed node table has the gas column: the deck's pressure table scales it.
+    ASSERT_TRUE(p.elasticSkirt.compliance.hasGasDisplacement());
+    ASSERT_NE(p.elasticSkirt.cylinderPressure, nullptr);
+    EXPECT_DOUBLE_EQ(p.elasticSkirt.cylinderPressure->getPeakPressure_Pa(),
+                     d.cylinderPressure->getPeakPressure_Pa());
+    EXPECT_DOUBLE_EQ(p.elasticSkirt.crankcasePressure_Pa, d.crankcasePressure_Pa);
+  }
+  {
+    const io::EngineDeck d =
+        io::loadEngineDeck(deck, {mtx, nodes, "liner.elastic_skirt.gas_deformation=false"});
+    const auto liner = d.makeLinerElement();
+    const auto& p = dynamic_cast<const plugin::LubricatedSkirtElement&>(*liner).getParameters();
+    EXPECT_EQ(p.elasticSkirt.cylinderPressure, nullptr);
   }
   {
     const io::EngineDeck d = io::loadEngineDeck(

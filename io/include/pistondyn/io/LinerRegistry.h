@@ -42,6 +42,7 @@
 
 #include <optional>
 
+#include "pistondyn/mbd_models/CylinderPressureCurve.h"
 #include "pistondyn/mbd_models/EngineDescription.h"
 #include "pistondyn/plugin/LinerElement.h"
 
@@ -56,6 +57,12 @@ struct LinerDeckContext {
   // (and its problem is reported already).
   const mbd::EngineDescription* engine = nullptr;
   bool engineIsValid = false;
+  // The cylinder pressure (gauge against crankcasePressure_Pa [Pa], absolute) for a liner
+  // whose parts deform under it. The table is read after the liner section, so the slot is
+  // filled later; a maker that copies the slot sees the curve whenever it runs (never null
+  // by then when the deck loaded).
+  std::shared_ptr<std::shared_ptr<const mbd::CylinderPressureCurve>> cylinderPressure;
+  double crankcasePressure_Pa = 1.0e5;
 
   // ---- set by the factory -------------------------------------------------------------
   // The crank train's tertiary (pin-axis) mobility, EngineDescription::tertiaryMotion,

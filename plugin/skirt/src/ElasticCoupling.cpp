@@ -414,9 +414,9 @@ void ElasticCoupling::calcKrylovStep(const FilmPressureFunction& film, double cy
       hessenberg_(i, j) = t;
     }
     const double rho = std::hypot(hessenberg_(j, j), hessenberg_(j + 1, j));
+    if (!(rho > 0.0 && std::isfinite(rho)))
+      break;  // J z_j adds nothing (or the film evaluation was not finite): leave it out
     used = j + 1;
-    if (!(rho > 0.0))
-      break;
     givensC_[j] = hessenberg_(j, j) / rho;
     givensS_[j] = hessenberg_(j + 1, j) / rho;
     hessenberg_(j, j) = rho;
@@ -438,6 +438,15 @@ void ElasticCoupling::calcKrylovStep(const FilmPressureFunction& film, double cy
     for (int c = i + 1; c < used; ++c)
       v -= hessenberg_(i, c) * krylovY_[c];
     krylovY_[i] = v / hessenberg_(i, i);
+  }
+  if (used == 0) {
+    // No Krylov direction (a degenerate first product): the preconditioner's own step.
+    for (Eigen::Index a = 0; a < nS; ++a)
+      vectorS_[a] = residual_m_[nodesS_[a]];
+    vectorS2_ = preconditionerLu_.solve(vectorS_);
+    for (Eigen::Index a = 0; a < nS; ++a)
+      step_m_[nodesS_[a]] = vectorS2_[a];
+    return;
   }
   for (Eigen::Index a = 0; a < nS; ++a) {
     double v = 0.0;

@@ -214,16 +214,14 @@ ElasticCouplingReport ElasticCoupling::solve(const FilmPressureFunction& film,
   if (!film)
     detail::fail(kWhere, "solve(film): the film evaluation is empty");
   u_m_ = start_m_;
-  ElasticCouplingReport report;
-  ElasticCouplingReport result = parameters_.scheme == ElasticCouplingScheme::Newton
-                                     ? solveNewton(film, cylinderPressure_Pa, report)
-                                     : solveAitken(film, cylinderPressure_Pa, report);
-  return result;
+  return parameters_.scheme == ElasticCouplingScheme::Newton
+             ? solveNewton(film, cylinderPressure_Pa)
+             : solveAitken(film, cylinderPressure_Pa);
 }
 
 ElasticCouplingReport ElasticCoupling::solveAitken(const FilmPressureFunction& film,
-                                                   double cylinderPressure_Pa,
-                                                   ElasticCouplingReport report) {
+                                                   double cylinderPressure_Pa) {
+  ElasticCouplingReport report;
   double omega = startRelaxation_;
   double previousResidualNorm_m = 0.0;
   while (report.iterations < parameters_.maxIterations) {
@@ -365,6 +363,15 @@ void ElasticCoupling::factorPreconditioner() {
   preconditionerLu_.compute(preconditioner_);
 }
 
+void ElasticCoupling::calcPreconditionedStep() {
+  step_m_ = residual_m_;  // nodes outside S: the plain fixed-point step
+  for (Eigen::Index a = 0; a < nodesS_.size(); ++a)
+    vectorS_[a] = residual_m_[nodesS_[a]];
+  vectorS2_ = preconditionerLu_.solve(vectorS_);
+  for (Eigen::Index a = 0; a < nodesS_.size(); ++a)
+    step_m_[nodesS_[a]] = vectorS2_[a];
+}
+
 void ElasticCoupling::calcKrylovStep(const FilmPressureFunction& film, double cylinderPressure_Pa,
                                      ElasticCouplingReport& report) {
   // Right-preconditioned GMRES (Saad & Schultz 1986) from d = 0 for J d = r_S with
@@ -441,11 +448,7 @@ void ElasticCoupling::calcKrylovStep(const FilmPressureFunction& film, double cy
   }
   if (used == 0) {
     // No Krylov direction (a degenerate first product): the preconditioner's own step.
-    for (Eigen::Index a = 0; a < nS; ++a)
-      vectorS_[a] = residual_m_[nodesS_[a]];
-    vectorS2_ = preconditionerLu_.solve(vectorS_);
-    for (Eigen::Index a = 0; a < nS; ++a)
-      step_m_[nodesS_[a]] = vectorS2_[a];
+    calcPreconditionedStep();
     return;
   }
   for (Eigen::Index a = 0; a < nS; ++a) {
@@ -457,8 +460,7 @@ void ElasticCoupling::calcKrylovStep(const FilmPressureFunction& film, double cy
 }
 
 ElasticCouplingReport ElasticCoupling::solveNewton(const FilmPressureFunction& film,
-                                                   double cylinderPressure_Pa,
-                                                   ElasticCouplingReport report) {
+                                                   double cylinderPressure_Pa) {
   // Globalised inexact Newton (e.g. Kelley 1995, ch. 8) on r(u) = g(u) - u, g(u) = C f(u):
   // the step d solves (I - dg/du) d = r approximately; first the preconditioner's own step
   // (P^-1 r, no extra film evaluation), and GMRES once that step reduces the residual by less
@@ -472,6 +474,7 @@ ElasticCouplingReport ElasticCoupling::solveNewton(const FilmPressureFunction& f
       s += r[nodesS_[a]] * r[nodesS_[a]];
     return std::sqrt(s);
   };
+  ElasticCouplingReport report;
   evaluate(u_m_, film, cylinderPressure_Pa, target_m_, report);
   bool krylov = false;
   while (true) {
@@ -484,16 +487,10 @@ ElasticCouplingReport ElasticCoupling::solveNewton(const FilmPressureFunction& f
     baseTarget_m_ = target_m_;
     const double baseNorm = normS(residual_m_);
     factorPreconditioner();
-    if (krylov) {
+    if (krylov)
       calcKrylovStep(film, cylinderPressure_Pa, report);
-    } else {
-      for (Eigen::Index a = 0; a < nS; ++a)
-        vectorS_[a] = residual_m_[nodesS_[a]];
-      vectorS2_ = preconditionerLu_.solve(vectorS_);
-      step_m_ = residual_m_;
-      for (Eigen::Index a = 0; a < nS; ++a)
-        step_m_[nodesS_[a]] = vectorS2_[a];
-    }
+    else
+      calcPreconditionedStep();
     bool accepted = false;
     double lambda = 1.0, trialNorm = 0.0;
     for (int ls = 0; ls < 3 && report.iterations < parameters_.maxIterations; ++ls) {

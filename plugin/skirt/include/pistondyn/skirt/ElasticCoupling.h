@@ -221,15 +221,15 @@ class ElasticCoupling {
   // true (and report.converged) when converged.
   bool checkConvergence(ElasticCouplingReport& report);
   // The schemes, from u_m_ = the start.
-  ElasticCouplingReport solveAitken(const FilmPressureFunction& film, double cylinderPressure_Pa,
-                                    ElasticCouplingReport report);
-  ElasticCouplingReport solveNewton(const FilmPressureFunction& film, double cylinderPressure_Pa,
-                                    ElasticCouplingReport report);
+  ElasticCouplingReport solveAitken(const FilmPressureFunction& film, double cylinderPressure_Pa);
+  ElasticCouplingReport solveNewton(const FilmPressureFunction& film, double cylinderPressure_Pa);
   // Newton: the set-up (nodes S that move the film gap, F that take film forces, the Hermite
   // rows on S, C_SF), the preconditioner P = I + C_SF M diag(k) H_S factorised at the film's
   // stiffness k, and GMRES for (I - dg/du)_SS d = r_S (d into step_m_).
   void setUpNewton();
   void factorPreconditioner();
+  // The preconditioner's own step into step_m_: P^-1 r on S, the plain step r elsewhere.
+  void calcPreconditionedStep();
   void calcKrylovStep(const FilmPressureFunction& film, double cylinderPressure_Pa,
                       ElasticCouplingReport& report);
 

@@ -70,6 +70,13 @@ void validateInputs(const GapFields& gap, const SkirtSideInputs& in, const Skirt
   requireFiniteEntries(gap.gapRate_mps, "gap.gapRate_mps", "m/s", side);
   requireFiniteEntries(gap.dGap_dPose, 3, "gap.dGap_dPose", side);
   requireFiniteEntries(gap.squeezeBasis, in.squeezeColumns, "gap.squeezeBasis", side);
+  if (in.extraSqueezeBasis) {
+    if (in.extraSqueezeBasis->rows() != n)
+      badInput("inputs.extraSqueezeBasis has ", in.extraSqueezeBasis->rows(), " rows, expected ",
+               n, " (nodes of the ", sideName(side), " side)");
+    requireFiniteEntries(*in.extraSqueezeBasis, in.extraSqueezeBasis->cols(),
+                         "inputs.extraSqueezeBasis", side);
+  }
   common::requirePositiveFinite(in.viscosity_Pas, kSolve, "inputs.viscosity_Pas", "Pa s");
   common::requireFinite(in.slidingVelocityAxial_mps, kSolve, "inputs.slidingVelocityAxial_mps",
                         "m/s");
@@ -293,9 +300,13 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
     m.clampSlope[k] = 0.5 * (1.0 + (h - hc) / root);
   }
   p.gapRate_mps = gap.gapRate_mps * m.clampSlope;
-  p.squeezeBasis.resize(n, in.squeezeColumns);
+  const Eigen::Index extra = in.extraSqueezeBasis ? in.extraSqueezeBasis->cols() : 0;
+  p.squeezeBasis.resize(n, in.squeezeColumns + extra);
   for (int c = 0; c < in.squeezeColumns; ++c)
     p.squeezeBasis.col(c) = (gap.squeezeBasis.col(c).array() * m.clampSlope).matrix();
+  for (Eigen::Index c = 0; c < extra; ++c)
+    p.squeezeBasis.col(in.squeezeColumns + c) =
+        (in.extraSqueezeBasis->col(c).array() * m.clampSlope).matrix();
   p.slidingVelocity_mps =
       Eigen::Vector2d(in.slidingVelocityCircumferential_mps, in.slidingVelocityAxial_mps);
   p.viscosity_Pas = in.viscosity_Pas;

@@ -105,6 +105,11 @@ struct SkirtSideInputs {
   // Squeeze derivatives wanted: the first squeezeColumns columns of the gap's squeeze basis
   // (0..3; 2 = lateral and tilt, 3 with the tertiary motion).
   int squeezeColumns = 2;
+  // Optional further squeeze-basis columns (nodeCount rows, finite; nullptr = none), e.g.
+  // the elastic skirt's modal shapes (ElasticCoupling, scheme Modal): the film returns their
+  // pressure derivatives in film.dPressure_dVelocity after the squeezeColumns pose columns.
+  // They enter no load derivative (dLoads_dPoseRate stays the pose's).
+  const Eigen::MatrixXd* extraSqueezeBasis = nullptr;
   // Mass-conserving model only: fill fraction at the start of the step (nodeCount entries;
   // empty = full film) and the step [s] (> 0; +inf or <= 0 = steady state; NaN is rejected).
   const Eigen::ArrayXd* previousFillFraction = nullptr;

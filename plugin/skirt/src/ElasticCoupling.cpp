@@ -16,6 +16,8 @@ constexpr const char* kParams = "ElasticCouplingParameters";
 void checkParameters(const ElasticCouplingParameters& p) {
   detail::requireNonNegative(kParams, "absoluteTolerance_m", p.absoluteTolerance_m, "m");
   detail::requireNonNegative(kParams, "relativeTolerance", p.relativeTolerance, "");
+  detail::requireNonNegative(kParams, "deformationRelativeTolerance",
+                             p.deformationRelativeTolerance, "");
   if (p.absoluteTolerance_m == 0.0 && p.relativeTolerance == 0.0)
     detail::fail(kParams,
                  "absoluteTolerance_m and relativeTolerance are both 0: the coupling "
@@ -39,6 +41,8 @@ void checkParameters(const ElasticCouplingParameters& p) {
   if (!(std::isfinite(p.krylovTolerance) && p.krylovTolerance > 0.0 && p.krylovTolerance < 1.0))
     detail::fail(kParams,
                  detail::named("krylovTolerance", p.krylovTolerance, "") + " must be in (0, 1)");
+  if (p.modes < 1)
+    detail::fail(kParams, "modes = " + std::to_string(p.modes) + " must be at least 1");
   if (p.minRelaxation > p.maxRelaxation)
     detail::fail(kParams, detail::named("minRelaxation", p.minRelaxation, "") +
                               " must not exceed " +
@@ -138,6 +142,8 @@ ElasticCoupling::ElasticCoupling(const SkirtSideGrid& side,
   film_.normalPressure_Pa = Eigen::ArrayXd::Zero(nf);
   if (parameters_.scheme == ElasticCouplingScheme::Newton)
     setUpNewton();
+  else if (parameters_.scheme == ElasticCouplingScheme::Modal)
+    setUpModal();
 }
 
 void ElasticCoupling::toFilmGrid(const Eigen::VectorXd& structural,
@@ -203,7 +209,8 @@ bool ElasticCoupling::checkConvergence(ElasticCouplingReport& report) {
   report.residual_m = filmGridNorm(residual_m_);
   report.tolerance_m =
       std::max(parameters_.absoluteTolerance_m,
-               parameters_.relativeTolerance * std::max(film_.minFilmThickness_m, 0.0));
+               std::max(parameters_.relativeTolerance * std::max(film_.minFilmThickness_m, 0.0),
+                        parameters_.deformationRelativeTolerance * report.maxDeformation_m));
   report.converged = report.residual_m <= report.tolerance_m;
   return report.converged;
 }
@@ -214,9 +221,15 @@ ElasticCouplingReport ElasticCoupling::solve(const FilmPressureFunction& film,
   if (!film)
     detail::fail(kWhere, "solve(film): the film evaluation is empty");
   u_m_ = start_m_;
-  return parameters_.scheme == ElasticCouplingScheme::Newton
-             ? solveNewton(film, cylinderPressure_Pa)
-             : solveAitken(film, cylinderPressure_Pa);
+  switch (parameters_.scheme) {
+    case ElasticCouplingScheme::Newton:
+      return solveNewton(film, cylinderPressure_Pa);
+    case ElasticCouplingScheme::Modal:
+      return solveModal(film, cylinderPressure_Pa);
+    case ElasticCouplingScheme::Aitken:
+      break;
+  }
+  return solveAitken(film, cylinderPressure_Pa);
 }
 
 ElasticCouplingReport ElasticCoupling::solveAitken(const FilmPressureFunction& film,
@@ -283,7 +296,7 @@ void localPressureStiffness(const Eigen::Ref<const Eigen::ArrayXd>& normalPressu
                        (-asperitySlope_PaPerM).max(0.0);
 }
 
-void ElasticCoupling::setUpNewton() {
+void ElasticCoupling::setUpNodeSets() {
   const Eigen::Index ns = structural_.nodeCount(), nf = filmGrid_.nodeCount();
   // The Hermite interpolant is linear in the nodal values: its columns are the images of the
   // unit vectors. The spline slopes spread a node's influence along its row and column,
@@ -317,6 +330,12 @@ void ElasticCoupling::setUpNewton() {
       rowsF.push_back(int(i));
   const int nF = int(rowsF.size());
   nodesF_ = Eigen::Map<Eigen::VectorXi>(rowsF.data(), nF);
+}
+
+void ElasticCoupling::setUpNewton() {
+  setUpNodeSets();
+  const Eigen::Index ns = structural_.nodeCount();
+  const int nS = int(nodesS_.size()), nF = int(nodesF_.size());
   complianceSF_.resize(nS, nF);
   for (int a = 0; a < nS; ++a)
     for (int b = 0; b < nF; ++b)

@@ -1,0 +1,171 @@
+// ElasticCoupling's modal scheme (ElasticCoupling.h, "The modal scheme"): the deformation in
+// the largest modes of the side's compliance, Newton with the film's exact squeeze
+// derivatives of the modal shapes.
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "Checks.h"
+#include "pistondyn/skirt/ElasticCoupling.h"
+
+namespace pistondyn::skirt {
+namespace {
+constexpr const char* kWhere = "ElasticCoupling (modal)";
+// Backtracking trials per Newton step (1, 1/4, ..., 1/4^5): near a slap the local stiffness
+// underestimates the asperities' growth by up to ~100x and the full step overshoots.
+constexpr int kLineSearchTrials = 6;
+}  // namespace
+
+void ElasticCoupling::setUpModal() {
+  setUpNodeSets();
+  const Eigen::Index ns = structural_.nodeCount(), nf = filmGrid_.nodeCount();
+  // The modes of C_FF, the compliance among the nodes F that take this side's forces: the
+  // nodal forces are truncated to their span, and each mode's displacement everywhere is what
+  // the compliance gives for it (C_:F Phi_j / Lambda_j, = Phi_j on F), so with all modes of F
+  // the modal equations are the full ones.
+  const int nN = int(nodesF_.size());
+  std::vector<int> nodesN(nodesF_.data(), nodesF_.data() + nN);
+  Eigen::MatrixXd cNN(nN, nN);
+  for (int a = 0; a < nN; ++a)
+    for (int b = 0; b < nN; ++b)  // symmetrised: the FE export is symmetric to its precision
+      cNN(a, b) = 0.5 * (compliance_m_per_N_(nodesN[a], nodesN[b]) +
+                         compliance_m_per_N_(nodesN[b], nodesN[a]));
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(cNN);
+  if (eig.info() != Eigen::Success)
+    detail::fail(kWhere, "the eigen-decomposition of the side's compliance (" +
+                             std::to_string(nN) + " nodes) failed");
+  const Eigen::VectorXd& lambda = eig.eigenvalues();  // ascending
+  if (!(lambda[0] > 0.0))
+    detail::fail(kWhere, "the side's compliance is not positive definite (smallest eigenvalue " +
+                             detail::str(lambda[0]) + " m/N on " + std::to_string(nN) +
+                             " nodes)");
+  const int m = std::min(parameters_.modes, nN);
+  modes_ = Eigen::MatrixXd::Zero(ns, m);
+  modalCompliance_m_per_N_.resize(m);
+  for (int j = 0; j < m; ++j) {
+    const int e = nN - 1 - j;  // largest first
+    modalCompliance_m_per_N_[j] = lambda[e];
+    for (Eigen::Index i = 0; i < ns; ++i) {
+      double v = 0.0;
+      for (int a = 0; a < nN; ++a)
+        v += compliance_m_per_N_(i, nodesN[a]) * eig.eigenvectors()(a, e);
+      modes_(i, j) = v / lambda[e];
+    }
+    for (int a = 0; a < nN; ++a)  // exactly Phi_j on F (the symmetrised C_FF's eigenvector)
+      modes_(nodesN[a], j) = eig.eigenvectors()(a, e);
+  }
+  modalTraceShare_ = modalCompliance_m_per_N_.sum() / lambda.sum();
+  modalShapes_.resize(nf, m);
+  filmColumn_.resize(nf);
+  for (int j = 0; j < m; ++j) {
+    toFilmGrid(modes_.col(j), filmColumn_);
+    modalShapes_.col(j) = filmColumn_;
+  }
+  modal_m_ = modalResidual_m_ = modalStep_m_ = modalBase_m_ = Eigen::VectorXd::Zero(m);
+  gasU_m_ = Eigen::VectorXd::Zero(ns);
+  modalForce_N_ = Eigen::MatrixXd::Zero(ns, m);
+  modalJacobian_ = Eigen::MatrixXd::Zero(m, m);
+}
+
+ElasticCouplingReport ElasticCoupling::solveModal(const FilmPressureFunction& film,
+                                                  double cylinderPressure_Pa) {
+  const Eigen::Index nf = filmGrid_.nodeCount();
+  const int m = modeCount();
+  gasU_m_.setZero();
+  if (gas_m_per_Pa_.size() > 0)
+    gasU_m_ = cylinderPressure_Pa * gas_m_per_Pa_;
+  // The warm start's modal coordinates: its part on F (Phi orthonormal there).
+  modal_m_.setZero();
+  for (Eigen::Index b = 0; b < nodesF_.size(); ++b) {
+    const int i = nodesF_[b];
+    modal_m_ += (start_m_[i] - gasU_m_[i]) * modes_.row(i).transpose();
+  }
+
+  ElasticCouplingReport report;
+  // One film evaluation at w: u, the film, the modal residual r = Lambda Phi^T f - w, its
+  // film-grid norm and the tolerance; true when converged.
+  const auto evaluateAt = [&](const Eigen::VectorXd& w) {
+    u_m_.noalias() = modes_ * w;
+    u_m_ += gasU_m_;
+    evaluate(u_m_, film, cylinderPressure_Pa, target_m_, report);
+    modalResidual_m_.noalias() = modes_.transpose() * force_N_;
+    modalResidual_m_ = modalCompliance_m_per_N_.cwiseProduct(modalResidual_m_) - w;
+    residualFilm_m_.noalias() = modalShapes_ * modalResidual_m_;
+    report.residual_m = residualFilm_m_.cwiseAbs().maxCoeff();
+    report.tolerance_m =
+        std::max(parameters_.absoluteTolerance_m,
+                 std::max(parameters_.relativeTolerance * std::max(film_.minFilmThickness_m, 0.0),
+                          parameters_.deformationRelativeTolerance * report.maxDeformation_m));
+    report.converged = report.residual_m <= report.tolerance_m;
+    return report.converged;
+  };
+
+  // J = I - Lambda Phi^T df/dw, df/dw_j = -M (S_j + k Psi_j) (the header says why).
+  const auto formJacobian = [&] {
+    const Eigen::ArrayXd& k = film_.pressureStiffness_Pa_per_m;
+    if (k.size() != nf)
+      detail::fail(kWhere, "the modal scheme needs the film evaluation's "
+                           "pressureStiffness_Pa_per_m (" + std::to_string(nf) + " entries), got " +
+                               std::to_string(k.size()));
+    detail::requireFiniteEntries(kWhere, "film evaluation pressureStiffness_Pa_per_m",
+                                 k.matrix(), "Pa/m");
+    const Eigen::MatrixXd& rate = film_.pressureRateSensitivity_Pa_per_m;
+    const bool withRate = rate.size() > 0;
+    if (withRate) {
+      if (rate.rows() != nf || rate.cols() != m)
+        detail::fail(kWhere, "the film evaluation's pressureRateSensitivity_Pa_per_m is " +
+                                 std::to_string(rate.rows()) + " x " +
+                                 std::to_string(rate.cols()) + ", expected " +
+                                 std::to_string(nf) + " x " + std::to_string(m) +
+                                 " (film nodes x modes) or empty");
+      detail::requireFiniteEntries(kWhere, "film evaluation pressureRateSensitivity_Pa_per_m",
+                                   rate, "Pa/m");
+    }
+    for (int j = 0; j < m; ++j) {
+      filmColumn_ = (k.max(0.0) * modalShapes_.col(j).array()).matrix();
+      if (withRate)
+        filmColumn_ += rate.col(j);
+      // M (dp/dw_j) = -df/dw_j (the balance figures are not needed here).
+      [[maybe_unused]] const mapping::LoadBalance b =
+          forceMap_.apply(filmColumn_, modalForce_N_.col(j));
+    }
+    modalJacobian_.noalias() = modes_.transpose() * modalForce_N_;
+    for (int i = 0; i < m; ++i)
+      modalJacobian_.row(i) *= modalCompliance_m_per_N_[i];
+    modalJacobian_.diagonal().array() += 1.0;
+  };
+
+  evaluateAt(modal_m_);
+  while (!report.converged && report.iterations < parameters_.maxIterations) {
+    formJacobian();
+    modalStep_m_ = modalJacobian_.partialPivLu().solve(modalResidual_m_);
+    if (!modalStep_m_.allFinite())
+      break;
+    modalBase_m_ = modal_m_;
+    const double baseNorm = modalResidual_m_.norm();
+    bool accepted = false;
+    double lambda = 1.0;
+    for (int ls = 0; ls < kLineSearchTrials && report.iterations < parameters_.maxIterations; ++ls) {
+      modal_m_ = modalBase_m_ + lambda * modalStep_m_;
+      if (evaluateAt(modal_m_) || modalResidual_m_.norm() <= (1.0 - 1e-4 * lambda) * baseNorm) {
+        accepted = true;
+        break;
+      }
+      ++report.backtracks;
+      lambda *= 0.25;
+    }
+    if (accepted)
+      ++report.newtonSteps;
+    // Not accepted: go on from the last (shortest) trial, the evaluated state.
+  }
+  report.relaxation = 1.0;
+  if (report.converged)
+    start_m_ = u_m_;
+  return report;
+}
+
+}  // namespace pistondyn::skirt

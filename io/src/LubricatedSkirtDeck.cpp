@@ -464,12 +464,16 @@ void readElasticSkirt(DeckSection& liner, plugin::LubricatedSkirtParameters& p,
   plugin::ElasticSkirtParameters& el = p.elasticSkirt;
   el.coupling.absoluteTolerance_m = e.getSI(skirtKey("liner.elastic_skirt.tolerance_nm"));
   el.coupling.relativeTolerance = e.getNumber(skirtKey("liner.elastic_skirt.relative_tolerance"));
+  el.coupling.deformationRelativeTolerance =
+      e.getNumber(skirtKey("liner.elastic_skirt.deformation_relative_tolerance"));
   el.coupling.maxIterations =
       static_cast<int>(e.getInteger(skirtKey("liner.elastic_skirt.max_iterations")));
   el.coupling.scheme = e.getChoice<skirt::ElasticCouplingScheme>(
       skirtKey("liner.elastic_skirt.scheme"),
       {{"aitken", skirt::ElasticCouplingScheme::Aitken},
-       {"newton", skirt::ElasticCouplingScheme::Newton}});
+       {"newton", skirt::ElasticCouplingScheme::Newton},
+       {"modal", skirt::ElasticCouplingScheme::Modal}});
+  el.coupling.modes = static_cast<int>(e.getInteger(skirtKey("liner.elastic_skirt.modes")));
   el.squeezeRate = e.getBool(skirtKey("liner.elastic_skirt.squeeze_rate"));
   gasDeformation = e.getBool(skirtKey("liner.elastic_skirt.gas_deformation"));
   const auto matrix = e.getOptionalFilePath("compliance_file");

@@ -240,15 +240,27 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
               .byDefault(1e-3)
               .within(Bounds::between(0, 0.1))
               .means("elastic coupling tolerance relative to the smallest film thickness"),
+          K::number("liner.elastic_skirt.deformation_relative_tolerance")
+              .byDefault(1e-3)
+              .within(Bounds::between(0, 0.1))
+              .means("elastic coupling tolerance relative to the largest deformation (the "
+                     "floor where a slap presses the skirt into the asperities)"),
           K::wholeNumber("liner.elastic_skirt.max_iterations", 1, 10000)
               .byDefault(60.0)
               .means("film evaluations per side and force evaluation before the run stops "
                      "with an error (never silent)"),
-          K::choice("liner.elastic_skirt.scheme", {"aitken", "newton"})
+          K::choice("liner.elastic_skirt.scheme", {"aitken", "newton", "modal"})
               .byDefault("aitken")
               .means("elastic coupling iteration (skirt/ElasticCoupling.h): Aitken-relaxed "
-                     "fixed point, or inexact Newton (GMRES on film evaluations, preconditioned "
-                     "by the film's local pressure-gap stiffness)"),
+                     "fixed point, inexact Newton (GMRES on film evaluations, preconditioned "
+                     "by the film's local pressure-gap stiffness), or modal Newton (the "
+                     "compliance's largest modes, the film's exact squeeze derivatives of them; "
+                     "with squeeze_rate)"),
+          K::wholeNumber("liner.elastic_skirt.modes", 1, 1000)
+              .byDefault(20.0)
+              .means("scheme modal: modes of each side's compliance that carry the "
+                     "deformation (the run's summary reports the share of the compliance "
+                     "kept)"),
           K::onOff("liner.elastic_skirt.gas_deformation")
               .byDefault(1.0)
               .means("the skirt also deforms under the cylinder pressure: the node table's "

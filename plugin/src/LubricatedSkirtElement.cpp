@@ -60,6 +60,8 @@ struct LubricatedSkirtElement::Workspace {
   // Elastic skirt: one coupling per side (its warm start is the side's last deformation).
   std::array<std::unique_ptr<skirt::ElasticCoupling>, 2> elastic;
   std::array<skirt::ElasticCouplingReport, 2> elasticReports;
+  std::array<Eigen::MatrixXd, 2> modalRateBasis;  // -Psi / dt per side (modal scheme)
+  std::array<Eigen::VectorXd, 2> elasticStart;     // the coupling's start per side
   std::unique_ptr<detail::ForkJoinWorker> worker;  // parallelSides: the anti-thrust side
 };
 
@@ -247,6 +249,25 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
       gapAndFilm();
       return;
     }
+    if (elasticRate && history->elasticStructural_m.size() == coupling->structuralNodeCount()) {
+      // The start: the accepted deformation moved on at its last rate (FillHistory).
+      Eigen::VectorXd& warm = workspace_->elasticStart[k];
+      warm = history->elasticStructural_m;
+      if (history->elasticStructuralRate_mps.size() == warm.size())
+        warm += dt * history->elasticStructuralRate_mps;
+      coupling->setStart(warm);
+    }
+    // Modal scheme with the elastic rate: the film's squeeze derivatives of the modal shapes
+    // through the backward-Euler rate, d(dh_el/dt)/dw_j = -Psi_j / dt.
+    const skirt::ElasticCouplingScheme scheme = coupling->getParameters().scheme;
+    const bool modalRate = scheme == skirt::ElasticCouplingScheme::Modal && elasticRate;
+    Eigen::MatrixXd& modalBasis = workspace_->modalRateBasis[k];
+    if (modalRate) {
+      modalBasis = (-1.0 / dt) * coupling->modalShapes();
+      inputs[k].extraSqueezeBasis = &modalBasis;
+    } else {
+      inputs[k].extraSqueezeBasis = nullptr;
+    }
     // The coupling's last film evaluation is the one of its returned deformation, so the
     // results left in the workspace belong to the converged gap.
     const skirt::ElasticCouplingReport report = coupling->solve(
@@ -260,7 +281,7 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
           const skirt::SkirtSideResults& res = workspace_->results[k];
           out.normalPressure_Pa = res.normalPressure_Pa;
           out.minFilmThickness_m = res.minFilmThickness_m;
-          if (coupling->getParameters().scheme == skirt::ElasticCouplingScheme::Newton) {
+          if (scheme != skirt::ElasticCouplingScheme::Aitken) {
             const Eigen::Index n = res.normalPressure_Pa.size();
             const Eigen::Map<const Eigen::ArrayXd> pc(res.contact.pressure_Pa.data(), n);
             const Eigen::Map<const Eigen::ArrayXd> slope(res.contact.dPressure_dGap_PaPerM.data(),
@@ -268,7 +289,12 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
             skirt::localPressureStiffness(res.normalPressure_Pa, pc, res.filmGap_m, slope,
                                           workspace_->lubrication[k]->getCompositeSigma_m(),
                                           out.pressureStiffness_Pa_per_m);
-            if (elasticRate) {
+            if (modalRate) {
+              out.pressureRateSensitivity_Pa_per_m =
+                  res.film.dPressure_dVelocity.rightCols(modalBasis.cols());
+            } else if (scheme == skirt::ElasticCouplingScheme::Modal) {
+              out.pressureRateSensitivity_Pa_per_m.resize(0, 0);
+            } else if (elasticRate) {
               // The squeeze part: d p / d(dh/dt) / dt, estimated node by node from the film's
               // lateral squeeze derivative (dh/dt = -cos(phi) de/dt there).
               const auto lateral = res.film.dPressure_dVelocity.col(0).array();
@@ -285,7 +311,9 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
           "elastic skirt (", k == kThrust ? "thrust" : "anti-thrust", " side) did not converge in ",
           report.iterations, " film evaluations: deformation change ", report.residual_m,
           " m > tolerance ", report.tolerance_m,
-          " m (raise elasticSkirt.coupling.maxIterations or the tolerance)"));
+          " m (raise elasticSkirt.coupling.maxIterations or the tolerance; a residual that "
+          "stalls just above the tolerance is the film solver's noise: tighten the film's "
+          "tolerance, e.g. liner.film.tolerance 1e-11)"));
   };
   try {
     if (parameters_.parallelSides) {
@@ -326,15 +354,22 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
       // The history this step leads to, if accepted (a zero step keeps the history).
       const FillHistory& history = fill.getValue(s);
       // The elastic term is the state's at this time, whatever the step (also a zero one).
-      const Eigen::ArrayXd elasticNow =
-          workspace_->elastic[k] ? workspace_->elastic[k]->pistonElastic_m() : Eigen::ArrayXd();
+      const skirt::ElasticCoupling* coupling = workspace_->elastic[k].get();
+      const Eigen::ArrayXd elasticNow = coupling ? coupling->pistonElastic_m() : Eigen::ArrayXd();
+      const Eigen::VectorXd structuralNow =
+          coupling ? coupling->structuralDisplacement_m() : Eigen::VectorXd();
       if (dt > 0.0) {
+        Eigen::VectorXd structuralRate;
+        if (coupling && history.elasticStructural_m.size() == structuralNow.size())
+          structuralRate = (structuralNow - history.elasticStructural_m) / dt;
         fill.setUpdateValue(s, FillHistory{out.film.fillFraction(), out.film.expectedGap_m,
-                                           history.current, history.currentGap, dt, elasticNow});
+                                           history.current, history.currentGap, dt, elasticNow,
+                                           structuralNow, structuralRate});
       } else {
         fill.setUpdateValue(s, FillHistory{out.film.fillFraction(), out.film.expectedGap_m,
                                            history.previous, history.previousGap,
-                                           history.previousStep_s, elasticNow});
+                                           history.previousStep_s, elasticNow, structuralNow,
+                                           history.elasticStructuralRate_mps});
       }
     }
 

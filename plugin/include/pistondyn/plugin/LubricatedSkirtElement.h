@@ -242,6 +242,17 @@ class LubricatedSkirtElement final : public LinerElement {
     // Elastic skirt: the converged elastic gap term at t_n [m] (empty: none yet), for the rate
     // (h_el - h_el,n) / (t - t_n) in the film's squeeze term (ElasticSkirtParameters).
     Eigen::ArrayXd elastic_m;
+    // ... and the structural displacement it came from [m] (empty: none yet), for the start of
+    // the next step's coupling. Not the last converged solve, which may belong to a rejected
+    // trial of the stepper: with the rate implicit over a short step the solution is close to
+    // the accepted deformation and far from a trial's (1 um over 1e-8 s is a 100 m/s rate).
+    Eigen::VectorXd elasticStructural_m;
+    // Its backward-Euler rate over the step that led to it [m/s] (empty: none yet). The next
+    // coupling starts from elasticStructural_m + rate * dt: there the implicit elastic rate is
+    // the last step's, so for a short step the start is close to the solution. From the
+    // accepted deformation alone the rate would jump to 0, and where that rate opened the gap
+    // into cavitation the film's response is too far from linear for Newton.
+    Eigen::VectorXd elasticStructuralRate_mps;
   };
   ElementAutoUpdateVariable<FillHistory> fillThrust_, fillAntiThrust_;
   ElementAutoUpdateVariable<SlapTracker> slap_;

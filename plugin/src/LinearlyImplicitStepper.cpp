@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "pistondyn/common/Validation.h"
 
@@ -55,6 +56,7 @@ struct LinearlyImplicitStepper::Impl {
   int historySize = 0;
   double hNext = 0.0;  // proposed next step
   int failuresInRow = 0;
+  std::string lastFailure;  // why the last step failed (for the message when the step collapses)
 
   // Workspaces (sized at initialize).
   Eigen::VectorXd yp, fpred, ft, base, r, delta, y, weights;
@@ -279,6 +281,7 @@ struct LinearlyImplicitStepper::Impl {
                    " times in a row, the last at step size " + formatTime(h) + " s");
     }
     hNext = shrink * h;
+    lastFailure = what;
     return false;
   }
 
@@ -398,7 +401,8 @@ struct LinearlyImplicitStepper::Impl {
       }
       if (h < options.minStep_s) {
         fail(history[0].t, "the step size fell to " + formatTime(h) + " s (below the minimum " +
-                               formatTime(options.minStep_s) + " s)");
+                               formatTime(options.minStep_s) + " s); the last failed step: " +
+                               lastFailure);
       }
       // Land exactly on tOut (no rounding drift of the time).
       tryStep(h == remaining ? tOut : history[0].t + h);

@@ -250,12 +250,12 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
               .means("film evaluations per side and force evaluation before the run stops "
                      "with an error (never silent)"),
           K::choice("liner.elastic_skirt.scheme", {"aitken", "newton", "modal"})
-              .byDefault("aitken")
+              .byDefault("modal")
               .means("elastic coupling iteration (skirt/ElasticCoupling.h): Aitken-relaxed "
                      "fixed point, inexact Newton (GMRES on film evaluations, preconditioned "
                      "by the film's local pressure-gap stiffness), or modal Newton (the "
-                     "compliance's largest modes, the film's exact squeeze derivatives of them; "
-                     "with squeeze_rate)"),
+                     "compliance's largest modes, the film's exact squeeze derivatives of them "
+                     "with squeeze_rate; the one that carries whole cycles)"),
           K::wholeNumber("liner.elastic_skirt.modes", 1, 1000)
               .byDefault(20.0)
               .means("scheme modal: modes of each side's compliance that carry the "
@@ -267,7 +267,7 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
                      "gas column times the gauge pressure of gas.cylinder_pressure_file "
                      "(nothing without that column)"),
           K::onOff("liner.elastic_skirt.squeeze_rate")
-              .byDefault(0.0)
+              .byDefault(1.0)
               .means("the film's squeeze term includes the elastic deformation's rate "
                      "(backward Euler over the step; mass-conserving film only)"),
           K::numberList("liner.field_dumps.crank_angles_deg", Q::Angle)

@@ -147,8 +147,11 @@ TEST(ElasticSkirtElement, DeckKeysSwitchItOn) {
     EXPECT_EQ(p.elasticSkirt.compliance.nodeCount(), 264);
     EXPECT_EQ(p.elasticSkirt.coupling.maxIterations, 25);
     EXPECT_DOUBLE_EQ(p.elasticSkirt.coupling.absoluteTolerance_m, 1e-9);
-    EXPECT_EQ(p.elasticSkirt.coupling.scheme, skirt::ElasticCouplingScheme::Aitken);
-    EXPECT_FALSE(p.elasticSkirt.squeezeRate);
+    // The deck's defaults are the ones that carry whole cycles (plugin/README.md).
+    EXPECT_EQ(p.elasticSkirt.coupling.scheme, skirt::ElasticCouplingScheme::Modal);
+    EXPECT_EQ(p.elasticSkirt.coupling.modes, 20);
+    EXPECT_DOUBLE_EQ(p.elasticSkirt.coupling.deformationRelativeTolerance, 1e-3);
+    EXPECT_TRUE(p.elasticSkirt.squeezeRate);
     // The committed node table has the gas column: the deck's pressure table scales it.
     ASSERT_TRUE(p.elasticSkirt.compliance.hasGasDisplacement());
     ASSERT_NE(p.elasticSkirt.cylinderPressure, nullptr);
@@ -166,11 +169,14 @@ TEST(ElasticSkirtElement, DeckKeysSwitchItOn) {
   {
     const io::EngineDeck d = io::loadEngineDeck(
         deck, {mtx, nodes, "liner.elastic_skirt.scheme=newton",
-               "liner.elastic_skirt.squeeze_rate=true"});
+               "liner.elastic_skirt.squeeze_rate=false", "liner.elastic_skirt.modes=12",
+               "liner.elastic_skirt.deformation_relative_tolerance=1e-4"});
     const auto liner = d.makeLinerElement();
     const auto& p = dynamic_cast<const plugin::LubricatedSkirtElement&>(*liner).getParameters();
     EXPECT_EQ(p.elasticSkirt.coupling.scheme, skirt::ElasticCouplingScheme::Newton);
-    EXPECT_TRUE(p.elasticSkirt.squeezeRate);
+    EXPECT_FALSE(p.elasticSkirt.squeezeRate);
+    EXPECT_EQ(p.elasticSkirt.coupling.modes, 12);
+    EXPECT_DOUBLE_EQ(p.elasticSkirt.coupling.deformationRelativeTolerance, 1e-4);
   }
   {
     const io::EngineDeck d = io::loadEngineDeck(deck, {});

@@ -71,13 +71,17 @@ struct SupplyFilm {
 };
 
 // Elastic skirt (issue 11): at every force evaluation each side's film pressure and the
-// skirt's elastic deformation are converged together (skirt::ElasticCoupling.h: Aitken-relaxed
-// fixed point, warm-started from the side's last converged deformation, which is mutable
-// workspace: results depend on it only within the coupling tolerance). The converged
-// deformation goes into GapFields::pistonElastic_m (the gap term switch pistonElastic must be
-// on). Its rate (pistonElasticRate_mps) is left 0: the deformation is quasi-static and its
-// squeeze is neglected; the Jacobian is the film's at the converged deformation. A coupling that
-// does not converge within coupling.maxIterations throws std::runtime_error (never silent).
+// skirt's elastic deformation are converged together (skirt::ElasticCoupling.h: the scheme of
+// coupling.scheme; the deck's default is the modal Newton scheme with the elastic rate, the
+// one that carries whole cycles, plugin/README.md). The converged deformation goes into
+// GapFields::pistonElastic_m (the gap term switch pistonElastic must be on). With squeezeRate
+// its rate enters the film's squeeze term (backward Euler over the step), and each coupling
+// starts from the last ACCEPTED deformation moved on at its last rate (FillHistory); without
+// it the deformation is quasi-static and the coupling starts from its last converged solve
+// (mutable workspace: results depend on it only within the coupling tolerance). The Jacobian
+// is the film's at the converged deformation. A coupling that does not converge within
+// coupling.maxIterations throws std::runtime_error (never silent); the stepper then retries a
+// shorter step.
 struct ElasticSkirtParameters {
   bool enabled = false;  // default off: rigid skirt
   // Radial compliance of the skirt in the piston frame (io::readStructuralCompliance): its

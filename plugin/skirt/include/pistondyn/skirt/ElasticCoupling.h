@@ -59,8 +59,9 @@
 // residual's 2-norm. Measured 2026-12-02 (tests/skirt/test_elastic_coupling_film.cpp, the
 // gasoline FE skirt, 40 x 30 film, rigid gaps 2 / 1 / 0.5 um): Aitken 8 / 9 / 11 film
 // evaluations, Newton 10 / 12 / 12, both at the same deformation within 3.5 nm. In whole
-// cycles (32 x 24) neither carries the run past about 65 deg (plugin/README.md, known
-// limitations): the default stays Aitken, the cheaper of the two.
+// cycles (32 x 24) neither carries the run past about 65 deg quasi-static, or past 221 deg
+// with the elastic rate (plugin/README.md): the modal scheme below does. Aitken stays this
+// struct's default (no film derivatives needed); the deck's default is Modal.
 //
 // The modal scheme (Modal). The nodal forces f act on the nodes F that take this side's film
 // forces only; C_FF = Phi Lambda Phi^T (symmetric positive definite: Phi orthonormal). The

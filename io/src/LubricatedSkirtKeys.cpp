@@ -206,7 +206,8 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
           K::onOff("liner.parallel_sides")
               .byDefault(1.0)
               .means("solve the thrust and anti-thrust films on two threads (the same "
-                     "results; faster where a second core is free)"),
+                     "results; faster where a second core is free); not with the elastic "
+                     "skirt, whose sides are solved one after the other"),
           K::onOff("liner.tertiary_motion")
               .byDefault(0.0)
               .means("motion along the pin axis; sets both the element and the crank train's "

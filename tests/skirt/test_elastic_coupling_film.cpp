@@ -390,6 +390,21 @@ TEST(ElasticCouplingFilm, SecondSolveAllocatesNothing) {
               count);
   EXPECT_GT(iterations, 3);
   EXPECT_EQ(count, 0);
+
+  // The modal scheme likewise (its Jacobian, factorisation and force columns are sized once).
+  ps::ElasticCouplingParameters modal;
+  modal.scheme = ps::ElasticCouplingScheme::Modal;
+  ps::ElasticCoupling modalCoupling(s.side(), gasolineSkirt(), modal);
+  ASSERT_TRUE(modalCoupling.solve(film).converged);
+  modalCoupling.resetWarmStart();
+  const long modalCount = pistondyn::test::allocationsDuring([&] {
+    const ps::ElasticCouplingReport r = modalCoupling.solve(film);
+    iterations = r.iterations;
+  });
+  std::printf("[ElasticCouplingFilm] modal solve from zero: %d iterations, %ld allocations\n",
+              iterations, modalCount);
+  EXPECT_GT(iterations, 3);
+  EXPECT_EQ(modalCount, 0);
 }
 
 // Lateral displacement at which the side carries `load_N` [N] (secant on log load, bracketed),

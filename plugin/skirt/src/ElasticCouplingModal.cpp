@@ -69,6 +69,7 @@ void ElasticCoupling::setUpModal() {
   gasU_m_ = Eigen::VectorXd::Zero(ns);
   modalForce_N_ = Eigen::MatrixXd::Zero(ns, m);
   modalJacobian_ = Eigen::MatrixXd::Zero(m, m);
+  modalLu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(m);  // sized once: no allocation per step
 }
 
 ElasticCouplingReport ElasticCoupling::solveModal(const FilmPressureFunction& film,
@@ -142,7 +143,8 @@ ElasticCouplingReport ElasticCoupling::solveModal(const FilmPressureFunction& fi
   evaluateAt(modal_m_);
   while (!report.converged && report.iterations < parameters_.maxIterations) {
     formJacobian();
-    modalStep_m_ = modalJacobian_.partialPivLu().solve(modalResidual_m_);
+    modalLu_.compute(modalJacobian_);
+    modalStep_m_ = modalLu_.solve(modalResidual_m_);
     if (!modalStep_m_.allFinite())
       break;
     modalBase_m_ = modal_m_;

@@ -324,6 +324,7 @@ class ElasticCoupling {
   Eigen::MatrixXd modalShapes_;  // film nodes x m: Psi
   Eigen::VectorXd modal_m_, modalResidual_m_, modalStep_m_, modalBase_m_, gasU_m_;
   Eigen::MatrixXd modalForce_N_, modalJacobian_;  // structural x m; m x m
+  Eigen::PartialPivLU<Eigen::MatrixXd> modalLu_;
   Eigen::VectorXd filmColumn_;
   double modalTraceShare_ = 0.0;
 };

@@ -203,16 +203,20 @@ double ElasticCoupling::filmGridNorm(const Eigen::VectorXd& residual) {
   return residualFilm_m_.cwiseAbs().maxCoeff();
 }
 
-bool ElasticCoupling::checkConvergence(ElasticCouplingReport& report) {
-  // 5: the change a plain fixed-point step would make, measured on the film grid.
-  residual_m_ = target_m_ - u_m_;
-  report.residual_m = filmGridNorm(residual_m_);
+bool ElasticCoupling::judgeResidual(double residual_m, ElasticCouplingReport& report) const {
+  report.residual_m = residual_m;
   report.tolerance_m =
       std::max(parameters_.absoluteTolerance_m,
                std::max(parameters_.relativeTolerance * std::max(film_.minFilmThickness_m, 0.0),
                         parameters_.deformationRelativeTolerance * report.maxDeformation_m));
   report.converged = report.residual_m <= report.tolerance_m;
   return report.converged;
+}
+
+bool ElasticCoupling::checkConvergence(ElasticCouplingReport& report) {
+  // 5: the change a plain fixed-point step would make, measured on the film grid.
+  residual_m_ = target_m_ - u_m_;
+  return judgeResidual(filmGridNorm(residual_m_), report);
 }
 
 ElasticCouplingReport ElasticCoupling::solve(const FilmPressureFunction& film,

@@ -96,13 +96,7 @@ ElasticCouplingReport ElasticCoupling::solveModal(const FilmPressureFunction& fi
     modalResidual_m_.noalias() = modes_.transpose() * force_N_;
     modalResidual_m_ = modalCompliance_m_per_N_.cwiseProduct(modalResidual_m_) - w;
     residualFilm_m_.noalias() = modalShapes_ * modalResidual_m_;
-    report.residual_m = residualFilm_m_.cwiseAbs().maxCoeff();
-    report.tolerance_m =
-        std::max(parameters_.absoluteTolerance_m,
-                 std::max(parameters_.relativeTolerance * std::max(film_.minFilmThickness_m, 0.0),
-                          parameters_.deformationRelativeTolerance * report.maxDeformation_m));
-    report.converged = report.residual_m <= report.tolerance_m;
-    return report.converged;
+    return judgeResidual(residualFilm_m_.cwiseAbs().maxCoeff(), report);
   };
 
   // J = I - Lambda Phi^T df/dw, df/dw_j = -M (S_j + k Psi_j) (the header says why).

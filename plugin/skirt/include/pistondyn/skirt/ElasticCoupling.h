@@ -272,6 +272,10 @@ class ElasticCoupling {
   // residual_m_ = target_m_ - u_m_, its film-grid norm and the tolerance into the report;
   // true (and report.converged) when converged.
   bool checkConvergence(ElasticCouplingReport& report);
+  // Puts a residual [m] (max over the film grid) and its tolerance (the header's rule, from the
+  // last film evaluation and the report's largest deformation) into the report; true (and
+  // report.converged) when within it. Every scheme judges its residual here.
+  bool judgeResidual(double residual_m, ElasticCouplingReport& report) const;
   // The schemes, from u_m_ = the start.
   ElasticCouplingReport solveAitken(const FilmPressureFunction& film, double cylinderPressure_Pa);
   ElasticCouplingReport solveNewton(const FilmPressureFunction& film, double cylinderPressure_Pa);

@@ -1,8 +1,10 @@
 #include "pistondyn/plugin/LubricatedSkirtElement.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <stdexcept>
 
 #include "pistondyn/common/CrankAngle.h"
@@ -317,25 +319,34 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
           "tolerance, e.g. liner.film.tolerance 1e-11)"));
   };
   try {
-    // The elastic skirt's two sides on two threads do not yet give the serial results (a
-    // reproducible difference of 4-7 % in fmep, not a race, plugin/README.md): serial then.
-    if (parameters_.parallelSides && !parameters_.elasticSkirt.enabled) {
+    // Both sides are always solved, also when one of them fails, and the thrust side's error is
+    // the one reported: each side's film solver and elastic coupling keep their last iterate as
+    // the next warm start, so a side skipped because the other one threw would start its next
+    // evaluation from a different guess than it does on two threads. (That was the elastic
+    // skirt's "parallel gives another trajectory": a coupling that fails on a rejected trial
+    // step, one side only; its next solve then converged to other last bits, and the adaptive
+    // stepper amplified them. Traced 2026-12-03.)
+    std::array<std::exception_ptr, 2> errors;
+    auto attemptSide = [&](int k) {
+      try {
+        solveSide(k);
+      } catch (...) {
+        errors[k] = std::current_exception();
+      }
+    };
+    if (parameters_.parallelSides) {
       if (!workspace_->worker)
         workspace_->worker = std::make_unique<detail::ForkJoinWorker>();
-      workspace_->worker->start([&] { solveSide(kAntiThrust); });
-      std::exception_ptr thrustError;
-      try {
-        solveSide(kThrust);
-      } catch (...) {
-        thrustError = std::current_exception();
-      }
+      workspace_->worker->start([&] { attemptSide(kAntiThrust); });
+      attemptSide(kThrust);
       workspace_->worker->join();  // always: the task refers to this frame
-      if (thrustError)
-        std::rethrow_exception(thrustError);
     } else {
-      solveSide(kThrust);
-      solveSide(kAntiThrust);
+      attemptSide(kThrust);
+      attemptSide(kAntiThrust);
     }
+    for (const std::exception_ptr& error : errors)
+      if (error)
+        std::rethrow_exception(error);
   } catch (const std::runtime_error& e) {
     throw std::runtime_error(common::message("lubricated skirt at crank angle ",
                                              common::wrapCrankAngle_deg(crankAngle_deg),

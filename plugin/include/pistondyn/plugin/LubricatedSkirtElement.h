@@ -129,9 +129,9 @@ struct LubricatedSkirtParameters {
   // element owns). Results are bit-identical to the serial run: the sides share only
   // read-only data and are summed in the same order. Off by default for library users
   // (whose own threads may already use every core); the deck key liner.parallel_sides
-  // turns it on for `pistondyn run`. Ignored with the elastic skirt (the sides then run one
-  // after the other): there the two threads gave a reproducibly different trajectory
-  // (2026-12-03, not yet traced; plugin/README.md known limitations).
+  // turns it on for `pistondyn run`. Also with the elastic skirt: both sides are always
+  // solved, also when one throws, so each side's warm start does not depend on the threads
+  // (tests ElasticParallelSides.TwoThreadsGiveTheSerialRows, LubricatedSkirt.ParallelSides...).
   bool parallelSides = false;
   ElasticSkirtParameters elasticSkirt;  // elastic skirt, off by default
 };

@@ -152,6 +152,18 @@ TEST(ElasticSkirtElement, DeckKeysSwitchItOn) {
     EXPECT_EQ(p.elasticSkirt.coupling.modes, 20);
     EXPECT_DOUBLE_EQ(p.elasticSkirt.coupling.deformationRelativeTolerance, 1e-3);
     EXPECT_TRUE(p.elasticSkirt.squeezeRate);
+    // ... and a C++ user who sets only the compliance gets the same coupling (two sources of
+    // defaults, the deck's key table and the struct, kept equal).
+    const plugin::ElasticSkirtParameters byStruct;
+    EXPECT_EQ(byStruct.coupling.scheme, p.elasticSkirt.coupling.scheme);
+    EXPECT_EQ(byStruct.squeezeRate, p.elasticSkirt.squeezeRate);
+    EXPECT_EQ(byStruct.coupling.modes, p.elasticSkirt.coupling.modes);
+    EXPECT_EQ(byStruct.coupling.maxIterations, 60);
+    EXPECT_DOUBLE_EQ(byStruct.coupling.absoluteTolerance_m,
+                     p.elasticSkirt.coupling.absoluteTolerance_m);
+    EXPECT_DOUBLE_EQ(byStruct.coupling.relativeTolerance, p.elasticSkirt.coupling.relativeTolerance);
+    EXPECT_DOUBLE_EQ(byStruct.coupling.deformationRelativeTolerance,
+                     p.elasticSkirt.coupling.deformationRelativeTolerance);
     // The committed node table has the gas column: the deck's pressure table scales it.
     ASSERT_TRUE(p.elasticSkirt.compliance.hasGasDisplacement());
     ASSERT_NE(p.elasticSkirt.cylinderPressure, nullptr);

@@ -87,7 +87,15 @@ struct ElasticSkirtParameters {
   // Radial compliance of the skirt in the piston frame (io::readStructuralCompliance): its
   // grid must cover both skirt sides.
   mapping::StructuralCompliance compliance;
-  skirt::ElasticCouplingParameters coupling;  // tolerances, iteration cap, relaxation
+  // Tolerances, iteration cap, scheme. Default: the modal scheme, the one that carries whole
+  // cycles (plugin/README.md, "The elastic coupling: which scheme and why"), as the deck's
+  // liner.elastic_skirt.scheme; ElasticCouplingParameters alone defaults to Aitken, which
+  // needs no film derivatives but stalls in cycles.
+  skirt::ElasticCouplingParameters coupling = [] {
+    skirt::ElasticCouplingParameters c;
+    c.scheme = skirt::ElasticCouplingScheme::Modal;
+    return c;
+  }();
   // Cylinder pressure scaling the compliance's gas field, gauge against crankcasePressure_Pa;
   // null = no gas deformation (also when the compliance has no gas field).
   std::shared_ptr<const mbd::CylinderPressureCurve> cylinderPressure;
@@ -95,7 +103,9 @@ struct ElasticSkirtParameters {
   // The film's squeeze term includes the rate of the elastic gap term, backward Euler over
   // the step (mass-conserving film only: the Reynolds model has no step and keeps it 0).
   // Without it the film sees the rigid approach velocity in full (quasi-static skirt).
-  bool squeezeRate = false;
+  // Default on, as the deck's liner.elastic_skirt.squeeze_rate: the modal scheme needs the
+  // rate's exact squeeze derivatives to carry a cycle.
+  bool squeezeRate = true;
 };
 
 struct LubricatedSkirtParameters {

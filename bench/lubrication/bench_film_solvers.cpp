@@ -201,6 +201,39 @@ void skirtArgs(benchmark::internal::Benchmark* b) {
 
 BENCHMARK(BM_SkirtStroke)->Apply(skirtArgs);
 
+// Cold starts (issue 12): one solve without a warm start, with and without the grid-sequenced
+// start (FilmSolverOptions::gridSequencedColdStart). Args: scale (64 x 48 times it), model (1
+// Reynolds, 2 mass-conserving), sequenced (0 / 1), step of the scenario (1: 360 deg, the piston
+// away from this side, a wide gap; 40: 379.5 deg, 0.7 of the clearance towards it).
+void BM_ColdStart(benchmark::State& state) {
+  const Scenario& sc = scenario(static_cast<int>(state.range(0)));
+  const auto model =
+      state.range(1) == 1 ? CavitationModel::Reynolds : CavitationModel::MassConserving;
+  FilmProblem pr = sc.problem(model);
+  sc.setStep(pr, static_cast<int>(state.range(3)));
+  FilmSolverOptions opt;
+  opt.gridSequencedColdStart = state.range(2) != 0;
+  FilmSolver solver(opt);
+  FilmResult r;
+  double fine = 0, coarse = 0, fallbacks = 0, solves = 0;
+  for (auto _ : state) {
+    solver.solve(sc.grid, pr, nullptr, r);
+    fine += r.activeSetIterations;
+    coarse += r.coarseActiveSetIterations;
+    fallbacks += r.usedFallback ? 1 : 0;
+    solves += 1;
+  }
+  state.counters["nodes"] = sc.grid.nodeCount();
+  state.counters["activeSetIt"] = fine / solves;
+  state.counters["coarseActiveSetIt"] = coarse / solves;
+  state.counters["fallbacks"] = fallbacks / solves;
+}
+BENCHMARK(BM_ColdStart)
+    ->ArgNames({"scale", "model", "sequenced", "step"})
+    ->ArgsProduct({{1, 2, 4}, {1, 2}, {0, 1}, {1, 40}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ActiveSetSolver.h"
+#include "ColdStartSequence.h"
 #include "FilmPostprocess.h"
 #include "FilmSystem.h"
 #include "ReferenceSolver.h"
@@ -191,12 +192,21 @@ void checkFactors(const detail::FilmSystem& s) {
 
 }  // namespace
 
+// Relative residual to which the coarser levels of a grid-sequenced cold start are solved.
+constexpr double kCoarseTolerance = 1e-6;
+
 struct FilmSolver::Impl {
   FilmSolverOptions options;
   detail::FilmSystem sys;
   detail::ActiveSetSolver fast;
   Eigen::MatrixXd derivRhs;
   detail::PostprocessWorkspace post;
+  // Grid-sequenced cold start (ColdStartSequence.h): the coarser level, its own solver (which
+  // sequences its cold start in turn) and the fine start interpolated from its solution.
+  std::unique_ptr<detail::CoarseLevel> coarseLevel;
+  std::unique_ptr<FilmSolver> coarseSolver;
+  FilmResult coarseResult;
+  FilmState sequencedStart;
 
   void initialiseIterate(const FilmProblem& pr, const FilmState* warm);
   void solve(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm, FilmResult& r);
@@ -253,6 +263,29 @@ void FilmSolver::Impl::initialiseIterate(const FilmProblem& pr, const FilmState*
 void FilmSolver::Impl::solve(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm,
                              FilmResult& res) {
   validate(grid, pr, warm);
+  int coarseSteps = 0;
+  if (!warm && options.gridSequencedColdStart && options.solver == FilmSolverType::FastActiveSet &&
+      pr.cavitation != CavitationModel::None) {
+    if (!coarseLevel)
+      coarseLevel = std::make_unique<detail::CoarseLevel>();
+    if (detail::makeCoarseLevel(grid, pr, *coarseLevel)) {
+      if (!coarseSolver) {
+        // A start only: the coarse film to 1e-6 (the active set it finds is what counts),
+        // without the Gauss-Seidel fallback (a coarse level that does not settle is not used).
+        FilmSolverOptions coarseOptions = options;
+        coarseOptions.tolerance = std::max(options.tolerance, kCoarseTolerance);
+        coarseOptions.fallbackToReference = false;
+        coarseSolver = std::make_unique<FilmSolver>(coarseOptions);
+      }
+      coarseSolver->solve(*coarseLevel->grid, coarseLevel->problem, nullptr, coarseResult);
+      coarseSteps = coarseResult.activeSetIterations + coarseResult.coarseActiveSetIterations;
+      if (coarseResult.converged && !coarseResult.usedFallback) {
+        detail::prolongState(*coarseLevel, coarseResult.state, grid.nx(), grid.ny(),
+                             sequencedStart);
+        warm = &sequencedStart;
+      }
+    }
+  }
   sys.assemble(grid, pr);
   checkFactors(sys);
   initialiseIterate(pr, warm);
@@ -287,6 +320,7 @@ void FilmSolver::Impl::solve(const FilmGrid& grid, const FilmProblem& pr, const 
     }
   }
   res.iterations = rep.iterations;
+  res.coarseActiveSetIterations = coarseSteps;
   res.residual = rep.residual;
   res.converged = rep.converged;
 
@@ -323,6 +357,7 @@ const FilmSolverOptions& FilmSolver::getOptions() const {
 void FilmSolver::setOptions(const FilmSolverOptions& options) {
   validateOptions(options);
   impl_->options = options;
+  impl_->coarseSolver.reset();  // made again with these options at the next cold start
 }
 
 void FilmSolver::solve(const FilmGrid& grid, const FilmProblem& problem, const FilmState* warmStart,

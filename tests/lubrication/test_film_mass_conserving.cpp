@@ -273,8 +273,9 @@ TEST(FilmMassConserving, PreviousExpectedGapKeepsTheOilOfACavitatedFilmWhoseGapM
       pr.previousTimeStep_s = hPrev;
       solver.solve(g, pr, n ? &r.state : nullptr, r);
       EXPECT_TRUE(r.converged);
-      if (keepGap)
+      if (keepGap) {
         EXPECT_EQ(r.cavitatedNodes, 9);  // every interior node stays cavitated (theta < 1)
+      }
       olderTheta = pr.previousFillFraction;
       olderGap = lastGap;
       pr.previousFillFraction = r.fillFraction();

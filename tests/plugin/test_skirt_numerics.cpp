@@ -82,7 +82,11 @@ TEST(SkirtNumerics, HalvingTheStepChangesFmepByLessThanOnePercent) {
 // of the film's squeeze derivatives). One fully flooded cycle from the same start on a
 // coarse grid (CPodes costs about 100 force evaluations per step here). Seen when this test
 // was written: fmep 2.6625 vs 2.6615 kPa (0.04 %), max |u_lat| 42.570 vs 42.616 um, min film
-// thrust 1.644 vs 1.660 um; CPodes took ~640,000 film solves, our stepper ~6,300.
+// thrust 1.644 vs 1.660 um; CPodes took ~640,000 film solves, our stepper ~6,300. With the
+// grid-sequenced cold start of the film solver (2026-12-03; CPodes' Jacobian perturbations
+// make film solves fail, and the next one starts cold): fmep 2.6625 vs 2.6560 kPa, max
+// |u_lat| 42.570 vs 42.592 um, min film 1.644 vs 1.752 um, largest row difference 0.55 um;
+// our stepper's figures unchanged.
 TEST(SkirtNumerics, OneFloodedCycleAgreesWithSimbodysCPodes) {
   const auto p = ts::exampleSkirtParameters(16, 12);
   plugin::SimulationSettings ours = settings(1);
@@ -107,7 +111,11 @@ TEST(SkirtNumerics, OneFloodedCycleAgreesWithSimbodysCPodes) {
               b.stats.integratorSteps);
   EXPECT_NEAR(fmep_kPa(a), fmep_kPa(b), 0.005 * fmep_kPa(b));
   EXPECT_NEAR(uA, uB, 0.3);   // of a 42 um swing
-  EXPECT_NEAR(hA, hB, 0.1);   // of a 1.7 um minimum
+  // Of a 1.7 um minimum: the bound is CPodes' own scatter on this figure. Its runs that differ
+  // only in how the film solver restarts after a failed solve (a cold start plain or
+  // grid-sequenced, lubrication/README.md) gave 1.660 / 1.752 um at accuracy 1e-6 and
+  // 1.620 / 1.654 um at 1e-7 (2026-12-03); our stepper 1.644 um in both.
+  EXPECT_NEAR(hA, hB, 0.15);
   // The whole lateral trajectory, row by row, not only its extremes. The bound is the two
   // integrators' own errors, measured when this test was written against CPodes at 1e-7
   // (1.53 million film solves): CPodes at 1e-6 differs from it by up to 0.87 um (at 142 deg),

@@ -201,6 +201,12 @@ struct FilmSolverOptions {
   // When the active-set iteration does not settle within maxActiveSetIterations, continue from
   // its iterate with the reference Gauss-Seidel (reported in FilmResult::usedFallback).
   bool fallbackToReference = true;
+  // Fast solver, cold starts only (no warm start given): start from the same problem solved
+  // on every other node (recursively, down to grids of fewer than 9 nodes a direction) and
+  // interpolated back, so that the active-set steps on the fine grid do not grow with the grid
+  // (a cold start otherwise moves the cavitation front a few cells per step). Its coarser
+  // steps are reported in FilmResult::coarseActiveSetIterations. Default on.
+  bool gridSequencedColdStart = true;
 };
 
 // Shear stress and friction acting on one surface, split into Couette (sliding) and Poiseuille
@@ -268,6 +274,10 @@ struct FilmResult {
   // reject the integrator step).
   int iterations = 0;
   int activeSetIterations = 0;
+  // Active-set steps on the coarser grids of a grid-sequenced cold start, all levels summed
+  // (FilmSolverOptions::gridSequencedColdStart; 0 otherwise). Each coarser level has about a
+  // quarter of the nodes of the one above.
+  int coarseActiveSetIterations = 0;
   int factorisations = 0;    // numeric sparse factorisations done in this call (fast solver)
   int krylovIterations = 0;  // preconditioned Krylov iterations done in this call (fast solver)
   int multigridBuilds = 0;   // multigrid hierarchies (Galerkin levels) built in this call

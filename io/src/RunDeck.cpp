@@ -143,6 +143,9 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
   r["converged"] = o.stats.converged;                  // until_periodic: the last two agreed
   r["cycles_to_converge"] = o.stats.cyclesToConverge;  // 0 unless converged
   r["rejected_steps"] = o.stats.rejectedSteps;         // linearly_implicit_bdf2's error test
+  // linearly_implicit_bdf2: steps retried because an element threw, e.g. a film solve or an
+  // elastic coupling that did not converge on a trial step (never silent, issue 12).
+  r["failed_evaluations"] = o.stats.failedEvaluations;
   r["wall_time_s"] = o.stats.wallTime_s;
   j["wall_time_s"] = o.stats.wallTime_s;
   j["integrator_steps"] = o.stats.integratorSteps;

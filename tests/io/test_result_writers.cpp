@@ -191,6 +191,7 @@ TEST_F(ScratchDeck, EveryNumberInSummaryJsonIsTheComputedDouble) {
       {"/results/cycles_run", static_cast<double>(o.stats.cyclesRun)},
       {"/results/cycles_to_converge", static_cast<double>(o.stats.cyclesToConverge)},
       {"/results/rejected_steps", static_cast<double>(o.stats.rejectedSteps)},
+      {"/results/failed_evaluations", static_cast<double>(o.stats.failedEvaluations)},
       {"/results/wall_time_s", o.stats.wallTime_s},
       {"/wall_time_s", o.stats.wallTime_s},
       {"/integrator_steps", static_cast<double>(o.stats.integratorSteps)},

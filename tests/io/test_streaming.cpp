@@ -110,6 +110,7 @@ TEST_F(ScratchDeck, FiguresALinerDoesNotReportAreNotInvented) {
                                             "cycles_run",
                                             "cycles_to_converge",
                                             "displacement_m3",
+                                            "failed_evaluations",
                                             "imep_kPa",
                                             "indicated_power_W",
                                             "kinematic_stroke_m",

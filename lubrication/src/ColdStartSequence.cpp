@@ -121,14 +121,14 @@ void prolongState(const CoarseLevel& l, const FilmState& coarse, int fineNx, int
   fine.fillFraction.resize(fineNx * fineNy);
   fine.cavitated.clear();
   for (int j = 0; j < fineNy; ++j) {
-    const int b = l.yInterval[j];
+    // y is open: intervals() gives every fine row an interval (b, b + 1) inside the coarse grid.
+    const int b = l.yInterval[j], b1 = b + 1;
     const double wy = l.yWeight[j];
     for (int i = 0; i < fineNx; ++i) {
       const int a = l.xInterval[i];
       const int a1 = (a + 1) % cnx;  // wraps on a periodic x (weight 0 at the last kept node)
       const double wx = l.xWeight[i];
       const auto at = [&](const Eigen::ArrayXd& f) {
-        const int b1 = std::min(b + 1, static_cast<int>(l.yCoarse.size()) - 1);
         return (1.0 - wy) * ((1.0 - wx) * f[a + cnx * b] + wx * f[a1 + cnx * b]) +
                wy * ((1.0 - wx) * f[a + cnx * b1] + wx * f[a1 + cnx * b1]);
       };

@@ -30,26 +30,17 @@ struct ElasticRun {
 };
 
 ElasticRun runElastic(bool parallel) {
-  const std::string fe = "../../fe/gasoline_1400_2000rpm/";
-  const io::EngineDeck deck = io::loadEngineDeck(
-      ts::gasolineDeckPath(),
-      {"liner.grid.nodes_circumferential=16", "liner.grid.nodes_axial=12",
-       "liner.film.tolerance=1e-11",
-       std::string("liner.parallel_sides=") + (parallel ? "true" : "false"),
-       "liner.elastic_skirt.compliance_file=" + fe + "skirt_compliance.mtx",
-       "liner.elastic_skirt.nodes_file=" + fe + "skirt_nodes.csv"});
-  const auto liner = deck.makeLinerElement();
+  std::vector<std::string> overrides = ts::gasolineElasticSkirtOverrides();
+  overrides.insert(overrides.end(),
+                   {"liner.grid.nodes_circumferential=16", "liner.grid.nodes_axial=12",
+                    "liner.film.tolerance=1e-11",
+                    std::string("liner.parallel_sides=") + (parallel ? "true" : "false")});
   const plugin::LubricatedSkirtParameters p =
-      dynamic_cast<const plugin::LubricatedSkirtElement&>(*liner).getParameters();
+      ts::deckSkirtParameters(io::loadEngineDeck(ts::gasolineDeckPath(), overrides));
   EXPECT_TRUE(p.elasticSkirt.enabled);
   EXPECT_EQ(p.parallelSides, parallel);
   ts::SkirtModel m = ts::makeGasolineSkirtModel(16, 12, &p);
-  plugin::SimulationSettings s;
-  s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2;
-  s.outputStep_deg = 1.0;
-  s.maxStep_deg = 0.25;  // the deck's
-  s.cycles = 1;
-  plugin::CycleSimulation sim(*m.model, s);
+  plugin::CycleSimulation sim(*m.model, ts::deckStepperSettings(1));
   ElasticRun r;
   r.table = sim.run();
   r.stats = sim.getStats();

@@ -37,23 +37,15 @@ plugin::LubricatedSkirtParameters deckParameters(bool elastic) {
                                         "liner.grid.nodes_axial=24", "liner.film.tolerance=1e-11",
                                         "liner.parallel_sides=false"};
   if (elastic) {
-    overrides.push_back(
-        "liner.elastic_skirt.compliance_file=../../fe/gasoline_1400_2000rpm/skirt_compliance.mtx");
-    overrides.push_back(
-        "liner.elastic_skirt.nodes_file=../../fe/gasoline_1400_2000rpm/skirt_nodes.csv");
+    const std::vector<std::string> fe = ts::gasolineElasticSkirtOverrides();
+    overrides.insert(overrides.end(), fe.begin(), fe.end());
   }
-  const io::EngineDeck deck = io::loadEngineDeck(ts::gasolineDeckPath(), overrides);
-  const auto liner = deck.makeLinerElement();
-  return dynamic_cast<const plugin::LubricatedSkirtElement&>(*liner).getParameters();
+  return ts::deckSkirtParameters(io::loadEngineDeck(ts::gasolineDeckPath(), overrides));
 }
 
 Outcome run(const plugin::LubricatedSkirtParameters& p) {
   ts::SkirtModel m = ts::makeGasolineSkirtModel(32, 24, &p);
-  plugin::SimulationSettings s;
-  s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2;
-  s.outputStep_deg = 1.0;
-  s.maxStep_deg = 0.25;  // the deck's
-  s.cycles = 2;
+  plugin::SimulationSettings s = ts::deckStepperSettings(2);
   s.untilPeriodic = false;
   plugin::CycleSimulation sim(*m.model, s);
   plugin::ResultTableSink table;

@@ -131,13 +131,9 @@ TEST(ElasticSkirtElement, SqueezeRateLetsTheSkirtGiveWayToAnApproachingPiston) {
 
 TEST(ElasticSkirtElement, DeckKeysSwitchItOn) {
   const std::string deck = ts::gasolineDeckPath();
-  // Paths relative to the deck's folder (examples/engines/gasoline_1400_2000rpm/).
-  const std::string mtx =
-      "liner.elastic_skirt.compliance_file=../../fe/gasoline_1400_2000rpm/"
-      "skirt_compliance.mtx";
-  const std::string nodes =
-      "liner.elastic_skirt.nodes_file=../../fe/gasoline_1400_2000rpm/"
-      "skirt_nodes.csv";
+  // The committed FE skirt, paths relative to the deck's folder.
+  const std::string mtx = ts::gasolineElasticSkirtOverrides()[0];
+  const std::string nodes = ts::gasolineElasticSkirtOverrides()[1];
   {
     const io::EngineDeck d =
         io::loadEngineDeck(deck, {mtx, nodes, "liner.elastic_skirt.max_iterations=25"});

@@ -19,6 +19,7 @@
 
 #include "pistondyn/io/EngineDeck.h"
 #include "pistondyn/mbd_models/SliderCrank.h"
+#include "pistondyn/plugin/CycleSimulation.h"
 #include "pistondyn/plugin/GasForceElement.h"
 #include "pistondyn/plugin/LubricatedSkirtElement.h"
 
@@ -53,17 +54,41 @@ inline double exampleProfileDrop_m(double y_m) {
   return 0.12 * d * d * 1e-6;
 }
 
-// The example deck's skirt parameters (as its factory read them), on an nPhi x nY grid,
-// fully flooded.
-inline plugin::LubricatedSkirtParameters exampleSkirtParameters(int nPhi, int nY) {
-  const io::EngineDeck deck = loadGasolineSkirtDeck(nPhi, nY);
+// The skirt parameters a deck's factory makes (the deck must select lubricated_skirt).
+inline plugin::LubricatedSkirtParameters deckSkirtParameters(const io::EngineDeck& deck) {
   const std::unique_ptr<plugin::LinerElement> liner = deck.makeLinerElement();
   const auto* skirt = dynamic_cast<const plugin::LubricatedSkirtElement*>(liner.get());
   if (skirt == nullptr)
-    throw std::logic_error("the gasoline example deck does not select lubricated_skirt");
-  plugin::LubricatedSkirtParameters p = skirt->getParameters();
+    throw std::logic_error("the deck does not select liner.model lubricated_skirt");
+  return skirt->getParameters();
+}
+
+// The example deck's skirt parameters (as its factory read them), on an nPhi x nY grid,
+// fully flooded.
+inline plugin::LubricatedSkirtParameters exampleSkirtParameters(int nPhi, int nY) {
+  plugin::LubricatedSkirtParameters p = deckSkirtParameters(loadGasolineSkirtDeck(nPhi, nY));
   p.supplyFilm = plugin::SupplyFilm();  // fully flooded: the tests set a supply film
   return p;
+}
+
+// The --set overrides that give the example deck the gasoline piston's committed FE skirt
+// (examples/fe/gasoline_1400_2000rpm: compliance and node table with its gas column; paths
+// relative to the deck's folder). Index 0 the compliance, 1 the node table.
+inline std::vector<std::string> gasolineElasticSkirtOverrides() {
+  return {"liner.elastic_skirt.compliance_file=../../fe/gasoline_1400_2000rpm/"
+          "skirt_compliance.mtx",
+          "liner.elastic_skirt.nodes_file=../../fe/gasoline_1400_2000rpm/skirt_nodes.csv"};
+}
+
+// The example deck's stepper for whole-cycle tests: linearly implicit BDF2, its 0.25 deg
+// largest step, output rows every degree, `cycles` cycles.
+inline plugin::SimulationSettings deckStepperSettings(int cycles) {
+  plugin::SimulationSettings s;
+  s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2;
+  s.outputStep_deg = 1.0;
+  s.maxStep_deg = 0.25;
+  s.cycles = cycles;
+  return s;
 }
 
 // The example engine (the deck's, with its skirt range and tertiary motion off) with the

@@ -201,6 +201,62 @@ void skirtArgs(benchmark::internal::Benchmark* b) {
 
 BENCHMARK(BM_SkirtStroke)->Apply(skirtArgs);
 
+// Many squeeze-derivative columns (issue 12: an elastic skirt asks for 2 pose columns and one
+// per deformation mode): the stroke of BM_SkirtStroke, fast solver, with `columns` columns (the
+// pose's two, then mode-like shapes cos(order * theta) * y^(c % 3)), one Krylov solve per column
+// (factorise 0) or the factorisation rule of FilmSolverOptions::factoriseForManyDerivativeColumns
+// (factorise 1). Args: scale, model (1 Reynolds, 2 mass-conserving), columns, factorise.
+void BM_DerivativeColumns(benchmark::State& state) {
+  const Scenario& sc = scenario(static_cast<int>(state.range(0)));
+  const auto model =
+      state.range(1) == 1 ? CavitationModel::Reynolds : CavitationModel::MassConserving;
+  const int columns = static_cast<int>(state.range(2));
+  FilmSolverOptions opt;
+  opt.factoriseForManyDerivativeColumns = state.range(3) != 0;
+  const FilmGrid& g = sc.grid;
+  Eigen::MatrixXd basis(g.nodeCount(), columns);
+  const double R = 0.0651 / 2, L = 0.025, pin = 0.4 * L;
+  for (int c = 0; c < columns; ++c)
+    for (int j = 0; j < g.ny(); ++j)
+      for (int i = 0; i < g.nx(); ++i) {
+        const double th = g.x_m()[i] / R, y = g.y_m()[j];
+        basis(g.nodeIndex(i, j), c) = c == 0   ? -std::cos(th)
+                                      : c == 1 ? -(y - pin) * std::cos(th)
+                                               : -std::cos(0.5 * (c / 2) * th) * std::pow(y / L, c % 3);
+      }
+  double factorisations = 0, krylov = 0, solves = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    FilmSolver solver(opt);
+    FilmProblem pr = sc.problem(model);
+    pr.squeezeBasis = basis;
+    FilmResult r;
+    sc.setStep(pr, 0);
+    solver.solve(g, pr, nullptr, r);
+    FilmState warm = r.state;
+    state.ResumeTiming();
+    for (int s = 1; s <= Scenario::kSteps; ++s) {
+      sc.setStep(pr, s);
+      if (model == CavitationModel::MassConserving)
+        pr.previousFillFraction = warm.fillFraction;
+      solver.solve(g, pr, &warm, r);
+      warm = r.state;
+      factorisations += r.factorisations;
+      krylov += r.krylovIterations;
+      solves += 1;
+    }
+  }
+  state.counters["time_per_solve"] =
+      benchmark::Counter(solves, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["factorisations"] = factorisations / solves;
+  state.counters["krylovIt"] = krylov / solves;
+}
+BENCHMARK(BM_DerivativeColumns)
+    ->ArgNames({"scale", "model", "columns", "factorise"})
+    ->ArgsProduct({{1, 2}, {1, 2}, {2, 22}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 // Cold starts (issue 12): one solve without a warm start, with and without the grid-sequenced
 // start (FilmSolverOptions::gridSequencedColdStart). Args: scale (64 x 48 times it), model (1
 // Reynolds, 2 mass-conserving), sequenced (0 / 1), step of the scenario (1: 360 deg, the piston

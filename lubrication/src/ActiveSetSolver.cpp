@@ -666,23 +666,54 @@ void ActiveSetSolver::projectOntoConstraints(FilmSystem& s) const {
   }
 }
 
-void ActiveSetSolver::solveWithCurrentSet(FilmSystem& s, Eigen::MatrixXd& rhs, double relTol) {
+void ActiveSetSolver::solveWithCurrentSet(FilmSystem& s, Eigen::MatrixXd& rhs, double relTol,
+                                          bool mayFactorise) {
   prepare(s);
   if (!jacobianCurrent_)
     fillJacobian(s);
   for (int k = 0; k < s.n; ++k)
     if (!eqRow_[k])
       rhs.row(k).setZero();
-  if (factorExact_) {
-    solveWithFactor(s, rhs.data(), static_cast<int>(rhs.cols()));
-    return;
-  }
-  for (Eigen::Index c = 0; c < rhs.cols(); ++c) {
+  const Eigen::Index m = rhs.cols();
+  for (Eigen::Index c = 0; c < m; ++c) {
+    if (factorExact_) {  // the remaining columns are contiguous (column-major)
+      solveWithFactor(s, rhs.col(c).data(), static_cast<int>(m - c));
+      return;
+    }
     const double target = relTol * rhs.col(c).lpNorm<Eigen::Infinity>();
+    const int before = krylovIterations_;
     if (!linearSolve(s, rhs.col(c).data(), target, target)) {
       rhs.setZero();
       return;
     }
+    // The Krylov cost of this column, repeated for the rest, against one factorisation of the
+    // current Jacobian plus a back-substitution per column (each about one iteration). The
+    // factorisation's cost is in iterations of the sparse-direct path; a multigrid-
+    // preconditioned iteration costs no less, so the rule only errs towards Krylov there.
+    const double remaining = static_cast<double>(m - c - 1);
+    const int k = krylovIterations_ - before;
+    if (!mayFactorise || remaining <= 0.0 || k <= 1)
+      continue;
+    const double factorCost =
+        s.jfo ? klu_.factorCostInIterations() : chol_.factorCostInIterations();
+    if (remaining * (k - 1) <= factorCost)
+      continue;
+    if (useMg_) {
+      // The factorisation serves only these columns: the multigrid's refresh bookkeeping
+      // (shared with factorisations) is left as it was.
+      const double cost = costSinceFactor_;
+      const int solves = solvesSinceFactor_;
+      if (!valuesCurrent_)
+        fillValues(s);
+      factorValues(s, s.jfo && !kluFactored_);
+      costSinceFactor_ = cost;
+      solvesSinceFactor_ = solves;
+    } else {
+      refactorNext_ = false;
+      factorCurrent(s);
+    }
+    // A failed factorisation leaves factorExact_ false: the next columns go on with Krylov
+    // (sparse-direct path: linearSolve then tries to factorise once more and reports failure).
   }
 }
 

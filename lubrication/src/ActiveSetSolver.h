@@ -54,8 +54,11 @@ class ActiveSetSolver {
   IterationReport solve(FilmSystem& sys, const FilmSolverOptions& options);
 
   // Solves J dz = rhs (column-major, n x nrhs, in place) with the Jacobian of the current
-  // active set, to a relative accuracy `relTol` of each column's max norm.
-  void solveWithCurrentSet(FilmSystem& sys, Eigen::MatrixXd& rhs, double relTol);
+  // active set, to a relative accuracy `relTol` of each column's max norm. Krylov solves with
+  // the current preconditioner, unless (mayFactorise) a column's Krylov cost shows that
+  // factorising the current Jacobian and back-substituting the rest is cheaper.
+  void solveWithCurrentSet(FilmSystem& sys, Eigen::MatrixXd& rhs, double relTol,
+                           bool mayFactorise);
 
   // Marks that the stored Jacobian values no longer belong to the current active set.
   void invalidate() { jacobianCurrent_ = false; }

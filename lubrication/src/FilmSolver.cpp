@@ -332,7 +332,8 @@ void FilmSolver::Impl::solve(const FilmGrid& grid, const FilmProblem& pr, const 
     for (Eigen::Index c = 0; c < m; ++c)
       for (int k = 0; k < sys.n; ++k)
         derivRhs(k, c) = -sys.theta[k] * area[k] * sys.dhTdh[k] * pr.squeezeBasis(k, c);
-    fast.solveWithCurrentSet(sys, derivRhs, options.derivativeTolerance);
+    fast.solveWithCurrentSet(sys, derivRhs, options.derivativeTolerance,
+                             options.factoriseForManyDerivativeColumns);
     for (int k = 0; k < sys.n; ++k)
       if (sys.status[k] != detail::kFull)
         derivRhs.row(k).setZero();

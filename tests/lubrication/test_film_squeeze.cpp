@@ -126,5 +126,87 @@ TEST(FilmSqueeze, DerivativesMatchFiniteDifferencesMassConserving) {
                    "jfo.reference");
 }
 
+// Many squeeze columns from a warm start (an elastic skirt asks for one per deformation mode):
+// the solver may then factorise the current Jacobian and back-substitute the remaining columns
+// instead of a Krylov solve per column. Whichever path it takes, every column must still be the
+// derivative of the full solve: central differences for the first, a middle and the last column,
+// and the first two columns equal to those of the same warm step asked with two columns only.
+void checkManyColumnsFromWarmStart(CavitationModel model, const std::string& tag) {
+  const test::SkirtPatch sp;
+  const test::GaussianRoughFactors rough(0.8e-6);
+  const FilmGrid g = sp.grid(36, 28);  // below kMultigridMinNodes: the sparse-direct path
+  auto problemAt = [&](double lateral_m, int columns) {
+    test::SkirtPatch at = sp;
+    at.lateral_m = lateral_m;
+    FilmProblem pr = at.problem(g, model);
+    pr.flowFactors = &rough;
+    pr.momentPoint_m = {0.0, sp.pinHeight_m};
+    if (model == CavitationModel::MassConserving) {
+      pr.timeStep_s = 1e-4;
+      pr.previousFillFraction.setOnes(g.nodeCount());
+    }
+    const Eigen::MatrixXd pose = sp.squeezeBasis(g);
+    pr.squeezeBasis.resize(g.nodeCount(), columns);
+    for (int c = 0; c < columns; ++c)
+      for (int j = 0; j < g.ny(); ++j)
+        for (int i = 0; i < g.nx(); ++i) {
+          const int k = g.nodeIndex(i, j);
+          const double th = g.x_m()[i] / sp.radius_m;
+          const double y = g.y_m()[j] / sp.length_m;
+          // Mode-like shapes: circumferential order c / 2, axial order c % 3.
+          pr.squeezeBasis(k, c) = c < 2 ? pose(k, c)
+                                        : -std::cos(0.5 * (c / 2) * th) * std::pow(y, c % 3);
+        }
+    return pr;
+  };
+  const int many = 12;
+  struct Run {
+    FilmResult r;
+    int factorisations = 0;
+  };
+  auto warmRun = [&](const FilmProblem& pr) {
+    FilmSolver solver(test::tightOptions(FilmSolverType::FastActiveSet, 1e-12));
+    const FilmResult first = solver.solve(g, problemAt(13.9e-6, pr.squeezeBasis.cols()));
+    Run run;
+    run.r = solver.solve(g, pr, &first.state);
+    EXPECT_TRUE(run.r.converged) << tag;
+    run.factorisations = run.r.factorisations;
+    return run;
+  };
+  const FilmProblem pr = problemAt(14.0e-6, many);
+  const Run base = warmRun(pr);
+  const Run two = warmRun(problemAt(14.0e-6, 2));
+  ASSERT_EQ(base.r.dLoad_dVelocity.size(), many) << tag;
+  for (int c = 0; c < 2; ++c)
+    EXPECT_NEAR(base.r.dLoad_dVelocity[c], two.r.dLoad_dVelocity[c],
+                1e-9 * std::abs(two.r.dLoad_dVelocity[c]))
+        << tag << " column " << c;
+  // The step is small (13.9 -> 14 um): two columns stay on the lagged factorisation; twelve
+  // make the current Jacobian's factorisation the cheaper path, so that path is under test.
+  EXPECT_EQ(two.factorisations, 0) << tag;
+  EXPECT_EQ(base.factorisations, 1) << tag;
+  for (const int c : {0, many / 2, many - 1}) {
+    const double step = c == 1 ? 1e-4 : 1e-6;
+    FilmProblem plus = pr, minus = pr;
+    plus.squeezeBasis.resize(0, 0);
+    minus.squeezeBasis.resize(0, 0);
+    plus.gapRate_mps += step * pr.squeezeBasis.col(c).array();
+    minus.gapRate_mps -= step * pr.squeezeBasis.col(c).array();
+    const Derivs dp = solveWithDerivatives(g, plus, FilmSolverType::FastActiveSet);
+    const Derivs dm = solveWithDerivatives(g, minus, FilmSolverType::FastActiveSet);
+    ASSERT_EQ(dp.cavitated, dm.cavitated) << tag << ": step changed the cavitation set";
+    const double fd = (dp.value[0] - dm.value[0]) / (2.0 * step);
+    const double size = base.r.dLoad_dVelocity.cwiseAbs().maxCoeff();
+    const double err = std::abs(fd - base.r.dLoad_dVelocity[c]) / size;
+    test::reportFigure("squeezeDerivative.manyColumns." + tag + "." + std::to_string(c), err);
+    EXPECT_LT(err, 1e-6) << tag << " column " << c;
+  }
+}
+
+TEST(FilmSqueeze, ManyColumnsFromAWarmStartMatchFiniteDifferences) {
+  checkManyColumnsFromWarmStart(CavitationModel::Reynolds, "reynolds");
+  checkManyColumnsFromWarmStart(CavitationModel::MassConserving, "jfo");
+}
+
 }  // namespace
 }  // namespace pistondyn::lubrication

@@ -190,6 +190,12 @@ struct FilmSolverOptions {
   // approximate Jacobian: they need not be as accurate as the film itself (each column is a
   // Krylov solve of its own; BENCHMARKS.md has what the looser default saves).
   double derivativeTolerance = 1e-6;
+  // Fast solver, many squeeze-derivative columns (an elastic skirt asks for one per deformation
+  // mode): when the first column's Krylov cost says that the rest would cost more than one
+  // factorisation of the current Jacobian, factorise it and back-substitute the remaining
+  // columns (exact to round-off instead of derivativeTolerance). Default on; off keeps one
+  // Krylov solve per column (for comparisons, BENCHMARKS.md).
+  bool factoriseForManyDerivativeColumns = true;
   int maxSweeps = 200000;   // Gauss-Seidel sweeps before giving up, default 200000
   // SOR factor of the pressure update, (0, 2), default 1.8. The best value grows with the grid
   // (the best values found on the skirt benchmark are in BENCHMARKS.md).

@@ -59,11 +59,14 @@ struct Scenario {
   std::vector<Step> steps;  // steps[0] is the untimed step before the window
   std::unique_ptr<FlowFactorModel> factors = makeFlowFactors();
 
+  static constexpr double kRadius_m = 0.0651 / 2, kSkirtLength_m = 0.025;
+  static constexpr double kPinHeight_m = 0.4 * kSkirtLength_m;
+
   explicit Scenario(int scale)
-      : grid(FilmGrid::uniform(64 * scale, 0.0651 / 2 * 80.0 * kPi / 180.0, 48 * scale, 0.025,
-                               false, -0.0651 / 2 * 40.0 * kPi / 180.0, 0.0)) {
-    const double R = 0.0651 / 2, c = 53e-6, L = 0.025, crank = 0.0477 / 2, rod = 0.08;
-    const double pin = 0.4 * L, deg = kPi / 180.0;
+      : grid(FilmGrid::uniform(64 * scale, kRadius_m * 80.0 * kPi / 180.0, 48 * scale,
+                               kSkirtLength_m, false, -kRadius_m * 40.0 * kPi / 180.0, 0.0)) {
+    const double R = kRadius_m, c = 53e-6, L = kSkirtLength_m, crank = 0.0477 / 2, rod = 0.08;
+    const double pin = kPinHeight_m, deg = kPi / 180.0;
     auto lateral = [&](double phi) {
       return c * (0.02 + 0.93 * std::tanh((phi - 368 * deg) / (12 * deg)));
     };
@@ -117,6 +120,32 @@ const Scenario& scenario(int scale) {
   return s4;
 }
 
+// One timed pass over the stroke per benchmark iteration: a new solver, the step before the
+// window solved untimed, then the kSteps steps each warm-started from the last; `perSolve`
+// sees every timed result.
+template <class PerSolve>
+void runWarmStroke(benchmark::State& state, const Scenario& sc, const FilmSolverOptions& opt,
+                   const FilmProblem& problem, PerSolve&& perSolve) {
+  for (auto _ : state) {
+    state.PauseTiming();
+    FilmSolver solver(opt);
+    FilmProblem pr = problem;
+    FilmResult r;
+    sc.setStep(pr, 0);
+    solver.solve(sc.grid, pr, nullptr, r);  // the step before the window, untimed
+    FilmState warm = r.state;
+    state.ResumeTiming();
+    for (int s = 1; s <= Scenario::kSteps; ++s) {
+      sc.setStep(pr, s);
+      if (pr.cavitation == CavitationModel::MassConserving)
+        pr.previousFillFraction = warm.fillFraction;
+      solver.solve(sc.grid, pr, &warm, r);
+      warm = r.state;
+      perSolve(r);
+    }
+  }
+}
+
 // args: scale (1: 64 x 48, 2: 128 x 96, 4: 256 x 192), solver (0 fast, 1 reference), model
 // (1 Reynolds, 2 JFO), over-relaxation x 100 of the reference solver (0: the default), linear
 // solver of the fast solver (0 Automatic, 1 SparseDirect, 2 Multigrid).
@@ -135,31 +164,16 @@ void BM_SkirtStroke(benchmark::State& state) {
   double sweeps = 0, factorisations = 0, mgBuilds = 0, krylov = 0, activeSet = 0, notConverged = 0,
          cavitated = 0;
   double solves = 0;
-  for (auto _ : state) {
-    state.PauseTiming();
-    FilmSolver solver(opt);
-    FilmProblem pr = sc.problem(model);
-    FilmResult r;
-    sc.setStep(pr, 0);
-    solver.solve(sc.grid, pr, nullptr, r);  // the step before the window, untimed
-    FilmState warm = r.state;
-    state.ResumeTiming();
-    for (int s = 1; s <= Scenario::kSteps; ++s) {
-      sc.setStep(pr, s);
-      if (model == CavitationModel::MassConserving)
-        pr.previousFillFraction = warm.fillFraction;
-      solver.solve(sc.grid, pr, &warm, r);
-      warm = r.state;
-      sweeps += opt.solver == FilmSolverType::ReferenceGaussSeidel ? r.iterations : 0;
-      factorisations += r.factorisations;
-      mgBuilds += r.multigridBuilds;
-      krylov += r.krylovIterations;
-      activeSet += r.activeSetIterations;
-      notConverged += r.converged ? 0 : 1;
-      cavitated += r.cavitatedNodes;
-      solves += 1;
-    }
-  }
+  runWarmStroke(state, sc, opt, sc.problem(model), [&](const FilmResult& r) {
+    sweeps += opt.solver == FilmSolverType::ReferenceGaussSeidel ? r.iterations : 0;
+    factorisations += r.factorisations;
+    mgBuilds += r.multigridBuilds;
+    krylov += r.krylovIterations;
+    activeSet += r.activeSetIterations;
+    notConverged += r.converged ? 0 : 1;
+    cavitated += r.cavitatedNodes;
+    solves += 1;
+  });
   state.SetItemsProcessed(static_cast<int64_t>(solves));
   state.counters["nodes"] = sc.grid.nodeCount();
   state.counters["time_per_solve"] =
@@ -214,38 +228,23 @@ void BM_DerivativeColumns(benchmark::State& state) {
   FilmSolverOptions opt;
   opt.factoriseForManyDerivativeColumns = state.range(3) != 0;
   const FilmGrid& g = sc.grid;
-  Eigen::MatrixXd basis(g.nodeCount(), columns);
-  const double R = 0.0651 / 2, L = 0.025, pin = 0.4 * L;
+  FilmProblem pr = sc.problem(model);
+  pr.squeezeBasis.resize(g.nodeCount(), columns);
   for (int c = 0; c < columns; ++c)
     for (int j = 0; j < g.ny(); ++j)
       for (int i = 0; i < g.nx(); ++i) {
-        const double th = g.x_m()[i] / R, y = g.y_m()[j];
-        basis(g.nodeIndex(i, j), c) = c == 0   ? -std::cos(th)
-                                      : c == 1 ? -(y - pin) * std::cos(th)
-                                               : -std::cos(0.5 * (c / 2) * th) * std::pow(y / L, c % 3);
+        const double th = g.x_m()[i] / Scenario::kRadius_m, y = g.y_m()[j];
+        pr.squeezeBasis(g.nodeIndex(i, j), c) =
+            c == 0   ? -std::cos(th)
+            : c == 1 ? -(y - Scenario::kPinHeight_m) * std::cos(th)
+                     : -std::cos(0.5 * (c / 2) * th) * std::pow(y / Scenario::kSkirtLength_m, c % 3);
       }
   double factorisations = 0, krylov = 0, solves = 0;
-  for (auto _ : state) {
-    state.PauseTiming();
-    FilmSolver solver(opt);
-    FilmProblem pr = sc.problem(model);
-    pr.squeezeBasis = basis;
-    FilmResult r;
-    sc.setStep(pr, 0);
-    solver.solve(g, pr, nullptr, r);
-    FilmState warm = r.state;
-    state.ResumeTiming();
-    for (int s = 1; s <= Scenario::kSteps; ++s) {
-      sc.setStep(pr, s);
-      if (model == CavitationModel::MassConserving)
-        pr.previousFillFraction = warm.fillFraction;
-      solver.solve(g, pr, &warm, r);
-      warm = r.state;
-      factorisations += r.factorisations;
-      krylov += r.krylovIterations;
-      solves += 1;
-    }
-  }
+  runWarmStroke(state, sc, opt, pr, [&](const FilmResult& r) {
+    factorisations += r.factorisations;
+    krylov += r.krylovIterations;
+    solves += 1;
+  });
   state.counters["time_per_solve"] =
       benchmark::Counter(solves, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.counters["factorisations"] = factorisations / solves;

@@ -65,6 +65,24 @@ Derivs solveWithDerivatives(const FilmGrid& g, const FilmProblem& pr, FilmSolver
   return d;
 }
 
+// Central difference of (load, first moments) along squeeze column `column` of pr, from two
+// complete solves without derivatives, and the cavitated counts of both.
+struct CentralDifference {
+  Eigen::Vector3d value;
+  int cavitatedPlus, cavitatedMinus;
+};
+CentralDifference centralDifference(const FilmGrid& g, const FilmProblem& pr, int column,
+                                    double step, FilmSolverType type) {
+  FilmProblem plus = pr, minus = pr;
+  plus.squeezeBasis.resize(0, 0);
+  minus.squeezeBasis.resize(0, 0);
+  plus.gapRate_mps += step * pr.squeezeBasis.col(column).array();
+  minus.gapRate_mps -= step * pr.squeezeBasis.col(column).array();
+  const Derivs dp = solveWithDerivatives(g, plus, type);
+  const Derivs dm = solveWithDerivatives(g, minus, type);
+  return {(dp.value - dm.value) / (2.0 * step), dp.cavitated, dm.cavitated};
+}
+
 // For a fixed cavitation set the pressure is linear in the squeeze velocities, so a central
 // difference with a step small enough to keep the set is exact up to the solve tolerance. The
 // derivatives come from back-substitution with the final factorisation; the finite differences
@@ -93,16 +111,10 @@ void checkDerivatives(CavitationModel model, FilmSolverType type, const std::str
   ASSERT_GT(base.deriv.cwiseAbs().maxCoeff(), 0.0) << tag;
   const Eigen::Vector2d step(1e-6, 1e-4);  // lateral [m/s], tilt rate [rad/s]
   for (int m = 0; m < 2; ++m) {
-    FilmProblem plus = pr, minus = pr;
-    plus.squeezeBasis.resize(0, 0);
-    minus.squeezeBasis.resize(0, 0);
-    plus.gapRate_mps += step[m] * pr.squeezeBasis.col(m).array();
-    minus.gapRate_mps -= step[m] * pr.squeezeBasis.col(m).array();
-    const Derivs dp = solveWithDerivatives(g, plus, type);
-    const Derivs dm = solveWithDerivatives(g, minus, type);
-    ASSERT_EQ(dp.cavitated, base.cavitated) << tag << ": step changed the cavitation set";
-    ASSERT_EQ(dm.cavitated, base.cavitated) << tag << ": step changed the cavitation set";
-    const Eigen::Vector3d fd = (dp.value - dm.value) / (2.0 * step[m]);
+    const CentralDifference cd = centralDifference(g, pr, m, step[m], type);
+    ASSERT_EQ(cd.cavitatedPlus, base.cavitated) << tag << ": step changed the cavitation set";
+    ASSERT_EQ(cd.cavitatedMinus, base.cavitated) << tag << ": step changed the cavitation set";
+    const Eigen::Vector3d& fd = cd.value;
     const double size = base.deriv.col(m).cwiseAbs().maxCoeff();
     const double err = (fd - base.deriv.col(m)).cwiseAbs().maxCoeff() / size;
     test::reportFigure("squeezeDerivative." + tag + "." + std::to_string(m), err);
@@ -160,44 +172,30 @@ void checkManyColumnsFromWarmStart(CavitationModel model, const std::string& tag
     return pr;
   };
   const int many = 12;
-  struct Run {
-    FilmResult r;
-    int factorisations = 0;
-  };
   auto warmRun = [&](const FilmProblem& pr) {
     FilmSolver solver(test::tightOptions(FilmSolverType::FastActiveSet, 1e-12));
     const FilmResult first = solver.solve(g, problemAt(13.9e-6, pr.squeezeBasis.cols()));
-    Run run;
-    run.r = solver.solve(g, pr, &first.state);
-    EXPECT_TRUE(run.r.converged) << tag;
-    run.factorisations = run.r.factorisations;
-    return run;
+    FilmResult r = solver.solve(g, pr, &first.state);
+    EXPECT_TRUE(r.converged) << tag;
+    return r;
   };
   const FilmProblem pr = problemAt(14.0e-6, many);
-  const Run base = warmRun(pr);
-  const Run two = warmRun(problemAt(14.0e-6, 2));
-  ASSERT_EQ(base.r.dLoad_dVelocity.size(), many) << tag;
+  const FilmResult base = warmRun(pr);
+  const FilmResult two = warmRun(problemAt(14.0e-6, 2));
+  ASSERT_EQ(base.dLoad_dVelocity.size(), many) << tag;
   for (int c = 0; c < 2; ++c)
-    EXPECT_NEAR(base.r.dLoad_dVelocity[c], two.r.dLoad_dVelocity[c],
-                1e-9 * std::abs(two.r.dLoad_dVelocity[c]))
+    EXPECT_NEAR(base.dLoad_dVelocity[c], two.dLoad_dVelocity[c],
+                1e-9 * std::abs(two.dLoad_dVelocity[c]))
         << tag << " column " << c;
   // The step is small (13.9 -> 14 um): two columns stay on the lagged factorisation; twelve
   // make the current Jacobian's factorisation the cheaper path, so that path is under test.
   EXPECT_EQ(two.factorisations, 0) << tag;
   EXPECT_EQ(base.factorisations, 1) << tag;
   for (const int c : {0, many / 2, many - 1}) {
-    const double step = c == 1 ? 1e-4 : 1e-6;
-    FilmProblem plus = pr, minus = pr;
-    plus.squeezeBasis.resize(0, 0);
-    minus.squeezeBasis.resize(0, 0);
-    plus.gapRate_mps += step * pr.squeezeBasis.col(c).array();
-    minus.gapRate_mps -= step * pr.squeezeBasis.col(c).array();
-    const Derivs dp = solveWithDerivatives(g, plus, FilmSolverType::FastActiveSet);
-    const Derivs dm = solveWithDerivatives(g, minus, FilmSolverType::FastActiveSet);
-    ASSERT_EQ(dp.cavitated, dm.cavitated) << tag << ": step changed the cavitation set";
-    const double fd = (dp.value[0] - dm.value[0]) / (2.0 * step);
-    const double size = base.r.dLoad_dVelocity.cwiseAbs().maxCoeff();
-    const double err = std::abs(fd - base.r.dLoad_dVelocity[c]) / size;
+    const CentralDifference cd = centralDifference(g, pr, c, 1e-6, FilmSolverType::FastActiveSet);
+    ASSERT_EQ(cd.cavitatedPlus, cd.cavitatedMinus) << tag << ": step changed the cavitation set";
+    const double size = base.dLoad_dVelocity.cwiseAbs().maxCoeff();
+    const double err = std::abs(cd.value[0] - base.dLoad_dVelocity[c]) / size;
     test::reportFigure("squeezeDerivative.manyColumns." + tag + "." + std::to_string(c), err);
     EXPECT_LT(err, 1e-6) << tag << " column " << c;
   }

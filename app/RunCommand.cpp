@@ -54,8 +54,10 @@ void printLinerFigures(const io::CycleSummary::LinerFigures& f, const io::CycleS
   if (f.hotRunningClearance_m)
     std::printf("  hot running clearance %.2f um\n", *f.hotRunningClearance_m * 1e6);
   if (f.filmSolves) {
-    std::printf("  %ld film solves (%ld with the reference-solver fallback), %ld rejected steps\n",
-                *f.filmSolves, f.filmFallbacks.value_or(0), stats.rejectedSteps);
+    std::printf("  %ld film solves (%ld with the reference-solver fallback, %ld without squeeze "
+                "derivatives), %ld rejected steps\n",
+                *f.filmSolves, f.filmFallbacks.value_or(0), f.filmDerivativeFailures.value_or(0),
+                stats.rejectedSteps);
   }
 }
 

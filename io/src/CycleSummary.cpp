@@ -45,6 +45,7 @@ CycleSummarySink::CycleSummarySink(const EngineDeck& deck, const plugin::PistonA
   if (const plugin::LinerElement* liner = model_.findLinerElement()) {
     solvesAtStart_ = liner->getFilmSolveCount();
     fallbacksAtStart_ = liner->getFilmFallbackCount();
+    derivativeFailuresAtStart_ = liner->getFilmDerivativeFailureCount();
   }
 }
 
@@ -206,6 +207,8 @@ void CycleSummarySink::endRun() {
       f.filmSolves = *solves - solvesAtStart_.value_or(0);
     if (fallbacks)
       f.filmFallbacks = *fallbacks - fallbacksAtStart_.value_or(0);
+    if (const std::optional<long> failures = liner_->getFilmDerivativeFailureCount())
+      f.filmDerivativeFailures = *failures - derivativeFailuresAtStart_.value_or(0);
     s.liner = f;
   }
 }

@@ -132,6 +132,8 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
       r["film_solves"] = *f.filmSolves;
     if (f.filmFallbacks)
       r["film_fallbacks"] = *f.filmFallbacks;
+    if (f.filmDerivativeFailures)
+      r["film_derivative_failures"] = *f.filmDerivativeFailures;
   }
   r["conrod_force_max_N"] = s.conrodForceMax_N;
   r["conrod_force_min_N"] = s.conrodForceMin_N;

@@ -666,7 +666,7 @@ void ActiveSetSolver::projectOntoConstraints(FilmSystem& s) const {
   }
 }
 
-void ActiveSetSolver::solveWithCurrentSet(FilmSystem& s, Eigen::MatrixXd& rhs, double relTol,
+bool ActiveSetSolver::solveWithCurrentSet(FilmSystem& s, Eigen::MatrixXd& rhs, double relTol,
                                           bool mayFactorise) {
   prepare(s);
   if (!jacobianCurrent_)
@@ -678,13 +678,13 @@ void ActiveSetSolver::solveWithCurrentSet(FilmSystem& s, Eigen::MatrixXd& rhs, d
   for (Eigen::Index c = 0; c < m; ++c) {
     if (factorExact_) {  // the remaining columns are contiguous (column-major)
       solveWithFactor(s, rhs.col(c).data(), static_cast<int>(m - c));
-      return;
+      return true;
     }
     const double target = relTol * rhs.col(c).lpNorm<Eigen::Infinity>();
     const int before = krylovIterations_;
     if (!linearSolve(s, rhs.col(c).data(), target, target)) {
       rhs.setZero();
-      return;
+      return false;
     }
     // The Krylov cost of this column, repeated for the rest, against one factorisation of the
     // current Jacobian plus a back-substitution per column (each about one iteration). The
@@ -715,6 +715,7 @@ void ActiveSetSolver::solveWithCurrentSet(FilmSystem& s, Eigen::MatrixXd& rhs, d
     // A failed factorisation leaves factorExact_ false: the next columns go on with Krylov
     // (sparse-direct path: linearSolve then tries to factorise once more and reports failure).
   }
+  return true;
 }
 
 }  // namespace pistondyn::lubrication::detail

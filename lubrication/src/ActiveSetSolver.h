@@ -57,8 +57,10 @@ class ActiveSetSolver {
   // active set, to a relative accuracy `relTol` of each column's max norm. Krylov solves with
   // the current preconditioner, unless (mayFactorise) a column's Krylov cost shows that
   // factorising the current Jacobian and back-substituting the rest is cheaper.
-  void solveWithCurrentSet(FilmSystem& sys, Eigen::MatrixXd& rhs, double relTol,
-                           bool mayFactorise);
+  // Returns false when a column's linear solve failed (Krylov and the factorisation behind it:
+  // a singular Jacobian); rhs is then all zero, which the caller must report.
+  [[nodiscard]] bool solveWithCurrentSet(FilmSystem& sys, Eigen::MatrixXd& rhs, double relTol,
+                                         bool mayFactorise);
 
   // Marks that the stored Jacobian values no longer belong to the current active set.
   void invalidate() { jacobianCurrent_ = false; }

@@ -295,6 +295,7 @@ void FilmSolver::Impl::solve(const FilmGrid& grid, const FilmProblem& pr, const 
   const int krylov0 = fast.krylovIterations();
   const int mgBuilds0 = fast.multigridBuilds();
   res.usedFallback = false;
+  res.derivativesFailed = false;
   res.activeSetIterations = 0;
   if (options.solver == FilmSolverType::ReferenceGaussSeidel) {
     rep = detail::gaussSeidelSolve(sys, options, options.maxSweeps);
@@ -332,8 +333,8 @@ void FilmSolver::Impl::solve(const FilmGrid& grid, const FilmProblem& pr, const 
     for (Eigen::Index c = 0; c < m; ++c)
       for (int k = 0; k < sys.n; ++k)
         derivRhs(k, c) = -sys.theta[k] * area[k] * sys.dhTdh[k] * pr.squeezeBasis(k, c);
-    fast.solveWithCurrentSet(sys, derivRhs, options.derivativeTolerance,
-                             options.factoriseForManyDerivativeColumns);
+    res.derivativesFailed = !fast.solveWithCurrentSet(sys, derivRhs, options.derivativeTolerance,
+                                                      options.factoriseForManyDerivativeColumns);
     for (int k = 0; k < sys.n; ++k)
       if (sys.status[k] != detail::kFull)
         derivRhs.row(k).setZero();

@@ -226,6 +226,10 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     }
   }
   std::array<double, 2> gapTimes{0.0, 0.0};
+  // Every film solve of the side (an elastic coupling does several), counted where it runs so
+  // that a fallback or a failed derivative solve in a coupling iteration, or in an evaluation
+  // that throws, is not lost (summed on this thread after the join).
+  std::array<long, 2> solves{0, 0}, fallbacks{0, 0}, derivativeFailures{0, 0};
   const ElasticSkirtParameters& elastic = parameters_.elasticSkirt;
   const double gasGauge_Pa =
       elastic.enabled && elastic.cylinderPressure
@@ -240,6 +244,10 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
                                fields);
       gapTimes[k] += std::chrono::duration<double>(Clock::now() - gapStart).count();
       workspace_->lubrication[k]->solve(fields, inputs[k], workspace_->results[k]);
+      const lubrication::FilmResult& film = workspace_->results[k].film;
+      ++solves[k];
+      fallbacks[k] += film.usedFallback ? 1 : 0;
+      derivativeFailures[k] += film.derivativesFailed ? 1 : 0;
     };
     skirt::ElasticCoupling* coupling = workspace_->elastic[k].get();
     // The elastic term's rate from the last accepted step (backward Euler, like the fill
@@ -344,6 +352,9 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
       attemptSide(kThrust);
       attemptSide(kAntiThrust);
     }
+    filmSolves_ += solves[kThrust] + solves[kAntiThrust];
+    filmFallbacks_ += fallbacks[kThrust] + fallbacks[kAntiThrust];
+    filmDerivativeFailures_ += derivativeFailures[kThrust] + derivativeFailures[kAntiThrust];
     for (const std::exception_ptr& error : errors)
       if (error)
         std::rethrow_exception(error);
@@ -358,12 +369,9 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     const auto& fill = k == kThrust ? fillThrust_ : fillAntiThrust_;
     const double dt = dts[k];
     const skirt::SkirtSideResults& out = workspace_->results[k];
-    ++filmSolves_;
     timings_.film_s += out.filmTime_s;
     timings_.contact_s += out.contactTime_s;
     timings_.loads_s += out.loadsTime_s;
-    if (out.film.usedFallback)
-      ++filmFallbacks_;
     if (massConserving) {
       // The history this step leads to, if accepted (a zero step keeps the history).
       const FillHistory& history = fill.getValue(s);
@@ -408,7 +416,6 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     if (workspace_->elastic[k]) {
       side.elasticIterations = workspace_->elasticReports[k].iterations;
       side.maxElasticDeformation_m = workspace_->elasticReports[k].maxDeformation_m;
-      filmSolves_ += side.elasticIterations - 1;  // one is counted above
     }
     total.force_N += out.totalLoads.force_N;
     total.moment_Nm += out.totalLoads.moment_Nm;

@@ -218,7 +218,7 @@ TEST_F(SkirtScratchDeck, AShortRunWritesEverySkirtFigure) {
         "min_h_over_sigma_antithrust", "min_film_thickness_thrust_um",
         "min_film_thickness_antithrust_um", "max_abs_u_lat_um", "max_abs_tilt_deg",
         "slap_energy_max_mJ", "hot_clearance_um", "cycles_run", "cycles_to_converge", "film_solves",
-        "film_fallbacks", "rejected_steps", "wall_time_s"})
+        "film_fallbacks", "film_derivative_failures", "rejected_steps", "wall_time_s"})
     finiteNumber(r, key);
   for (const char* key :
        {"min_h_over_sigma_thrust_crank_angle_deg", "min_h_over_sigma_antithrust_crank_angle_deg",
@@ -236,6 +236,8 @@ TEST_F(SkirtScratchDeck, AShortRunWritesEverySkirtFigure) {
   ASSERT_EQ(r["cycle_fmep_kPa"].size(), 1u);
   EXPECT_EQ(r["cycle_fmep_kPa"][0].get<double>(), r["fmep_kPa"].get<double>());
   EXPECT_GT(r["film_solves"].get<long>(), 0);
+  // A healthy run: every film solve also returned its squeeze derivatives.
+  EXPECT_EQ(r["film_derivative_failures"].get<long>(), 0);
   EXPECT_EQ(r["hot_clearance_um"].get<double>(), 40.0);  // no thermal growth: c0 at -6 mm
   // No null anywhere (nlohmann writes NaN and infinities as null).
   EXPECT_EQ(summary.dump().find("null"), std::string::npos);

@@ -51,9 +51,9 @@ struct CycleSummary {
     // one output step count as the last of them.
     std::optional<double> slapEnergyMax_J;
     std::optional<double> hotRunningClearance_m;  // LinerElement::getHotRunningClearance_m
-    // Film solves (and fallbacks) the liner counted from the sink's construction to the
-    // end of the run.
-    std::optional<long> filmSolves, filmFallbacks;
+    // Film solves, their fallbacks and failed squeeze-derivative solves, as the liner
+    // counted them from the sink's construction to the end of the run.
+    std::optional<long> filmSolves, filmFallbacks, filmDerivativeFailures;
   };
   std::optional<LinerFigures> liner;
 
@@ -106,7 +106,7 @@ class CycleSummarySink final : public plugin::RowSink {
     double previous_J = 0.0, max_J = 0.0;
   };
   const plugin::LinerElement* liner_ = nullptr;
-  std::optional<long> solvesAtStart_, fallbacksAtStart_;
+  std::optional<long> solvesAtStart_, fallbacksAtStart_, derivativeFailuresAtStart_;
   long perCycle_;
   long rows_ = 0;
   long rowInCycle_ = -1;  // -1 before the first beginCycle()

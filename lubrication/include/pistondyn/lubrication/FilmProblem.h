@@ -290,6 +290,11 @@ struct FilmResult {
   double residual = 0.0;
   bool converged = false;
   bool usedFallback = false;
+  // The squeeze-derivative solve failed (the final active set's Jacobian is singular to the
+  // linear solvers, Krylov and sparse-direct): the derivative fields above are then all zero,
+  // not derivatives. The pressure and loads are unaffected. Callers that steer a Newton
+  // iteration with the derivatives count it (the skirt element does).
+  bool derivativesFailed = false;
   int cavitatedNodes = 0;  // unknown nodes at the cavitation pressure
 };
 

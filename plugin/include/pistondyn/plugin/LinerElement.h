@@ -44,10 +44,13 @@ class LinerElement : public ForceElement {
   }
   // Radial clearance between skirt and liner at operating temperature [m].
   virtual std::optional<double> getHotRunningClearance_m() const { return std::nullopt; }
-  // Film solves done by the element so far, and how many of them needed the film solver's
-  // fallback to the reference solver (diagnostics; counted over the element's life).
+  // Film solves done by the element so far, how many of them needed the film solver's
+  // fallback to the reference solver, and how many returned no squeeze derivatives (their
+  // linear solve failed; FilmResult::derivativesFailed) (diagnostics; counted over the
+  // element's life).
   virtual std::optional<long> getFilmSolveCount() const { return std::nullopt; }
   virtual std::optional<long> getFilmFallbackCount() const { return std::nullopt; }
+  virtual std::optional<long> getFilmDerivativeFailureCount() const { return std::nullopt; }
 };
 
 }  // namespace pistondyn::plugin

@@ -210,6 +210,9 @@ class LubricatedSkirtElement final : public LinerElement {
   const Timings& getTimings() const { return timings_; }
   std::optional<long> getFilmSolveCount() const override { return filmSolves_; }
   std::optional<long> getFilmFallbackCount() const override { return filmFallbacks_; }
+  std::optional<long> getFilmDerivativeFailureCount() const override {
+    return filmDerivativeFailures_;
+  }
 
   // ---- for tests, dumps and studies -------------------------------------------------
   const LubricatedSkirtParameters& getParameters() const { return parameters_; }
@@ -240,7 +243,7 @@ class LubricatedSkirtElement final : public LinerElement {
   const mbd::CrankTrain* crankTrain_ = nullptr;  // non-owning; the model owns both
   double viscosity_Pas_ = 0.0;
   std::unique_ptr<Workspace> workspace_;
-  mutable long filmSolves_ = 0, filmFallbacks_ = 0;
+  mutable long filmSolves_ = 0, filmFallbacks_ = 0, filmDerivativeFailures_ = 0;
   mutable Timings timings_;
   ElementCache<LubricatedSkirtResults> cache_;
   ElementZ work_;  // [0] friction work, [1] hydrodynamic, [2] asperity, [3..4] wear volume

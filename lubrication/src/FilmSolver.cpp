@@ -144,6 +144,12 @@ void validate(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm
     if (!pr.squeezeBasis.allFinite())
       fail("problem.squeezeBasis must be finite");
   }
+  if (pr.gapBasis.cols() > 0) {
+    if (pr.gapBasis.rows() != n)
+      fail("problem.gapBasis has ", pr.gapBasis.rows(), " rows, expected ", n, " (one per node)");
+    if (!pr.gapBasis.allFinite())
+      fail("problem.gapBasis must be finite");
+  }
   if (!pr.momentPoint_m.allFinite())
     fail("problem.momentPoint_m must be finite");
   if (!std::isfinite(pr.referencePressure_Pa))
@@ -200,6 +206,12 @@ struct FilmSolver::Impl {
   detail::FilmSystem sys;
   detail::ActiveSetSolver fast;
   Eigen::MatrixXd derivRhs;
+  // Gap derivatives: the perturbed problem and its system (sized once), and the squeeze part
+  // of derivRhs for the post-processing.
+  FilmProblem gapProblem;
+  detail::FilmSystem gapSystem;
+  Eigen::ArrayXd gapResidualPlus;
+  Eigen::MatrixXd squeezeDerivatives;
   detail::PostprocessWorkspace post;
   // Grid-sequenced cold start (ColdStartSequence.h): the coarser level, its own solver (which
   // sequences its cold start in turn) and the fine start interpolated from its solution.
@@ -209,6 +221,8 @@ struct FilmSolver::Impl {
   FilmState sequencedStart;
 
   void initialiseIterate(const FilmProblem& pr, const FilmState* warm);
+  // Column `col` of derivRhs: -d(balance)/d(u_g) at the solution for gap-basis column g.
+  void calcGapRhs(const FilmGrid& grid, const FilmProblem& pr, Eigen::Index g, Eigen::Index col);
   void solve(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm, FilmResult& r);
 };
 
@@ -325,24 +339,70 @@ void FilmSolver::Impl::solve(const FilmGrid& grid, const FilmProblem& pr, const 
   res.residual = rep.residual;
   res.converged = rep.converged;
 
-  // Squeeze derivatives by back-substitution with the final active set's factorisation.
+  // Squeeze and gap derivatives by back-substitution with the final active set's Jacobian.
   const Eigen::Index m = pr.squeezeBasis.cols();
-  if (m > 0) {
-    derivRhs.resize(sys.n, m);
+  const Eigen::Index g = pr.gapBasis.cols();
+  if (m + g > 0) {
+    derivRhs.resize(sys.n, m + g);
     const Eigen::ArrayXd& area = grid.areaWeights_m2();
     for (Eigen::Index c = 0; c < m; ++c)
       for (int k = 0; k < sys.n; ++k)
         derivRhs(k, c) = -sys.theta[k] * area[k] * sys.dhTdh[k] * pr.squeezeBasis(k, c);
+    if (g > 0)
+      gapProblem = pr;  // once per call (same sizes after the first: no allocation)
+    for (Eigen::Index c = 0; c < g; ++c)
+      calcGapRhs(grid, pr, c, m + c);
     res.derivativesFailed = !fast.solveWithCurrentSet(sys, derivRhs, options.derivativeTolerance,
                                                       options.factoriseForManyDerivativeColumns);
     for (int k = 0; k < sys.n; ++k)
       if (sys.status[k] != detail::kFull)
         derivRhs.row(k).setZero();
   }
+  if (g > 0) {
+    res.dPressure_dGap = derivRhs.rightCols(g);
+    squeezeDerivatives = derivRhs.leftCols(m);
+  } else {
+    res.dPressure_dGap.resize(0, 0);
+  }
   res.factorisations = fast.factorisations() - factorisations0;
   res.krylovIterations = fast.krylovIterations() - krylov0;
   res.multigridBuilds = fast.multigridBuilds() - mgBuilds0;
-  detail::postprocess(grid, pr, sys, m > 0 ? &derivRhs : nullptr, post, res);
+  detail::postprocess(grid, pr, sys, m > 0 ? (g > 0 ? &squeezeDerivatives : &derivRhs) : nullptr,
+                      post, res);
+}
+
+void FilmSolver::Impl::calcGapRhs(const FilmGrid& grid, const FilmProblem& pr, Eigen::Index g,
+                                  Eigen::Index col) {
+  const double largest = pr.gapBasis.col(g).lpNorm<Eigen::Infinity>();
+  if (!(largest > 0.0)) {
+    derivRhs.col(col).setZero();
+    return;
+  }
+  // Step: 1e-4 of the thinnest gap in units of the column (every perturbed gap stays >= 0.9999
+  // of its own value: no sign change, the flow factors stay on their branch).
+  const double step = 1e-4 * pr.gap_m.minCoeff() / largest;
+  for (int sign : {1, -1}) {
+    // gapProblem is the caller's copy of pr; only its gap differs (assemble reads no basis).
+    gapProblem.gap_m = pr.gap_m + (sign * step) * pr.gapBasis.col(g).array();
+    gapSystem.assemble(grid, gapProblem);
+    // The solution's unknowns; fixed nodes take the perturbed problem's own values (an inflow
+    // edge's fill fraction depends on the gap).
+    for (int k = 0; k < sys.n; ++k) {
+      const bool fixed = sys.status[k] == detail::kFixed;
+      gapSystem.p[k] = fixed ? gapSystem.fixedPressure[k] : sys.p[k];
+      gapSystem.theta[k] = fixed ? gapSystem.fixedTheta[k] : sys.theta[k];
+    }
+    if (sign > 0) {
+      gapResidualPlus.resize(sys.n);
+      for (int k = 0; k < sys.n; ++k)
+        gapResidualPlus[k] = sys.status[k] == detail::kFixed ? 0.0 : gapSystem.residualAt(k);
+    } else {
+      for (int k = 0; k < sys.n; ++k)
+        derivRhs(k, col) = sys.status[k] == detail::kFixed
+                               ? 0.0
+                               : -(gapResidualPlus[k] - gapSystem.residualAt(k)) / (2.0 * step);
+    }
+  }
 }
 
 FilmSolver::FilmSolver(const FilmSolverOptions& options) : impl_(std::make_unique<Impl>()) {

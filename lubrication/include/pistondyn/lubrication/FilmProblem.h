@@ -143,6 +143,17 @@ struct FilmProblem {
   // moments, from back-substitutions with the final factorisation and active set (the pressure
   // is linear in the squeeze velocity for a fixed cavitation set).
   Eigen::MatrixXd squeezeBasis;
+  // Optional gap basis: column g is d(gap_m)/d(u_g) per node ([m per unit u_g]) for a
+  // generalised displacement u_g that changes the gap but not its rate (gapRate_mps and the
+  // history stay as given). The result then holds d(p)/d(u_g) on the final active set
+  // (FilmResult::dPressure_dGap): the static pressure-gap sensitivity an elastic coupling's
+  // Newton iteration needs. Its right-hand side is the derivative of the discrete balance in
+  // u_g by a central difference of two assemblies (step 1e-4 of the thinnest gap over the
+  // column's largest entry: a relative error ~1e-8 for the balance's h^3 terms); then one
+  // back-substitution per column, solved with the squeeze columns. A column that moves the
+  // classification of a fixed node (an inflow edge's fill fraction, a dry inlet node) within
+  // that step gets that node's one-sided jump, not a derivative.
+  Eigen::MatrixXd gapBasis;
 
   Eigen::Vector2d momentPoint_m = Eigen::Vector2d::Zero();  // (x0, y0) for moments, [m]
   double referencePressure_Pa = 0.0;  // subtracted from p in load and moments, [Pa]
@@ -272,6 +283,9 @@ struct FilmResult {
   Eigen::MatrixXd dPressure_dVelocity;  // [Pa per unit v_m], nodeCount x M
   Eigen::VectorXd dLoad_dVelocity;      // [N per unit v_m]
   Eigen::VectorXd dFirstMomentX_dVelocity, dFirstMomentY_dVelocity;  // [N m per unit v_m]
+  // Gap derivatives (empty without a gap basis): column g is d(p)/d(u_g) [Pa per unit u_g],
+  // nodeCount x G, zero at nodes not in the full film (fixed, cavitated).
+  Eigen::MatrixXd dPressure_dGap;
 
   // Solver report. iterations: Gauss-Seidel sweeps of the reference solver, or active-set steps
   // of the fast solver plus the sweeps of a fallback (activeSetIterations: the steps alone).
@@ -290,8 +304,8 @@ struct FilmResult {
   double residual = 0.0;
   bool converged = false;
   bool usedFallback = false;
-  // The squeeze-derivative solve failed (the final active set's Jacobian is singular to the
-  // linear solvers, Krylov and sparse-direct): the derivative fields above are then all zero,
+  // The squeeze- and gap-derivative solve failed (the final active set's Jacobian is singular
+  // to the linear solvers, Krylov and sparse-direct): the derivative fields above are all zero,
   // not derivatives. The pressure and loads are unaffected. Callers that steer a Newton
   // iteration with the derivatives count it (the skirt element does).
   bool derivativesFailed = false;

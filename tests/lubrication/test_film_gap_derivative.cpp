@@ -1,0 +1,157 @@
+// Gap derivatives (FilmProblem::gapBasis -> FilmResult::dPressure_dGap): the static pressure-gap
+// sensitivity on the final active set, against a closed form and against central differences
+// of complete solves.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "test_film_support.h"
+
+namespace pistondyn::lubrication {
+namespace {
+
+// Parallel plates of length B approaching at speed v (Hamrock et al., ch. 14):
+// p = 6 eta v y (B - y) / h^3, so a uniform change of the gap at a fixed approach speed gives
+// dp/dh = -3 p / h. The three-point balance is exact for the quadratic pressure, so the nodal
+// derivative is too, up to the central difference's (1e-4)^2 and the solve tolerance.
+TEST(FilmGapDerivative, ParallelPlatesMatchTheClosedForm) {
+  const double eta = 0.02, B = 0.01, h = 10e-6, v = 1e-3, width = 1e-3;
+  const int ny = 41;
+  const FilmGrid g = FilmGrid::uniform(3, width, ny, B, true);
+  FilmProblem pr;
+  pr.gap_m.setConstant(g.nodeCount(), h);
+  pr.gapRate_mps.setConstant(g.nodeCount(), -v);
+  pr.gapBasis = Eigen::MatrixXd::Constant(g.nodeCount(), 1, 1.0);  // d(gap)/du: uniform
+  pr.viscosity_Pas = eta;
+  pr.cavitation = CavitationModel::Reynolds;
+  for (FilmSolverType type :
+       {FilmSolverType::FastActiveSet, FilmSolverType::ReferenceGaussSeidel}) {
+    FilmSolver solver(test::tightOptions(type, 1e-12));
+    const FilmResult r = solver.solve(g, pr);
+    ASSERT_TRUE(r.converged);
+    ASSERT_FALSE(r.derivativesFailed);
+    ASSERT_EQ(r.dPressure_dGap.rows(), g.nodeCount());
+    ASSERT_EQ(r.dPressure_dGap.cols(), 1);
+    const double scale = 3.0 * 6.0 * eta * v * B * B / (4.0 * h * h * h * h);  // |dp/dh| peak
+    double worst = 0.0;
+    for (int j = 1; j + 1 < ny; ++j) {
+      const double y = g.y_m()[j];
+      const double exact = -3.0 * 6.0 * eta * v * y * (B - y) / (h * h * h * h);
+      worst = std::max(worst, std::abs(r.dPressure_dGap(g.nodeIndex(1, j), 0) - exact) / scale);
+    }
+    test::reportFigure(std::string("gapDerivative.parallelPlates.") +
+                           (type == FilmSolverType::FastActiveSet ? "fast" : "reference"),
+                       worst);
+    EXPECT_LT(worst, 1e-7);
+    // Edge nodes are prescribed: no derivative.
+    EXPECT_EQ(r.dPressure_dGap(g.nodeIndex(1, 0), 0), 0.0);
+  }
+}
+
+// Shapes on the skirt patch: uniform, a tilt-like ramp, and a circumferential cosine (a mode
+// of the elastic skirt), each [m per unit].
+Eigen::MatrixXd gapShapes(const test::SkirtPatch& sp, const FilmGrid& g) {
+  Eigen::MatrixXd b(g.nodeCount(), 3);
+  for (int j = 0; j < g.ny(); ++j)
+    for (int i = 0; i < g.nx(); ++i) {
+      const int k = g.nodeIndex(i, j);
+      const double th = g.x_m()[i] / sp.radius_m;
+      const double y = g.y_m()[j] / sp.length_m;
+      b(k, 0) = 1.0;
+      b(k, 1) = y - 0.4;
+      b(k, 2) = std::cos(2.0 * th) * y;
+    }
+  return b;
+}
+
+// The derivative is the one of the complete nonlinear solve for a fixed cavitation set: a
+// central difference of two complete solves (1e-12, a step of 1e-5 of the thinnest gap, warm
+// started from the base so that they keep its set) agrees to 1e-5 of the column's size (the
+// difference quotient loses ~5 digits of the solve tolerance; its truncation is ~1e-10).
+void checkAgainstCompleteSolves(CavitationModel model, const std::string& tag) {
+  const test::SkirtPatch sp;
+  const test::GaussianRoughFactors rough(0.8e-6);
+  const FilmGrid g = sp.grid(36, 28);
+  FilmProblem pr = sp.problem(g, model);
+  pr.flowFactors = &rough;
+  if (model == CavitationModel::MassConserving) {
+    pr.timeStep_s = 1e-4;
+    pr.previousFillFraction.setOnes(g.nodeCount());
+    for (int j = 0; j < g.ny() / 2; ++j)
+      for (int i = 0; i < g.nx(); ++i)
+        pr.previousFillFraction[g.nodeIndex(i, j)] = 0.6;
+  }
+  pr.squeezeBasis = sp.squeezeBasis(g);  // asked together with the gap columns
+  pr.gapBasis = gapShapes(sp, g);
+  FilmSolver solver(test::tightOptions(FilmSolverType::FastActiveSet, 1e-12));
+  const FilmResult base = solver.solve(g, pr);
+  ASSERT_TRUE(base.converged) << tag;
+  ASSERT_FALSE(base.derivativesFailed) << tag;
+  ASSERT_GT(base.cavitatedNodes, 0) << tag;
+  ASSERT_EQ(base.dPressure_dGap.cols(), 3) << tag;
+  ASSERT_EQ(base.dPressure_dVelocity.cols(), 2) << tag;
+
+  // The squeeze columns are unchanged by the gap columns asked with them.
+  FilmProblem squeezeOnly = pr;
+  squeezeOnly.gapBasis.resize(0, 0);
+  FilmSolver other(test::tightOptions(FilmSolverType::FastActiveSet, 1e-12));
+  const FilmResult s = other.solve(g, squeezeOnly);
+  EXPECT_EQ(s.dPressure_dGap.size(), 0) << tag;
+  const double squeezeSize = s.dPressure_dVelocity.cwiseAbs().maxCoeff();
+  EXPECT_LT((s.dPressure_dVelocity - base.dPressure_dVelocity).cwiseAbs().maxCoeff(),
+            1e-6 * squeezeSize)
+      << tag;
+
+  for (int c = 0; c < 3; ++c) {
+    const double step = 1e-5 * pr.gap_m.minCoeff() / pr.gapBasis.col(c).cwiseAbs().maxCoeff();
+    FilmProblem plus = pr, minus = pr;
+    for (FilmProblem* q : {&plus, &minus}) {
+      q->squeezeBasis.resize(0, 0);
+      q->gapBasis.resize(0, 0);
+    }
+    plus.gap_m += step * pr.gapBasis.col(c).array();
+    minus.gap_m -= step * pr.gapBasis.col(c).array();
+    FilmSolver sp1(test::tightOptions(FilmSolverType::FastActiveSet, 1e-12));
+    FilmSolver sm1(test::tightOptions(FilmSolverType::FastActiveSet, 1e-12));
+    const FilmResult rp = sp1.solve(g, plus, &base.state);
+    const FilmResult rm = sm1.solve(g, minus, &base.state);
+    ASSERT_TRUE(rp.converged && rm.converged) << tag;
+    ASSERT_EQ(rp.state.cavitated, base.state.cavitated) << tag << ": step changed the set";
+    ASSERT_EQ(rm.state.cavitated, base.state.cavitated) << tag << ": step changed the set";
+    const Eigen::ArrayXd fd = (rp.pressure_Pa() - rm.pressure_Pa()) / (2.0 * step);
+    const double size = base.dPressure_dGap.col(c).cwiseAbs().maxCoeff();
+    ASSERT_GT(size, 0.0) << tag;
+    const double err = (fd - base.dPressure_dGap.col(c).array()).abs().maxCoeff() / size;
+    test::reportFigure("gapDerivative." + tag + "." + std::to_string(c), err);
+    EXPECT_LT(err, 1e-5) << tag << " column " << c;
+  }
+}
+
+TEST(FilmGapDerivative, MatchesCompleteSolvesReynolds) {
+  checkAgainstCompleteSolves(CavitationModel::Reynolds, "reynolds");
+}
+
+TEST(FilmGapDerivative, MatchesCompleteSolvesMassConserving) {
+  checkAgainstCompleteSolves(CavitationModel::MassConserving, "jfo");
+}
+
+TEST(FilmGapDerivative, BadBasisNamesTheMember) {
+  const test::SkirtPatch sp;
+  const FilmGrid g = sp.grid(12, 10);
+  FilmProblem pr = sp.problem(g, CavitationModel::Reynolds);
+  FilmSolver solver;
+  pr.gapBasis = Eigen::MatrixXd::Zero(g.nodeCount() - 1, 1);
+  try {
+    (void)solver.solve(g, pr);
+    FAIL() << "a gap basis of the wrong size was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("problem.gapBasis"), std::string::npos) << e.what();
+  }
+  pr.gapBasis = Eigen::MatrixXd::Zero(g.nodeCount(), 1);
+  pr.gapBasis(3, 0) = std::nan("");
+  EXPECT_THROW((void)solver.solve(g, pr), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace pistondyn::lubrication

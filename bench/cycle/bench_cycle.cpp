@@ -42,6 +42,7 @@ struct Snapshot {
   LubricatedSkirtElement::Timings timings;
   long filmSolves = 0;
   long fallbacks = 0;
+  long derivativeFailures = 0;
 };
 
 // Takes a snapshot at the start of every cycle and at the end of the run.
@@ -67,6 +68,7 @@ class CycleClock final : public pistondyn::plugin::RowSink {
     s.timings = element_.getTimings();
     s.filmSolves = element_.getFilmSolveCount().value_or(0);
     s.fallbacks = element_.getFilmFallbackCount().value_or(0);
+    s.derivativeFailures = element_.getFilmDerivativeFailureCount().value_or(0);
     return s;
   }
   const LubricatedSkirtElement& element_;
@@ -131,10 +133,10 @@ int runConfiguration(const std::string& deckPath, std::vector<std::string> overr
   const auto& s = outcome.stats;
   std::printf("solver %s: %d cycle(s) run, %s after %d; last cycle:\n", solver.c_str(),
               s.cyclesRun, s.converged ? "periodic" : "NOT periodic", s.cyclesToConverge);
-  std::printf("  wall %.3f s (CPU %.3f s this thread, %.3f s process)   fmep %.4f kPa   film solves %ld (fallbacks %ld)   force "
-              "evaluations %ld\n",
+  std::printf("  wall %.3f s (CPU %.3f s this thread, %.3f s process)   fmep %.4f kPa   film solves %ld (fallbacks %ld, "
+              "without derivatives %ld)   force evaluations %ld\n",
               wall, b.cpu_s - a.cpu_s, b.processCpu_s - a.processCpu_s, s.cycleFmep_Pa.empty() ? 0.0 : s.cycleFmep_Pa.back() / 1e3, solves,
-              b.fallbacks - a.fallbacks, evaluations);
+              b.fallbacks - a.fallbacks, b.derivativeFailures - a.derivativeFailures, evaluations);
   std::printf("  shares: film %.1f %%  contact %.1f %%  gap %.1f %%  loads %.1f %%  rest "
               "(Simbody, integrator, output) %.1f %%\n",
               pct(film), pct(contact), pct(gap), pct(loads), pct(rest));

@@ -176,7 +176,6 @@ const LubricatedSkirtResults& LubricatedSkirtElement::getResults(const SimTK::St
 void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtResults& r) const {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  double gapTime = 0.0;
   const mbd::CrankTrain& ct = *crankTrain_;
   const mbd::EngineDescription& engine = ct.getEngine();
   const PistonPose pose = calcPistonPose(ct, s);
@@ -225,11 +224,13 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
       }
     }
   }
-  std::array<double, 2> gapTimes{0.0, 0.0};
-  // Every film solve of the side (an elastic coupling does several), counted where it runs so
-  // that a fallback or a failed derivative solve in a coupling iteration, or in an evaluation
-  // that throws, is not lost (summed on this thread after the join).
+  // Every film solve of the side (an elastic coupling does several), counted and timed where
+  // it runs so that a fallback or a failed derivative solve in a coupling iteration, or in an
+  // evaluation that throws, is not lost, and the film time matches the solve count (summed on
+  // this thread after the join).
   std::array<long, 2> solves{0, 0}, fallbacks{0, 0}, derivativeFailures{0, 0};
+  std::array<double, 2> gapTimes{0.0, 0.0}, filmTimes{0.0, 0.0}, contactTimes{0.0, 0.0},
+      loadsTimes{0.0, 0.0};
   const ElasticSkirtParameters& elastic = parameters_.elasticSkirt;
   const double gasGauge_Pa =
       elastic.enabled && elastic.cylinderPressure
@@ -237,14 +238,17 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
           : 0.0;
   auto solveSide = [&](int k) {
     skirt::GapFields& fields = workspace_->gapFields[k];
-    gapTimes[k] = 0.0;
     auto gapAndFilm = [&] {
       const auto gapStart = Clock::now();
       workspace_->gap[k]->calc(skirtPose, skirtRate, pose.pinHeight_m, pose.axialVelocity_mps,
                                fields);
       gapTimes[k] += std::chrono::duration<double>(Clock::now() - gapStart).count();
       workspace_->lubrication[k]->solve(fields, inputs[k], workspace_->results[k]);
-      const lubrication::FilmResult& film = workspace_->results[k].film;
+      const skirt::SkirtSideResults& side = workspace_->results[k];
+      const lubrication::FilmResult& film = side.film;
+      filmTimes[k] += side.filmTime_s;
+      contactTimes[k] += side.contactTime_s;
+      loadsTimes[k] += side.loadsTime_s;
       ++solves[k];
       fallbacks[k] += film.usedFallback ? 1 : 0;
       derivativeFailures[k] += film.derivativesFailed ? 1 : 0;
@@ -353,6 +357,10 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
       attemptSide(kAntiThrust);
     }
     filmSolves_ += solves[kThrust] + solves[kAntiThrust];
+    timings_.gap_s += gapTimes[kThrust] + gapTimes[kAntiThrust];
+    timings_.film_s += filmTimes[kThrust] + filmTimes[kAntiThrust];
+    timings_.contact_s += contactTimes[kThrust] + contactTimes[kAntiThrust];
+    timings_.loads_s += loadsTimes[kThrust] + loadsTimes[kAntiThrust];
     filmFallbacks_ += fallbacks[kThrust] + fallbacks[kAntiThrust];
     filmDerivativeFailures_ += derivativeFailures[kThrust] + derivativeFailures[kAntiThrust];
     for (const std::exception_ptr& error : errors)
@@ -363,15 +371,11 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
                                              common::wrapCrankAngle_deg(crankAngle_deg),
                                              " deg: ", e.what()));
   }
-  gapTime = gapTimes[kThrust] + gapTimes[kAntiThrust];
 
   for (int k : {kThrust, kAntiThrust}) {
     const auto& fill = k == kThrust ? fillThrust_ : fillAntiThrust_;
     const double dt = dts[k];
     const skirt::SkirtSideResults& out = workspace_->results[k];
-    timings_.film_s += out.filmTime_s;
-    timings_.contact_s += out.contactTime_s;
-    timings_.loads_s += out.loadsTime_s;
     if (massConserving) {
       // The history this step leads to, if accepted (a zero step keeps the history).
       const FillHistory& history = fill.getValue(s);
@@ -473,7 +477,6 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     next.peak_J = r.secondaryKineticEnergy_J;
   }
   slap_.setUpdateValue(s, next);
-  timings_.gap_s += gapTime;
   timings_.total_s += std::chrono::duration<double>(Clock::now() - start).count();
   ++timings_.evaluations;
 }

@@ -202,7 +202,9 @@ class LubricatedSkirtElement final : public LinerElement {
   std::optional<double> getLastSlapEnergy_J(const SimTK::State& s) const override;
   std::optional<double> getHotRunningClearance_m() const override;
   // Time spent in the element's phases since construction [s], both sides (diagnostics for
-  // benchmarks; the counters are mutable workspace and never affect results).
+  // benchmarks; the counters are mutable workspace and never affect results). gap, film,
+  // contact and loads include every film solve (each elastic-coupling iteration, and the
+  // evaluations that threw); total_s and evaluations count the evaluations that returned.
   struct Timings {
     double gap_s = 0.0, film_s = 0.0, contact_s = 0.0, loads_s = 0.0, total_s = 0.0;
     long evaluations = 0;

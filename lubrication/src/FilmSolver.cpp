@@ -211,6 +211,8 @@ struct FilmSolver::Impl {
   FilmProblem gapProblem;
   detail::FilmSystem gapSystem;
   Eigen::ArrayXd gapResidualPlus;
+  // d(balance_k)/d(h_l) for l in node k's five-point stencil (self, E, W, N, S): row k, slot s.
+  Eigen::Matrix<double, Eigen::Dynamic, 5> balanceGapJacobian;
   Eigen::MatrixXd squeezeDerivatives;
   detail::PostprocessWorkspace post;
   // Grid-sequenced cold start (ColdStartSequence.h): the coarser level, its own solver (which
@@ -223,6 +225,10 @@ struct FilmSolver::Impl {
   void initialiseIterate(const FilmProblem& pr, const FilmState* warm);
   // Column `col` of derivRhs: -d(balance)/d(u_g) at the solution for gap-basis column g.
   void calcGapRhs(const FilmGrid& grid, const FilmProblem& pr, Eigen::Index g, Eigen::Index col);
+  // balanceGapJacobian by five coloured one-sided perturbations of the gap (colour
+  // (i + 2 j) mod 5: the five nodes of every stencil differ in colour). False when the grid's
+  // periodic wrap breaks that (nx not a multiple of 5): the caller then takes calcGapRhs.
+  bool calcBalanceGapJacobian(const FilmGrid& grid, const FilmProblem& pr);
   void solve(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm, FilmResult& r);
 };
 
@@ -348,10 +354,22 @@ void FilmSolver::Impl::solve(const FilmGrid& grid, const FilmProblem& pr, const 
     for (Eigen::Index c = 0; c < m; ++c)
       for (int k = 0; k < sys.n; ++k)
         derivRhs(k, c) = -sys.theta[k] * area[k] * sys.dhTdh[k] * pr.squeezeBasis(k, c);
-    if (g > 0)
+    if (g > 0) {
       gapProblem = pr;  // once per call (same sizes after the first: no allocation)
-    for (Eigen::Index c = 0; c < g; ++c)
-      calcGapRhs(grid, pr, c, m + c);
+      if (calcBalanceGapJacobian(grid, pr)) {
+        const std::vector<int>* nbs[5] = {nullptr, &sys.nbE, &sys.nbW, &sys.nbN, &sys.nbS};
+        for (Eigen::Index c = 0; c < g; ++c)
+          for (int k = 0; k < sys.n; ++k) {
+            double d = balanceGapJacobian(k, 0) * pr.gapBasis(k, c);
+            for (int s = 1; s < 5; ++s)
+              d += balanceGapJacobian(k, s) * pr.gapBasis((*nbs[s])[k], c);
+            derivRhs(k, m + c) = -d;
+          }
+      } else {
+        for (Eigen::Index c = 0; c < g; ++c)
+          calcGapRhs(grid, pr, c, m + c);
+      }
+    }
     res.derivativesFailed = !fast.solveWithCurrentSet(sys, derivRhs, options.derivativeTolerance,
                                                       options.factoriseForManyDerivativeColumns);
     for (int k = 0; k < sys.n; ++k)
@@ -369,6 +387,41 @@ void FilmSolver::Impl::solve(const FilmGrid& grid, const FilmProblem& pr, const 
   res.multigridBuilds = fast.multigridBuilds() - mgBuilds0;
   detail::postprocess(grid, pr, sys, m > 0 ? (g > 0 ? &squeezeDerivatives : &derivRhs) : nullptr,
                       post, res);
+}
+
+bool FilmSolver::Impl::calcBalanceGapJacobian(const FilmGrid& grid, const FilmProblem& pr) {
+  const int nx = sys.nx, n = sys.n;
+  if (sys.periodicX && nx % 5 != 0)
+    return false;
+  const auto colour = [nx](int k) { return (k % nx + 2 * (k / nx)) % 5; };
+  const std::vector<int>* nbs[5] = {nullptr, &sys.nbE, &sys.nbW, &sys.nbN, &sys.nbS};
+  balanceGapJacobian.resize(n, 5);
+  balanceGapJacobian.setZero();
+  // Relative step per node: one-sided truncation ~1e-6 of the h^3 terms, round-off ~1e-10.
+  constexpr double kRelativeStep = 1e-6;
+  for (int c = 0; c < 5; ++c) {
+    for (int k = 0; k < n; ++k)
+      gapProblem.gap_m[k] = pr.gap_m[k] * (colour(k) == c ? 1.0 + kRelativeStep : 1.0);
+    gapSystem.assemble(grid, gapProblem);
+    for (int k = 0; k < n; ++k) {
+      const bool fixed = sys.status[k] == detail::kFixed;
+      gapSystem.p[k] = fixed ? gapSystem.fixedPressure[k] : sys.p[k];
+      gapSystem.theta[k] = fixed ? gapSystem.fixedTheta[k] : sys.theta[k];
+    }
+    for (int k = 0; k < n; ++k) {
+      if (sys.status[k] == detail::kFixed)
+        continue;
+      // Against the unperturbed balance at the same unknowns (sys: the converged solve).
+      const double change = gapSystem.residualAt(k) - sys.residualAt(k);
+      for (int s = 0; s < 5; ++s) {
+        const int l = s == 0 ? k : (*nbs[s])[k];
+        if ((s > 0 && l == k) || colour(l) != c)
+          continue;  // no neighbour there (a missing one is the node itself), or not this colour
+        balanceGapJacobian(k, s) = change / (kRelativeStep * pr.gap_m[l]);
+      }
+    }
+  }
+  return true;
 }
 
 void FilmSolver::Impl::calcGapRhs(const FilmGrid& grid, const FilmProblem& pr, Eigen::Index g,

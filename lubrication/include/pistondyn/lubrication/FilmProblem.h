@@ -148,11 +148,15 @@ struct FilmProblem {
   // history stay as given). The result then holds d(p)/d(u_g) on the final active set
   // (FilmResult::dPressure_dGap): the static pressure-gap sensitivity an elastic coupling's
   // Newton iteration needs. Its right-hand side is the derivative of the discrete balance in
-  // u_g by a central difference of two assemblies (step 1e-4 of the thinnest gap over the
-  // column's largest entry: a relative error ~1e-8 for the balance's h^3 terms); then one
-  // back-substitution per column, solved with the squeeze columns. A column that moves the
-  // classification of a fixed node (an inflow edge's fill fraction, a dry inlet node) within
-  // that step gets that node's one-sided jump, not a derivative.
+  // u_g: the balance's five-point gap Jacobian d R_k / d h_l from five one-sided assemblies,
+  // each perturbing the nodes of one colour (i + 2 j) mod 5 by 1e-6 of their gap (no two nodes
+  // of a stencil share a colour; a relative error ~2e-6 for the h^3 terms), whatever the
+  // number of columns; on a periodic grid whose nx is not a multiple of 5, two assemblies per
+  // column instead (central difference, step 1e-4 of the thinnest gap over the column's
+  // largest entry, ~1e-8). Then one back-substitution per column, solved with the squeeze
+  // columns. A fixed node whose classification or inflow content depends on a gap further
+  // than its stencil (an inflow edge) can be misattributed there: the derivative serves
+  // Newton iterations, not figures.
   Eigen::MatrixXd gapBasis;
 
   Eigen::Vector2d momentPoint_m = Eigen::Vector2d::Zero();  // (x0, y0) for moments, [m]

@@ -475,6 +475,7 @@ void readElasticSkirt(DeckSection& liner, plugin::LubricatedSkirtParameters& p,
        {"modal", skirt::ElasticCouplingScheme::Modal}});
   el.coupling.modes = static_cast<int>(e.getInteger(skirtKey("liner.elastic_skirt.modes")));
   el.squeezeRate = e.getBool(skirtKey("liner.elastic_skirt.squeeze_rate"));
+  el.exactStaticDerivative = e.getBool(skirtKey("liner.elastic_skirt.exact_static_derivative"));
   gasDeformation = e.getBool(skirtKey("liner.elastic_skirt.gas_deformation"));
   const auto matrix = e.getOptionalFilePath("compliance_file");
   const auto nodes = e.getOptionalFilePath("nodes_file");

@@ -271,6 +271,11 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
               .byDefault(1.0)
               .means("the film's squeeze term includes the elastic deformation's rate "
                      "(backward Euler over the step; mass-conserving film only)"),
+          K::onOff("liner.elastic_skirt.exact_static_derivative")
+              .byDefault(1.0)
+              .means("scheme modal: the film's exact pressure-gap derivative of each mode "
+                     "shape in the Newton Jacobian (one assembly pair and back-substitution "
+                     "per mode); off: the local estimate 3p/h"),
           K::numberList("liner.field_dumps.crank_angles_deg", Q::Angle)
               .byDefault("none")
               .within(Bounds{0.0, 720.0, false, true})

@@ -63,6 +63,7 @@ struct LubricatedSkirtElement::Workspace {
   std::array<std::unique_ptr<skirt::ElasticCoupling>, 2> elastic;
   std::array<skirt::ElasticCouplingReport, 2> elasticReports;
   std::array<Eigen::MatrixXd, 2> modalRateBasis;  // -Psi / dt per side (modal scheme)
+  std::array<Eigen::MatrixXd, 2> modalGapBasis;   // -Psi per side (exact static derivative)
   std::array<Eigen::VectorXd, 2> elasticStart;     // the coupling's start per side
   std::unique_ptr<detail::ForkJoinWorker> worker;  // parallelSides: the anti-thrust side
 };
@@ -283,6 +284,18 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     } else {
       inputs[k].extraSqueezeBasis = nullptr;
     }
+    // Modal scheme, exact static part: the film's pressure derivative for the gap shapes
+    // d h_el / d w_j = -Psi_j (constant: the shapes are the coupling's).
+    const bool modalGap = scheme == skirt::ElasticCouplingScheme::Modal &&
+                          parameters_.elasticSkirt.exactStaticDerivative;
+    if (modalGap) {
+      Eigen::MatrixXd& gapBasis = workspace_->modalGapBasis[k];
+      if (gapBasis.cols() != coupling->modeCount())
+        gapBasis = -coupling->modalShapes();
+      inputs[k].extraGapBasis = &gapBasis;
+    } else {
+      inputs[k].extraGapBasis = nullptr;
+    }
     // The coupling's last film evaluation is the one of its returned deformation, so the
     // results left in the workspace belong to the converged gap.
     const skirt::ElasticCouplingReport report = coupling->solve(
@@ -301,9 +314,16 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
             const Eigen::Map<const Eigen::ArrayXd> pc(res.contact.pressure_Pa.data(), n);
             const Eigen::Map<const Eigen::ArrayXd> slope(res.contact.dPressure_dGap_PaPerM.data(),
                                                          n);
-            skirt::localPressureStiffness(res.normalPressure_Pa, pc, res.filmGap_m, slope,
-                                          workspace_->lubrication[k]->getCompositeSigma_m(),
-                                          out.pressureStiffness_Pa_per_m);
+            if (modalGap) {
+              // The film's part is exact (below); the asperities' own slope is what it lacks.
+              out.pressureStiffness_Pa_per_m = (-slope).max(0.0);
+              out.pressureGapSensitivity_Pa_per_m = res.film.dPressure_dGap;
+            } else {
+              skirt::localPressureStiffness(res.normalPressure_Pa, pc, res.filmGap_m, slope,
+                                            workspace_->lubrication[k]->getCompositeSigma_m(),
+                                            out.pressureStiffness_Pa_per_m);
+              out.pressureGapSensitivity_Pa_per_m.resize(0, 0);
+            }
             if (modalRate) {
               out.pressureRateSensitivity_Pa_per_m =
                   res.film.dPressure_dVelocity.rightCols(modalBasis.cols());

@@ -120,10 +120,23 @@ ElasticCouplingReport ElasticCoupling::solveModal(const FilmPressureFunction& fi
       detail::requireFiniteEntries(kWhere, "film evaluation pressureRateSensitivity_Pa_per_m",
                                    rate, "Pa/m");
     }
+    const Eigen::MatrixXd& gap = film_.pressureGapSensitivity_Pa_per_m;
+    const bool withGap = gap.size() > 0;
+    if (withGap) {
+      if (gap.rows() != nf || gap.cols() != m)
+        detail::fail(kWhere, "the film evaluation's pressureGapSensitivity_Pa_per_m is " +
+                                 std::to_string(gap.rows()) + " x " + std::to_string(gap.cols()) +
+                                 ", expected " + std::to_string(nf) + " x " + std::to_string(m) +
+                                 " (film nodes x modes) or empty");
+      detail::requireFiniteEntries(kWhere, "film evaluation pressureGapSensitivity_Pa_per_m", gap,
+                                   "Pa/m");
+    }
     for (int j = 0; j < m; ++j) {
       filmColumn_ = (k.max(0.0) * modalShapes_.col(j).array()).matrix();
       if (withRate)
         filmColumn_ += rate.col(j);
+      if (withGap)
+        filmColumn_ += gap.col(j);
       // M (dp/dw_j) = -df/dw_j (the balance figures are not needed here).
       [[maybe_unused]] const mapping::LoadBalance b =
           forceMap_.apply(filmColumn_, modalForce_N_.col(j));

@@ -77,6 +77,13 @@ void validateInputs(const GapFields& gap, const SkirtSideInputs& in, const Skirt
     requireFiniteEntries(*in.extraSqueezeBasis, in.extraSqueezeBasis->cols(),
                          "inputs.extraSqueezeBasis", side);
   }
+  if (in.extraGapBasis) {
+    if (in.extraGapBasis->rows() != n)
+      badInput("inputs.extraGapBasis has ", in.extraGapBasis->rows(), " rows, expected ",
+               n, " (nodes of the ", sideName(side), " side)");
+    requireFiniteEntries(*in.extraGapBasis, in.extraGapBasis->cols(),
+                         "inputs.extraGapBasis", side);
+  }
   common::requirePositiveFinite(in.viscosity_Pas, kSolve, "inputs.viscosity_Pas", "Pa s");
   common::requireFinite(in.slidingVelocityAxial_mps, kSolve, "inputs.slidingVelocityAxial_mps",
                         "m/s");
@@ -307,6 +314,14 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   for (Eigen::Index c = 0; c < extra; ++c)
     p.squeezeBasis.col(in.squeezeColumns + c) =
         (in.extraSqueezeBasis->col(c).array() * m.clampSlope).matrix();
+  if (in.extraGapBasis) {
+    const Eigen::MatrixXd& b = *in.extraGapBasis;
+    p.gapBasis.resize(n, b.cols());
+    for (Eigen::Index c = 0; c < b.cols(); ++c)
+      p.gapBasis.col(c) = (b.col(c).array() * m.clampSlope).matrix();
+  } else if (p.gapBasis.size() > 0) {
+    p.gapBasis.resize(0, 0);
+  }
   p.slidingVelocity_mps =
       Eigen::Vector2d(in.slidingVelocityCircumferential_mps, in.slidingVelocityAxial_mps);
   p.viscosity_Pas = in.viscosity_Pas;

@@ -106,6 +106,11 @@ struct ElasticSkirtParameters {
   // Default on, as the deck's liner.elastic_skirt.squeeze_rate: the modal scheme needs the
   // rate's exact squeeze derivatives to carry a cycle.
   bool squeezeRate = true;
+  // Modal scheme: the film's exact static pressure-gap derivative of each mode shape
+  // (lubrication::FilmProblem::gapBasis) in the coupling's Jacobian instead of the local
+  // estimate 3p/h (skirt::localPressureStiffness); the asperities keep their own slope.
+  // Default on, as the deck's liner.elastic_skirt.exact_static_derivative.
+  bool exactStaticDerivative = true;
 };
 
 struct LubricatedSkirtParameters {

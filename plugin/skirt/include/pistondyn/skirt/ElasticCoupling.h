@@ -75,7 +75,11 @@
 // S_j the film's EXACT pressure derivative through the elastic gap rate (the caller's
 // pressureRateSensitivity_Pa_per_m: one squeeze-derivative column per mode on the film's
 // converged active set, i.e. the generalised derivative of a piecewise-linear response), k
-// the local stiffness (localPressureStiffness) for the static part; backtracking (1, 1/4,
+// the local stiffness (localPressureStiffness) for the static part, or, when the caller gives
+// it (FilmPressureEvaluation::pressureGapSensitivity_Pa_per_m), the film's exact static
+// derivative of the shapes on its active set plus the asperities' own slope (the element's
+// default since 2026-12-04: with the estimate the Newton steps stalled in whole cycles,
+// plugin/README.md); backtracking (1, 1/4,
 // ..., 1/4^5) on |r|. Why: where the previous two schemes stall (a thin, starved, mass-conserving
 // film on the soft FE skirt, plugin/README.md), the film's response to the deformation is
 // dominated by its squeeze term once the rate is implicit over a short step (S ~ c/dt), and
@@ -168,6 +172,12 @@ struct FilmPressureEvaluation {
   // for a backward-Euler rate over a step dt; Psi = modalShapes()). Empty: a quasi-static rate
   // (the Jacobian then holds the local stiffness only).
   Eigen::MatrixXd pressureRateSensitivity_Pa_per_m;
+  // Modal only, optional: column j = d p_film / d w_j through the elastic gap itself [Pa/m]
+  // (nodeCount x modeCount(), finite): the film's exact static derivative for the gap shape
+  // d h_el / d w_j = -Psi_j (lubrication::FilmProblem::gapBasis). When given, it replaces the
+  // film part of the local stiffness in the Jacobian, and pressureStiffness_Pa_per_m must then
+  // hold only what it lacks (the asperities' -dp_c/dh). Empty: the local estimate.
+  Eigen::MatrixXd pressureGapSensitivity_Pa_per_m;
 };
 
 // The local estimate of -dp/dh the Newton scheme's preconditioner uses [Pa/m], per film node:

@@ -110,6 +110,11 @@ struct SkirtSideInputs {
   // pressure derivatives in film.dPressure_dVelocity after the squeezeColumns pose columns.
   // They enter no load derivative (dLoads_dPoseRate stays the pose's).
   const Eigen::MatrixXd* extraSqueezeBasis = nullptr;
+  // Optional gap-basis columns (nodeCount rows, finite; nullptr = none): d(nominal gap)/d(u_g)
+  // per node, e.g. the elastic skirt's modal shapes (-Psi_j). The film returns dp/du_g on its
+  // final active set in film.dPressure_dGap (lubrication::FilmProblem::gapBasis; the film-gap
+  // clamp's slope applied here).
+  const Eigen::MatrixXd* extraGapBasis = nullptr;
   // Mass-conserving model only: fill fraction at the start of the step (nodeCount entries;
   // empty = full film) and the step [s] (> 0; +inf or <= 0 = steady state; NaN is rejected).
   const Eigen::ArrayXd* previousFillFraction = nullptr;

@@ -51,7 +51,22 @@ void FilmSystem::resizeFor(const FilmGrid& grid) {
   fillFromInterior.assign(n, 0);
 }
 
+void FilmSystem::calcNodeFactors(const FilmProblem& pr, const Eigen::ArrayXd& gap_m,
+                                 std::vector<NodeFlowFactors>& out) const {
+  const SmoothFlowFactors smooth;
+  const FlowFactorModel& ffm = pr.flowFactors ? *pr.flowFactors : smooth;
+  out.resize(static_cast<std::size_t>(gap_m.size()));
+  for (Eigen::Index k = 0; k < gap_m.size(); ++k)
+    out[static_cast<std::size_t>(k)] = ffm.calcFactors(gap_m[k]);
+}
+
 void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
+  resizeFor(grid);
+  calcNodeFactors(pr, pr.gap_m, nodeFactors);
+  assembleFromNodeFactors(grid, pr);
+}
+
+void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem& pr) {
   resizeFor(grid);
   model = pr.cavitation;
   jfo = model == CavitationModel::MassConserving;
@@ -62,8 +77,6 @@ void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
   const bool slideY = std::abs(Uy) >= std::abs(Ux);
   const bool perNodeEta = pr.viscosityPerNode_Pas.size() > 0;
   const bool hasRate = pr.gapRate_mps.size() > 0;
-  const SmoothFlowFactors smooth;
-  const FlowFactorModel& ffm = pr.flowFactors ? *pr.flowFactors : smooth;
   const Eigen::ArrayXd& area = grid.areaWeights_m2();
   const Eigen::VectorXd& wx = grid.xWeights_m();
   const Eigen::VectorXd& wy = grid.yWeights_m();
@@ -76,7 +89,7 @@ void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
   Eigen::ArrayXd& Cy = src;
   for (int k = 0; k < n; ++k) {
     const double h = pr.gap_m[k];
-    const NodeFlowFactors f = ffm.calcFactors(h);
+    const NodeFlowFactors& f = nodeFactors[static_cast<std::size_t>(k)];
     const double mu = perNodeEta ? pr.viscosityPerNode_Pas[k] : pr.viscosity_Pas;
     const double base = h * h * h / (12.0 * mu);
     const double phiSlide = f.phiPressureSliding, phiCross = f.phiPressureCross;

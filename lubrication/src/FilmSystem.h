@@ -9,6 +9,7 @@
 
 #include "pistondyn/lubrication/FilmGrid.h"
 #include "pistondyn/lubrication/FilmProblem.h"
+#include "pistondyn/lubrication/FlowFactorModel.h"
 
 namespace pistondyn::lubrication::detail {
 
@@ -67,7 +68,16 @@ struct FilmSystem {
   void resizeFor(const FilmGrid& grid);  // allocates only when the shape changes
 
   // Assembles all coefficients for the problem; classifies fixed nodes. Validated input only.
+  // = calcNodeFactors at the problem's gap, then assembleFromNodeFactors.
   void assemble(const FilmGrid& grid, const FilmProblem& problem);
+  // The flow-factor model's factors at each node's gap (the expensive, purely nodal part of
+  // an assembly) into `out` (resized to n: no allocation after the first call).
+  void calcNodeFactors(const FilmProblem& problem, const Eigen::ArrayXd& gap_m,
+                       std::vector<NodeFlowFactors>& out) const;
+  // The rest of assemble from nodeFactors (which must belong to problem.gap_m): lets a caller
+  // swap in the factors of some nodes without re-evaluating all of them.
+  void assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem& problem);
+  std::vector<NodeFlowFactors> nodeFactors;  // of the last assembly
 
   // Five-point Poiseuille product at node k: net Poiseuille outflow of the nodal field x.
   double poiseuilleAt(int k, const double* x) const {

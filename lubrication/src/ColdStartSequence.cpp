@@ -109,6 +109,7 @@ void injectProblem(const FilmProblem& pr, CoarseLevel& l, int nx) {
   l.problem.previousExpectedGap2_m = inject(pr.previousExpectedGap2_m, l, nx);
   l.problem.squeezeBasis.resize(0, 0);  // the start needs no derivatives
   l.problem.gapBasis.resize(0, 0);
+  l.problem.gapRateBasis.resize(0, 0);
   for (FilmEdge* e : {&l.problem.boundary.yMin, &l.problem.boundary.yMax})
     e->supplyFilmPerNode_m = injectEdge(e->supplyFilmPerNode_m, l.xCoarse);
   for (FilmEdge* e : {&l.problem.boundary.xMin, &l.problem.boundary.xMax})

@@ -150,6 +150,13 @@ void validate(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm
     if (!pr.gapBasis.allFinite())
       fail("problem.gapBasis must be finite");
   }
+  if (pr.gapRateBasis.size() > 0) {
+    if (pr.gapRateBasis.rows() != n || pr.gapRateBasis.cols() != pr.gapBasis.cols())
+      fail("problem.gapRateBasis is ", pr.gapRateBasis.rows(), " x ", pr.gapRateBasis.cols(),
+           ", expected ", n, " x ", pr.gapBasis.cols(), " (nodes x gap-basis columns) or empty");
+    if (!pr.gapRateBasis.allFinite())
+      fail("problem.gapRateBasis must be finite");
+  }
   if (!pr.momentPoint_m.allFinite())
     fail("problem.momentPoint_m must be finite");
   if (!std::isfinite(pr.referencePressure_Pa))
@@ -370,6 +377,11 @@ void FilmSolver::Impl::solve(const FilmGrid& grid, const FilmProblem& pr, const 
         for (Eigen::Index c = 0; c < g; ++c)
           calcGapRhs(grid, pr, c, m + c);
       }
+      // A coordinate that also moves the gap rate: its squeeze part in the same column.
+      if (pr.gapRateBasis.cols() > 0)
+        for (Eigen::Index c = 0; c < g; ++c)
+          for (int k = 0; k < sys.n; ++k)
+            derivRhs(k, m + c) -= sys.theta[k] * area[k] * sys.dhTdh[k] * pr.gapRateBasis(k, c);
     }
     res.derivativesFailed = !fast.solveWithCurrentSet(sys, derivRhs, options.derivativeTolerance,
                                                       options.factoriseForManyDerivativeColumns);

@@ -277,17 +277,17 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     // through the backward-Euler rate, d(dh_el/dt)/dw_j = -Psi_j / dt.
     const skirt::ElasticCouplingScheme scheme = coupling->getParameters().scheme;
     const bool modalRate = scheme == skirt::ElasticCouplingScheme::Modal && elasticRate;
-    Eigen::MatrixXd& modalBasis = workspace_->modalRateBasis[k];
-    if (modalRate) {
-      modalBasis = (-1.0 / dt) * coupling->modalShapes();
-      inputs[k].extraSqueezeBasis = &modalBasis;
-    } else {
-      inputs[k].extraSqueezeBasis = nullptr;
-    }
     // Modal scheme, exact static part: the film's pressure derivative for the gap shapes
-    // d h_el / d w_j = -Psi_j (constant: the shapes are the coupling's).
+    // d h_el / d w_j = -Psi_j (constant: the shapes are the coupling's); with the rate, the
+    // same columns carry its squeeze part too (gap-rate basis -Psi_j / dt), so the film
+    // returns the total dp/dw_j in one back-substitution per mode.
     const bool modalGap = scheme == skirt::ElasticCouplingScheme::Modal &&
                           parameters_.elasticSkirt.exactStaticDerivative;
+    Eigen::MatrixXd& modalBasis = workspace_->modalRateBasis[k];
+    if (modalRate)
+      modalBasis = (-1.0 / dt) * coupling->modalShapes();
+    inputs[k].extraSqueezeBasis = modalRate && !modalGap ? &modalBasis : nullptr;
+    inputs[k].extraGapRateBasis = modalRate && modalGap ? &modalBasis : nullptr;
     if (modalGap) {
       Eigen::MatrixXd& gapBasis = workspace_->modalGapBasis[k];
       if (gapBasis.cols() != coupling->modeCount())
@@ -315,7 +315,8 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
             const Eigen::Map<const Eigen::ArrayXd> slope(res.contact.dPressure_dGap_PaPerM.data(),
                                                          n);
             if (modalGap) {
-              // The film's part is exact (below); the asperities' own slope is what it lacks.
+              // The film's part is exact (below; with the rate's squeeze part when modalRate);
+              // the asperities' own slope is what it lacks.
               out.pressureStiffness_Pa_per_m = (-slope).max(0.0);
               out.pressureGapSensitivity_Pa_per_m = res.film.dPressure_dGap;
             } else {
@@ -324,7 +325,7 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
                                             out.pressureStiffness_Pa_per_m);
               out.pressureGapSensitivity_Pa_per_m.resize(0, 0);
             }
-            if (modalRate) {
+            if (modalRate && !modalGap) {
               out.pressureRateSensitivity_Pa_per_m =
                   res.film.dPressure_dVelocity.rightCols(modalBasis.cols());
             } else if (scheme == skirt::ElasticCouplingScheme::Modal) {

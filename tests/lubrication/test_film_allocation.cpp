@@ -21,8 +21,10 @@ long allocationsOfWarmCalls(FilmSolverOptions options, CavitationModel model,
   pr.timeStep_s = 1e-4;
   pr.previousFillFraction.setOnes(g.nodeCount());
   pr.squeezeBasis = sp.squeezeBasis(g);
-  if (gapColumns)  // the elastic skirt's static columns (FilmProblem::gapBasis)
+  if (gapColumns) {  // the elastic skirt's columns (FilmProblem::gapBasis, gapRateBasis)
     pr.gapBasis = Eigen::MatrixXd::Ones(g.nodeCount(), 3);
+    pr.gapRateBasis = pr.gapBasis / pr.timeStep_s;
+  }
   options.tolerance = 1e-8;
   FilmSolver solver(options);
   FilmResult r;

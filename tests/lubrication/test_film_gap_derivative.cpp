@@ -144,6 +144,52 @@ TEST(FilmGapDerivative, MatchesCompleteSolvesMassConserving) {
   checkAgainstCompleteSolves(CavitationModel::MassConserving, "jfo");
 }
 
+// A coordinate that moves the gap and, backward Euler over a step dt, its rate
+// (FilmProblem::gapRateBasis = gapBasis / dt): the derivative is that of complete solves with
+// both moved, gap by step * b and rate by step * b / dt (mass-conserving skirt patch, all
+// three shapes, dt = 1e-4 s so that both parts count).
+TEST(FilmGapDerivative, WithTheRateMatchesCompleteSolves) {
+  const test::SkirtPatch sp;
+  const test::GaussianRoughFactors rough(0.8e-6);
+  const FilmGrid g = sp.grid(36, 28);
+  FilmProblem pr = sp.problem(g, CavitationModel::MassConserving);
+  pr.flowFactors = &rough;
+  pr.timeStep_s = 1e-4;
+  pr.previousFillFraction.setOnes(g.nodeCount());
+  const double dt_s = 1e-4;
+  pr.gapBasis = gapShapes(sp, g);
+  pr.gapRateBasis = pr.gapBasis / dt_s;
+  FilmSolver solver(test::tightOptions(FilmSolverType::FastActiveSet, 1e-12));
+  const FilmResult base = solver.solve(g, pr);
+  ASSERT_TRUE(base.converged);
+  ASSERT_GT(base.cavitatedNodes, 0);
+  ASSERT_EQ(base.dPressure_dGap.cols(), 3);
+  for (int c = 0; c < 3; ++c) {
+    const double step = 1e-5 * pr.gap_m.minCoeff() / pr.gapBasis.col(c).cwiseAbs().maxCoeff();
+    FilmProblem plus = pr, minus = pr;
+    for (FilmProblem* q : {&plus, &minus}) {
+      q->gapBasis.resize(0, 0);
+      q->gapRateBasis.resize(0, 0);
+    }
+    plus.gap_m += step * pr.gapBasis.col(c).array();
+    minus.gap_m -= step * pr.gapBasis.col(c).array();
+    plus.gapRate_mps += step * pr.gapRateBasis.col(c).array();
+    minus.gapRate_mps -= step * pr.gapRateBasis.col(c).array();
+    FilmSolver sp1(test::tightOptions(FilmSolverType::FastActiveSet, 1e-12));
+    FilmSolver sm1(test::tightOptions(FilmSolverType::FastActiveSet, 1e-12));
+    const FilmResult rp = sp1.solve(g, plus, &base.state);
+    const FilmResult rm = sm1.solve(g, minus, &base.state);
+    ASSERT_TRUE(rp.converged && rm.converged);
+    ASSERT_EQ(rp.state.cavitated, base.state.cavitated) << "step changed the set";
+    ASSERT_EQ(rm.state.cavitated, base.state.cavitated) << "step changed the set";
+    const Eigen::ArrayXd fd = (rp.pressure_Pa() - rm.pressure_Pa()) / (2.0 * step);
+    const double size = base.dPressure_dGap.col(c).cwiseAbs().maxCoeff();
+    const double err = (fd - base.dPressure_dGap.col(c).array()).abs().maxCoeff() / size;
+    test::reportFigure("gapDerivative.withRate." + std::to_string(c), err);
+    EXPECT_LT(err, 1e-5) << "column " << c;
+  }
+}
+
 TEST(FilmGapDerivative, BadBasisNamesTheMember) {
   const test::SkirtPatch sp;
   const FilmGrid g = sp.grid(12, 10);
@@ -159,6 +205,14 @@ TEST(FilmGapDerivative, BadBasisNamesTheMember) {
   pr.gapBasis = Eigen::MatrixXd::Zero(g.nodeCount(), 1);
   pr.gapBasis(3, 0) = std::nan("");
   EXPECT_THROW((void)solver.solve(g, pr), std::invalid_argument);
+  pr.gapBasis(3, 0) = 0.0;
+  pr.gapRateBasis = Eigen::MatrixXd::Zero(g.nodeCount(), 2);  // columns differ
+  try {
+    (void)solver.solve(g, pr);
+    FAIL() << "a gap-rate basis with other columns was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("problem.gapRateBasis"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

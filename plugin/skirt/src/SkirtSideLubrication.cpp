@@ -84,6 +84,14 @@ void validateInputs(const GapFields& gap, const SkirtSideInputs& in, const Skirt
     requireFiniteEntries(*in.extraGapBasis, in.extraGapBasis->cols(),
                          "inputs.extraGapBasis", side);
   }
+  if (in.extraGapRateBasis) {
+    if (!in.extraGapBasis || in.extraGapRateBasis->rows() != n ||
+        in.extraGapRateBasis->cols() != in.extraGapBasis->cols())
+      badInput("inputs.extraGapRateBasis needs inputs.extraGapBasis and its shape (", n,
+               " rows, the gap basis' columns; ", sideName(side), " side)");
+    requireFiniteEntries(*in.extraGapRateBasis, in.extraGapRateBasis->cols(),
+                         "inputs.extraGapRateBasis", side);
+  }
   common::requirePositiveFinite(in.viscosity_Pas, kSolve, "inputs.viscosity_Pas", "Pa s");
   common::requireFinite(in.slidingVelocityAxial_mps, kSolve, "inputs.slidingVelocityAxial_mps",
                         "m/s");
@@ -321,6 +329,14 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
       p.gapBasis.col(c) = (b.col(c).array() * m.clampSlope).matrix();
   } else if (p.gapBasis.size() > 0) {
     p.gapBasis.resize(0, 0);
+  }
+  if (in.extraGapRateBasis) {
+    const Eigen::MatrixXd& r = *in.extraGapRateBasis;
+    p.gapRateBasis.resize(n, r.cols());
+    for (Eigen::Index c = 0; c < r.cols(); ++c)
+      p.gapRateBasis.col(c) = (r.col(c).array() * m.clampSlope).matrix();
+  } else if (p.gapRateBasis.size() > 0) {
+    p.gapRateBasis.resize(0, 0);
   }
   p.slidingVelocity_mps =
       Eigen::Vector2d(in.slidingVelocityCircumferential_mps, in.slidingVelocityAxial_mps);

@@ -158,6 +158,11 @@ struct FilmProblem {
   // than its stencil (an inflow edge) can be misattributed there: the derivative serves
   // Newton iterations, not figures.
   Eigen::MatrixXd gapBasis;
+  // Optional, with gapBasis (same columns; empty = none): column g also moves the gap RATE by
+  // gapRateBasis(:, g) per unit u_g [m/s per unit u_g], e.g. an elastic deformation whose rate
+  // is backward Euler over the step (-Psi / dt). dPressure_dGap is then the total derivative,
+  // static and squeeze parts in one back-substitution (instead of a squeeze column more).
+  Eigen::MatrixXd gapRateBasis;
 
   Eigen::Vector2d momentPoint_m = Eigen::Vector2d::Zero();  // (x0, y0) for moments, [m]
   double referencePressure_Pa = 0.0;  // subtracted from p in load and moments, [Pa]

@@ -176,7 +176,9 @@ struct FilmPressureEvaluation {
   // (nodeCount x modeCount(), finite): the film's exact static derivative for the gap shape
   // d h_el / d w_j = -Psi_j (lubrication::FilmProblem::gapBasis). When given, it replaces the
   // film part of the local stiffness in the Jacobian, and pressureStiffness_Pa_per_m must then
-  // hold only what it lacks (the asperities' -dp_c/dh). Empty: the local estimate.
+  // hold only what it lacks (the asperities' -dp_c/dh). Empty: the local estimate. The
+  // Jacobian adds it to pressureRateSensitivity_Pa_per_m, so a caller may put the rate's part
+  // in here instead (FilmProblem::gapRateBasis) and leave that one empty.
   Eigen::MatrixXd pressureGapSensitivity_Pa_per_m;
 };
 

@@ -115,6 +115,10 @@ struct SkirtSideInputs {
   // final active set in film.dPressure_dGap (lubrication::FilmProblem::gapBasis; the film-gap
   // clamp's slope applied here).
   const Eigen::MatrixXd* extraGapBasis = nullptr;
+  // Optional, with extraGapBasis (same shape): each column also moves the gap rate by this
+  // much per unit (FilmProblem::gapRateBasis), e.g. -Psi_j / dt for a backward-Euler elastic
+  // rate: film.dPressure_dGap is then the total derivative, static and squeeze parts.
+  const Eigen::MatrixXd* extraGapRateBasis = nullptr;
   // Mass-conserving model only: fill fraction at the start of the step (nodeCount entries;
   // empty = full film) and the step [s] (> 0; +inf or <= 0 = steady state; NaN is rejected).
   const Eigen::ArrayXd* previousFillFraction = nullptr;

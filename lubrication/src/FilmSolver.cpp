@@ -231,12 +231,23 @@ struct FilmSolver::Impl {
   FilmState sequencedStart;
 
   void initialiseIterate(const FilmProblem& pr, const FilmState* warm);
-  // Column `col` of derivRhs: -d(balance)/d(u_g) at the solution for gap-basis column g.
+  // Columns first .. first + G - 1 of derivRhs: -d(balance)/d(u_g) at the solution for each
+  // gap-basis column g, plus its squeeze part when pr has a gap-rate basis.
+  void calcGapColumns(const FilmGrid& grid, const FilmProblem& pr, Eigen::Index first);
+  // Column `col` of derivRhs for gap-basis column g by a central difference of two assemblies.
   void calcGapRhs(const FilmGrid& grid, const FilmProblem& pr, Eigen::Index g, Eigen::Index col);
   // balanceGapJacobian by five coloured one-sided perturbations of the gap (colour
   // (i + 2 j) mod 5: the five nodes of every stencil differ in colour). False when the grid's
   // periodic wrap breaks that (nx not a multiple of 5): the caller then takes calcGapRhs.
   bool calcBalanceGapJacobian(const FilmGrid& grid, const FilmProblem& pr);
+  // The converged unknowns of sys into gapSystem (just assembled for a perturbed gap); its
+  // fixed nodes keep their own values (an inflow edge's fill fraction depends on the gap).
+  void loadSolutionIntoGapSystem();
+  // -d(balance_k)/d(gap rate) per unit of basis column c: the squeeze term's coefficient.
+  double squeezeRhs(const Eigen::MatrixXd& basis, int k, Eigen::Index c,
+                    const Eigen::ArrayXd& area) const {
+    return -sys.theta[k] * area[k] * sys.dhTdh[k] * basis(k, c);
+  }
   void solve(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm, FilmResult& r);
 };
 
@@ -361,28 +372,9 @@ void FilmSolver::Impl::solve(const FilmGrid& grid, const FilmProblem& pr, const 
     const Eigen::ArrayXd& area = grid.areaWeights_m2();
     for (Eigen::Index c = 0; c < m; ++c)
       for (int k = 0; k < sys.n; ++k)
-        derivRhs(k, c) = -sys.theta[k] * area[k] * sys.dhTdh[k] * pr.squeezeBasis(k, c);
-    if (g > 0) {
-      gapProblem = pr;  // once per call (same sizes after the first: no allocation)
-      if (calcBalanceGapJacobian(grid, pr)) {
-        const std::vector<int>* nbs[5] = {nullptr, &sys.nbE, &sys.nbW, &sys.nbN, &sys.nbS};
-        for (Eigen::Index c = 0; c < g; ++c)
-          for (int k = 0; k < sys.n; ++k) {
-            double d = balanceGapJacobian(k, 0) * pr.gapBasis(k, c);
-            for (int s = 1; s < 5; ++s)
-              d += balanceGapJacobian(k, s) * pr.gapBasis((*nbs[s])[k], c);
-            derivRhs(k, m + c) = -d;
-          }
-      } else {
-        for (Eigen::Index c = 0; c < g; ++c)
-          calcGapRhs(grid, pr, c, m + c);
-      }
-      // A coordinate that also moves the gap rate: its squeeze part in the same column.
-      if (pr.gapRateBasis.cols() > 0)
-        for (Eigen::Index c = 0; c < g; ++c)
-          for (int k = 0; k < sys.n; ++k)
-            derivRhs(k, m + c) -= sys.theta[k] * area[k] * sys.dhTdh[k] * pr.gapRateBasis(k, c);
-    }
+        derivRhs(k, c) = squeezeRhs(pr.squeezeBasis, k, c, area);
+    if (g > 0)
+      calcGapColumns(grid, pr, m);
     res.derivativesFailed = !fast.solveWithCurrentSet(sys, derivRhs, options.derivativeTolerance,
                                                       options.factoriseForManyDerivativeColumns);
     for (int k = 0; k < sys.n; ++k)
@@ -402,12 +394,45 @@ void FilmSolver::Impl::solve(const FilmGrid& grid, const FilmProblem& pr, const 
                       post, res);
 }
 
+void FilmSolver::Impl::calcGapColumns(const FilmGrid& grid, const FilmProblem& pr,
+                                      Eigen::Index first) {
+  const Eigen::Index g = pr.gapBasis.cols();
+  gapProblem = pr;  // once per call (same sizes after the first: no allocation)
+  if (calcBalanceGapJacobian(grid, pr)) {
+    for (Eigen::Index c = 0; c < g; ++c)
+      for (int k = 0; k < sys.n; ++k) {
+        const int stencil[5] = {k, sys.nbE[k], sys.nbW[k], sys.nbN[k], sys.nbS[k]};
+        double d = 0.0;
+        for (int s = 0; s < 5; ++s)
+          d += balanceGapJacobian(k, s) * pr.gapBasis(stencil[s], c);
+        derivRhs(k, first + c) = -d;
+      }
+  } else {
+    for (Eigen::Index c = 0; c < g; ++c)
+      calcGapRhs(grid, pr, c, first + c);
+  }
+  // A coordinate that also moves the gap rate: its squeeze part in the same column.
+  if (pr.gapRateBasis.cols() > 0) {
+    const Eigen::ArrayXd& area = grid.areaWeights_m2();
+    for (Eigen::Index c = 0; c < g; ++c)
+      for (int k = 0; k < sys.n; ++k)
+        derivRhs(k, first + c) += squeezeRhs(pr.gapRateBasis, k, c, area);
+  }
+}
+
+void FilmSolver::Impl::loadSolutionIntoGapSystem() {
+  for (int k = 0; k < sys.n; ++k) {
+    const bool fixed = sys.status[k] == detail::kFixed;
+    gapSystem.p[k] = fixed ? gapSystem.fixedPressure[k] : sys.p[k];
+    gapSystem.theta[k] = fixed ? gapSystem.fixedTheta[k] : sys.theta[k];
+  }
+}
+
 bool FilmSolver::Impl::calcBalanceGapJacobian(const FilmGrid& grid, const FilmProblem& pr) {
   const int nx = sys.nx, n = sys.n;
   if (sys.periodicX && nx % 5 != 0)
     return false;
   const auto colour = [nx](int k) { return (k % nx + 2 * (k / nx)) % 5; };
-  const std::vector<int>* nbs[5] = {nullptr, &sys.nbE, &sys.nbW, &sys.nbN, &sys.nbS};
   balanceGapJacobian.resize(n, 5);
   balanceGapJacobian.setZero();
   // Relative step per node: one-sided truncation ~1e-6 of the h^3 terms, round-off ~1e-10.
@@ -425,18 +450,15 @@ bool FilmSolver::Impl::calcBalanceGapJacobian(const FilmGrid& grid, const FilmPr
       gapSystem.nodeFactors[uk] = moved ? perturbedFactors[uk] : sys.nodeFactors[uk];
     }
     gapSystem.assembleFromNodeFactors(grid, gapProblem);
-    for (int k = 0; k < n; ++k) {
-      const bool fixed = sys.status[k] == detail::kFixed;
-      gapSystem.p[k] = fixed ? gapSystem.fixedPressure[k] : sys.p[k];
-      gapSystem.theta[k] = fixed ? gapSystem.fixedTheta[k] : sys.theta[k];
-    }
+    loadSolutionIntoGapSystem();
     for (int k = 0; k < n; ++k) {
       if (sys.status[k] == detail::kFixed)
         continue;
       // Against the unperturbed balance at the same unknowns (sys: the converged solve).
       const double change = gapSystem.residualAt(k) - sys.residualAt(k);
+      const int stencil[5] = {k, sys.nbE[k], sys.nbW[k], sys.nbN[k], sys.nbS[k]};
       for (int s = 0; s < 5; ++s) {
-        const int l = s == 0 ? k : (*nbs[s])[k];
+        const int l = stencil[s];
         if ((s > 0 && l == k) || colour(l) != c)
           continue;  // no neighbour there (a missing one is the node itself), or not this colour
         balanceGapJacobian(k, s) = change / (kRelativeStep * pr.gap_m[l]);
@@ -460,13 +482,7 @@ void FilmSolver::Impl::calcGapRhs(const FilmGrid& grid, const FilmProblem& pr, E
     // gapProblem is the caller's copy of pr; only its gap differs (assemble reads no basis).
     gapProblem.gap_m = pr.gap_m + (sign * step) * pr.gapBasis.col(g).array();
     gapSystem.assemble(grid, gapProblem);
-    // The solution's unknowns; fixed nodes take the perturbed problem's own values (an inflow
-    // edge's fill fraction depends on the gap).
-    for (int k = 0; k < sys.n; ++k) {
-      const bool fixed = sys.status[k] == detail::kFixed;
-      gapSystem.p[k] = fixed ? gapSystem.fixedPressure[k] : sys.p[k];
-      gapSystem.theta[k] = fixed ? gapSystem.fixedTheta[k] : sys.theta[k];
-    }
+    loadSolutionIntoGapSystem();
     if (sign > 0) {
       gapResidualPlus.resize(sys.n);
       for (int k = 0; k < sys.n; ++k)

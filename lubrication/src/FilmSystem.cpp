@@ -61,7 +61,6 @@ void FilmSystem::calcNodeFactors(const FilmProblem& pr, const Eigen::ArrayXd& ga
 }
 
 void FilmSystem::assemble(const FilmGrid& grid, const FilmProblem& pr) {
-  resizeFor(grid);
   calcNodeFactors(pr, pr.gap_m, nodeFactors);
   assembleFromNodeFactors(grid, pr);
 }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "Checks.h"
@@ -108,29 +109,27 @@ ElasticCouplingReport ElasticCoupling::solveModal(const FilmPressureFunction& fi
                                std::to_string(k.size()));
     detail::requireFiniteEntries(kWhere, "film evaluation pressureStiffness_Pa_per_m",
                                  k.matrix(), "Pa/m");
-    const Eigen::MatrixXd& rate = film_.pressureRateSensitivity_Pa_per_m;
-    const bool withRate = rate.size() > 0;
-    if (withRate) {
-      if (rate.rows() != nf || rate.cols() != m)
-        detail::fail(kWhere, "the film evaluation's pressureRateSensitivity_Pa_per_m is " +
-                                 std::to_string(rate.rows()) + " x " +
-                                 std::to_string(rate.cols()) + ", expected " +
-                                 std::to_string(nf) + " x " + std::to_string(m) +
-                                 " (film nodes x modes) or empty");
-      detail::requireFiniteEntries(kWhere, "film evaluation pressureRateSensitivity_Pa_per_m",
-                                   rate, "Pa/m");
-    }
-    const Eigen::MatrixXd& gap = film_.pressureGapSensitivity_Pa_per_m;
-    const bool withGap = gap.size() > 0;
-    if (withGap) {
-      if (gap.rows() != nf || gap.cols() != m)
-        detail::fail(kWhere, "the film evaluation's pressureGapSensitivity_Pa_per_m is " +
-                                 std::to_string(gap.rows()) + " x " + std::to_string(gap.cols()) +
+    // An optional film nodes x modes sensitivity of the evaluation: true when given. (Names as
+    // literals: a passing check builds no string.)
+    const auto checkModalColumns = [&](const Eigen::MatrixXd& s, std::string_view field,
+                                       std::string_view qualified) {
+      if (s.size() == 0)
+        return false;
+      if (s.rows() != nf || s.cols() != m)
+        detail::fail(kWhere, "the film evaluation's " + std::string(field) + " is " +
+                                 std::to_string(s.rows()) + " x " + std::to_string(s.cols()) +
                                  ", expected " + std::to_string(nf) + " x " + std::to_string(m) +
                                  " (film nodes x modes) or empty");
-      detail::requireFiniteEntries(kWhere, "film evaluation pressureGapSensitivity_Pa_per_m", gap,
-                                   "Pa/m");
-    }
+      detail::requireFiniteEntries(kWhere, qualified, s, "Pa/m");
+      return true;
+    };
+    const Eigen::MatrixXd& rate = film_.pressureRateSensitivity_Pa_per_m;
+    const Eigen::MatrixXd& gap = film_.pressureGapSensitivity_Pa_per_m;
+    const bool withRate =
+        checkModalColumns(rate, "pressureRateSensitivity_Pa_per_m",
+                          "film evaluation pressureRateSensitivity_Pa_per_m");
+    const bool withGap = checkModalColumns(gap, "pressureGapSensitivity_Pa_per_m",
+                                           "film evaluation pressureGapSensitivity_Pa_per_m");
     for (int j = 0; j < m; ++j) {
       filmColumn_ = (k.max(0.0) * modalShapes_.col(j).array()).matrix();
       if (withRate)

@@ -47,6 +47,29 @@ void requireFiniteEntries(const Eigen::MatrixXd& a, Eigen::Index cols, const cha
                  " side)");
 }
 
+// An optional extra basis of the inputs (nullptr = none): n rows, finite.
+void requireOptionalBasis(const Eigen::MatrixXd* basis, const char* name, Eigen::Index n,
+                          SkirtSide side) {
+  if (!basis)
+    return;
+  if (basis->rows() != n)
+    badInput(name, " has ", basis->rows(), " rows, expected ", n, " (nodes of the ",
+             sideName(side), " side)");
+  requireFiniteEntries(*basis, basis->cols(), name, side);
+}
+
+// dst = src with each row scaled by slope (the film-gap clamp's); empty when src is null.
+void scaleRowsInto(const Eigen::MatrixXd* src, const Eigen::ArrayXd& slope, Eigen::MatrixXd& dst) {
+  if (!src) {
+    if (dst.size() > 0)
+      dst.resize(0, 0);
+    return;
+  }
+  dst.resize(src->rows(), src->cols());
+  for (Eigen::Index c = 0; c < src->cols(); ++c)
+    dst.col(c) = (src->col(c).array() * slope).matrix();
+}
+
 void validateInputs(const GapFields& gap, const SkirtSideInputs& in, const SkirtSideGrid& grid) {
   const Eigen::Index n = grid.nodeCount();
   const SkirtSide side = grid.getSide();
@@ -70,20 +93,8 @@ void validateInputs(const GapFields& gap, const SkirtSideInputs& in, const Skirt
   requireFiniteEntries(gap.gapRate_mps, "gap.gapRate_mps", "m/s", side);
   requireFiniteEntries(gap.dGap_dPose, 3, "gap.dGap_dPose", side);
   requireFiniteEntries(gap.squeezeBasis, in.squeezeColumns, "gap.squeezeBasis", side);
-  if (in.extraSqueezeBasis) {
-    if (in.extraSqueezeBasis->rows() != n)
-      badInput("inputs.extraSqueezeBasis has ", in.extraSqueezeBasis->rows(), " rows, expected ",
-               n, " (nodes of the ", sideName(side), " side)");
-    requireFiniteEntries(*in.extraSqueezeBasis, in.extraSqueezeBasis->cols(),
-                         "inputs.extraSqueezeBasis", side);
-  }
-  if (in.extraGapBasis) {
-    if (in.extraGapBasis->rows() != n)
-      badInput("inputs.extraGapBasis has ", in.extraGapBasis->rows(), " rows, expected ",
-               n, " (nodes of the ", sideName(side), " side)");
-    requireFiniteEntries(*in.extraGapBasis, in.extraGapBasis->cols(),
-                         "inputs.extraGapBasis", side);
-  }
+  requireOptionalBasis(in.extraSqueezeBasis, "inputs.extraSqueezeBasis", n, side);
+  requireOptionalBasis(in.extraGapBasis, "inputs.extraGapBasis", n, side);
   if (in.extraGapRateBasis) {
     if (!in.extraGapBasis || in.extraGapRateBasis->rows() != n ||
         in.extraGapRateBasis->cols() != in.extraGapBasis->cols())
@@ -322,22 +333,8 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   for (Eigen::Index c = 0; c < extra; ++c)
     p.squeezeBasis.col(in.squeezeColumns + c) =
         (in.extraSqueezeBasis->col(c).array() * m.clampSlope).matrix();
-  if (in.extraGapBasis) {
-    const Eigen::MatrixXd& b = *in.extraGapBasis;
-    p.gapBasis.resize(n, b.cols());
-    for (Eigen::Index c = 0; c < b.cols(); ++c)
-      p.gapBasis.col(c) = (b.col(c).array() * m.clampSlope).matrix();
-  } else if (p.gapBasis.size() > 0) {
-    p.gapBasis.resize(0, 0);
-  }
-  if (in.extraGapRateBasis) {
-    const Eigen::MatrixXd& r = *in.extraGapRateBasis;
-    p.gapRateBasis.resize(n, r.cols());
-    for (Eigen::Index c = 0; c < r.cols(); ++c)
-      p.gapRateBasis.col(c) = (r.col(c).array() * m.clampSlope).matrix();
-  } else if (p.gapRateBasis.size() > 0) {
-    p.gapRateBasis.resize(0, 0);
-  }
+  scaleRowsInto(in.extraGapBasis, m.clampSlope, p.gapBasis);
+  scaleRowsInto(in.extraGapRateBasis, m.clampSlope, p.gapRateBasis);
   p.slidingVelocity_mps =
       Eigen::Vector2d(in.slidingVelocityCircumferential_mps, in.slidingVelocityAxial_mps);
   p.viscosity_Pas = in.viscosity_Pas;

@@ -97,11 +97,7 @@ void checkDerivatives(CavitationModel model, FilmSolverType type, const std::str
   pr.momentPoint_m = {0.0, sp.pinHeight_m};
   if (model == CavitationModel::MassConserving) {
     // Full film in the converging upper half, partly filled history in the diverging lower half.
-    pr.timeStep_s = 1e-4;
-    pr.previousFillFraction.setOnes(g.nodeCount());
-    for (int j = 0; j < g.ny() / 2; ++j)
-      for (int i = 0; i < g.nx(); ++i)
-        pr.previousFillFraction[g.nodeIndex(i, j)] = 0.6;
+    test::SkirtPatch::setPartlyFilledHistory(g, 0.6, pr);
   }
   pr.squeezeBasis = sp.squeezeBasis(g);
   const Derivs base = solveWithDerivatives(g, pr, type);

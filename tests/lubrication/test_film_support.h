@@ -246,12 +246,16 @@ struct SkirtPatch {
   // history: fill 0.5 in the diverging lower half (oil enters at the top, U_y < 0), 1 above.
   FilmProblem partlyFilledProblem(const FilmGrid& g) const {
     FilmProblem pr = problem(g, CavitationModel::MassConserving);
+    setPartlyFilledHistory(g, 0.5, pr);
+    return pr;
+  }
+  // The step of 0.1 ms and its history: fill `fill` in the lower half of the grid, 1 above.
+  static void setPartlyFilledHistory(const FilmGrid& g, double fill, FilmProblem& pr) {
     pr.timeStep_s = 1e-4;
     pr.previousFillFraction.setOnes(g.nodeCount());
     for (int j = 0; j < g.ny() / 2; ++j)
       for (int i = 0; i < g.nx(); ++i)
-        pr.previousFillFraction[g.nodeIndex(i, j)] = 0.5;
-    return pr;
+        pr.previousFillFraction[g.nodeIndex(i, j)] = fill;
   }
 };
 

@@ -178,6 +178,14 @@ class GasolineSide {
   Eigen::MatrixXd modalBasis_, gapBasis_;
 };
 
+// The modal scheme with every mode of the side (its equations are then the full coupling's),
+// the other parameters as given.
+ps::ElasticCouplingParameters modalWithAllModes(ps::ElasticCouplingParameters p) {
+  p.scheme = ps::ElasticCouplingScheme::Modal;
+  p.modes = 100000;
+  return p;
+}
+
 // A thin-film pose: 38 um towards thrust leaves 2 um at the minimum-clearance line.
 constexpr double kThinFilmLateral_m = 38e-6;
 
@@ -362,9 +370,7 @@ TEST(ElasticCouplingFilm, ModalSchemeWithTheElasticRateMatchesAitken) {
   const auto compliance = gasolineSkirt();
   ps::ElasticCouplingParameters aitkenParameters;
   aitkenParameters.maxIterations = 400;
-  ps::ElasticCouplingParameters modal = aitkenParameters;
-  modal.scheme = ps::ElasticCouplingScheme::Modal;
-  modal.modes = 100000;
+  const ps::ElasticCouplingParameters modal = modalWithAllModes(aitkenParameters);
   const double e_m = 39e-6;
   const Eigen::ArrayXd previous = Eigen::ArrayXd::Zero(s.side().nodeCount());
   for (const double dt_s : {1e-4, 1e-5}) {
@@ -399,9 +405,7 @@ TEST(ElasticCouplingFilm, ExactStaticDerivativeSavesNewtonIterations) {
   const auto compliance = gasolineSkirt();
   ps::ElasticCouplingParameters aitkenParameters;
   aitkenParameters.maxIterations = 400;
-  ps::ElasticCouplingParameters modal = aitkenParameters;
-  modal.scheme = ps::ElasticCouplingScheme::Modal;
-  modal.modes = 100000;
+  const ps::ElasticCouplingParameters modal = modalWithAllModes(aitkenParameters);
   const Eigen::ArrayXd previous = Eigen::ArrayXd::Zero(s.side().nodeCount());
   int estimateTotal = 0, exactTotal = 0;
   for (const double e_m : {38e-6, 39e-6}) {

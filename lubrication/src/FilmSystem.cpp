@@ -80,20 +80,20 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
   const Eigen::VectorXd& wx = grid.xWeights_m();
   const Eigen::VectorXd& wy = grid.yWeights_m();
 
-  // Nodal conductances and Couette contents are only needed here: reuse face arrays as scratch
-  // (tW, tS, aOut, src are overwritten below).
-  Eigen::ArrayXd& Kx = tW;
-  Eigen::ArrayXd& Ky = tS;
+  // Nodal conductance coefficients phi_p / (12 eta) (the conductance without its h^3) and
+  // Couette contents are only needed here: reuse face arrays as scratch (tW, tS, aOut, src are
+  // overwritten below).
+  Eigen::ArrayXd& fx = tW;
+  Eigen::ArrayXd& fy = tS;
   Eigen::ArrayXd& Cx = aOut;
   Eigen::ArrayXd& Cy = src;
   for (int k = 0; k < n; ++k) {
-    const double h = pr.gap_m[k];
     const NodeFlowFactors& f = nodeFactors[static_cast<std::size_t>(k)];
     const double mu = perNodeEta ? pr.viscosityPerNode_Pas[k] : pr.viscosity_Pas;
-    const double base = h * h * h / (12.0 * mu);
+    const double base = 1.0 / (12.0 * mu);
     const double phiSlide = f.phiPressureSliding, phiCross = f.phiPressureCross;
-    Kx[k] = base * (slideY ? phiCross : phiSlide);
-    Ky[k] = base * (slideY ? phiSlide : phiCross);
+    fx[k] = base * (slideY ? phiCross : phiSlide);
+    fy[k] = base * (slideY ? phiSlide : phiCross);
     Cx[k] = f.expectedGap_m + (slideY ? 0.0 : f.sigmaPhiS_m);
     Cy[k] = f.expectedGap_m + (slideY ? f.sigmaPhiS_m : 0.0);
     hT[k] = f.expectedGap_m;
@@ -104,6 +104,23 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
     phiFp[k] = f.phiFp;
   }
 
+  // Face values (FilmProblem.h, "Discrete equation"): exact for a gap linear between the two
+  // nodes. Along the face the flux q = -K dp/ds + U C / 2 is constant, so the face carries
+  //   K_f = 1 / mean(1/K)  and  C_f = mean(C/K) / mean(1/K),
+  // which for K = f h^3 (f = phi_p / (12 eta) averaged over the two nodes) and C linear are
+  //   K_f = f 2 ha^2 hb^2 / (ha + hb),   C_f = (Ca hb + Cb ha) / (ha + hb).
+  // Both are the arithmetic means where ha = hb; unlike those, they stay accurate where the
+  // gap changes by a large factor within a cell, as it does around the small thin-film patch
+  // of a skirt near contact (lubrication/README.md: the squeeze load of such a patch moved
+  // by 8 % from 64 x 48 to 128 x 96 nodes with arithmetic means, by 0.5 % with these).
+  auto faceConductance = [&](const Eigen::ArrayXd& f, int a, int b) {
+    const double ha = pr.gap_m[a], hb = pr.gap_m[b];
+    return 0.5 * (f[a] + f[b]) * 2.0 * ha * ha * hb * hb / (ha + hb);
+  };
+  auto faceContent = [&](const Eigen::ArrayXd& C, int a, int b) {
+    const double ha = pr.gap_m[a], hb = pr.gap_m[b];
+    return (C[a] * hb + C[b] * ha) / (ha + hb);
+  };
   for (int j = 0; j < ny; ++j) {
     const double dyN = grid.dyNorth_m(j);
     for (int i = 0; i < nx; ++i) {
@@ -111,16 +128,16 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
       const int e = nbE[k];
       if (e != k) {
         const double dx = grid.dxEast_m(i);
-        tE[k] = 0.5 * (Kx[k] + Kx[e]) * wy[j] / dx;
-        couE[k] = 0.5 * Ux * 0.5 * (Cx[k] + Cx[e]) * wy[j];
+        tE[k] = faceConductance(fx, k, e) * wy[j] / dx;
+        couE[k] = 0.5 * Ux * faceContent(Cx, k, e) * wy[j];
       } else {
         tE[k] = 0.0;
         couE[k] = 0.0;
       }
       const int no = nbN[k];
       if (no != k) {
-        tN[k] = 0.5 * (Ky[k] + Ky[no]) * wx[i] / dyN;
-        couN[k] = 0.5 * Uy * 0.5 * (Cy[k] + Cy[no]) * wx[i];
+        tN[k] = faceConductance(fy, k, no) * wx[i] / dyN;
+        couN[k] = 0.5 * Uy * faceContent(Cy, k, no) * wx[i];
       } else {
         tN[k] = 0.0;
         couN[k] = 0.0;

@@ -2,6 +2,7 @@
 // observed order of convergence under grid refinement.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "test_film_support.h"
@@ -139,6 +140,37 @@ TEST(FilmSlider, ConstantFlowFactorsScaleTheClosedForm) {
   // h/sigma field from the model's sigma.
   ASSERT_EQ(r.gapOverSigma.size(), g.nodeCount());
   EXPECT_DOUBLE_EQ(r.gapOverSigma[0], pr.gap_m[0] / 0.5e-6);
+}
+
+
+// The face values are those of a gap linear between the nodes (FilmProblem.h): in one
+// dimension the flux through each face is then exact, and so is the pressure at every node,
+// however coarse the grid. Closed form of the pressure (InclinedSlider's equation integrated
+// once more, h decreasing linearly from hi to ho):
+//   p(y) = 6 eta U B / (K ho) [(1/h - 1/hi) - (h*/2)(1/h^2 - 1/hi^2)],  h = h(y).
+// Five cells along the pad; with arithmetic face means the nodal pressures were off by
+// several per cent here.
+TEST(FilmSlider, NodalPressuresAreExactForALinearGapOnACoarseGrid) {
+  const InclinedSlider s;
+  const FilmGrid g = s.grid(6);
+  FilmSolver solver(test::tightOptions(FilmSolverType::FastActiveSet, 1e-13));
+  const FilmResult r = solver.solve(g, s.problem(g));
+  ASSERT_TRUE(r.converged);
+  const double ho = s.outletGap_m, hi = s.gapAt(0.0);
+  const double hStar = 2.0 * hi * ho / (hi + ho);
+  const double scale =
+      6.0 * s.viscosity_Pas * s.speed_mps * s.length_m / (s.inclination * ho);
+  double worst = 0.0, peak = 0.0;
+  for (int j = 0; j < g.ny(); ++j) {
+    const double h = s.gapAt(g.y_m()[j]);
+    const double closed =
+        scale * ((1.0 / h - 1.0 / hi) - 0.5 * hStar * (1.0 / (h * h) - 1.0 / (hi * hi)));
+    peak = std::max(peak, std::abs(closed));
+    for (int i = 0; i < g.nx(); ++i)
+      worst = std::max(worst, std::abs(r.pressure_Pa()[g.nodeIndex(i, j)] - closed));
+  }
+  test::reportFigure("slider6.nodalPressureError.relativeToPeak", worst / peak);
+  EXPECT_LT(worst, 1e-9 * peak);
 }
 
 }  // namespace

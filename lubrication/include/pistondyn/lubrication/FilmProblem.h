@@ -13,8 +13,12 @@
 //   net outflow_k = sum_faces [ -K_f (p_nb - p_k) / d_f + (U.n_f / 2) * theta_up * C_f ] * L_f
 //                 + A_k * [ theta_k * dhT/dt_k + hT_k * (theta_k - thetaPrev_k) / dt ] = 0
 // with K = phi_p * h^3 / (12 eta) (phi_p: pressure flow factor of the face direction),
-// C = hT + sigma*phiS (expected gap plus shear-flow term of Patir & Cheng), face values the
-// arithmetic mean of the two nodes (second order), L_f the face length, d_f the node spacing,
+// C = hT + sigma*phiS (expected gap plus shear-flow term of Patir & Cheng), face values those
+// of a gap linear between the two nodes (the one-dimensional flux through the face exact):
+// K_f = f_f 2 ha^2 hb^2 / (ha + hb) with f_f the mean of phi_p / (12 eta) of the two nodes,
+// C_f = (Ca hb + Cb ha) / (ha + hb) (both the arithmetic means where ha = hb, second order;
+// accurate also where the gap changes by a large factor within a cell), L_f the face length,
+// d_f the node spacing,
 // A_k the control-volume area. theta_up is the fill fraction of the upwind node (mass-conserving
 // model only; 1 otherwise): in a full film this is exactly the central second-order Reynolds
 // discretisation, in a cavitated zone it is the monotone upwind transport of the oil content.

@@ -23,9 +23,11 @@
 //   contact        p_c(h) of the asperity law on the NOMINAL gap (it carries the load where
 //                  the clamp holds the film open), its slope dp_c/dh; its loads are those
 //                  of the nodal interpolant except in cells whose smallest corner gap is
-//                  below 4.5 sigma, where p_c(h) of the bilinear gap is integrated at 6 x 6
-//                  Gauss points (a contact at an edge is often narrower than a cell: the
-//                  interpolant alone overestimated an edge contact 4.8-fold at 64 x 48)
+//                  below 4.5 sigma, where p_c(h) is integrated at 6 x 6 Gauss points of the
+//                  gap interpolated bicubically from the 4 x 4 nearest nodes (a contact at an
+//                  edge is often narrower than a cell: the interpolant alone overestimated an
+//                  edge contact 4.8-fold at 64 x 48; and the bilinear gap of a barrel lies
+//                  above it between the nodes: 7 % of a mid-skirt contact's load)
 //   boundary shear tau_b = BoundaryFriction::calcShearStress_Pa(p_c, -U) on the skirt
 // Tractions on the skirt: normal p = p_film + p_c (minus edgePressure_Pa, see below), axial
 // tau_y = film shear on surface 2 along y + tau_b,y, circumferential tau_phi = film shear on

@@ -73,6 +73,14 @@ void validate(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm
   for (Eigen::Index k = 0; k < n; ++k)
     if (!(std::isfinite(pr.gap_m[k]) && pr.gap_m[k] > 0.0))
       fail("gap h[", k, "] = ", pr.gap_m[k], " m must be positive and finite (problem.gap_m)");
+  if (!(std::isfinite(pr.gapFloor_m) && pr.gapFloor_m >= 0.0))
+    fail("problem.gapFloor_m = ", pr.gapFloor_m, " m must be finite and >= 0 (0: no floor)");
+  if (pr.gapFloor_m > 0.0) {
+    for (Eigen::Index k = 0; k < n; ++k)
+      if (!(pr.gap_m[k] > pr.gapFloor_m))
+        fail("gap h[", k, "] = ", pr.gap_m[k], " m must be above problem.gapFloor_m = ",
+             pr.gapFloor_m, " m (film gaps of a floored nominal gap, GapFloor.h)");
+  }
   checkSize(pr.gapRate_mps.size(), n, "problem.gapRate_mps", true);
   checkFinite(pr.gapRate_mps, "problem.gapRate_mps", "m/s");
   if (!pr.slidingVelocity_mps.allFinite())

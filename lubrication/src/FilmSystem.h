@@ -79,6 +79,13 @@ struct FilmSystem {
   void assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem& problem);
   std::vector<NodeFlowFactors> nodeFactors;  // of the last assembly
 
+  // Floored gaps (FilmProblem::gapFloor_m): the flow factors at the knee's breakpoints
+  // (kKneeBreakpoints in FilmSystem.cpp, multiples of the floor), for the model and the
+  // floor they belong to (recomputed when either changes; a model is immutable).
+  std::vector<NodeFlowFactors> kneeFactors;
+  const FlowFactorModel* kneeModel = nullptr;
+  double kneeFloor_m = 0.0;
+
   // Five-point Poiseuille product at node k: net Poiseuille outflow of the nodal field x.
   double poiseuilleAt(int k, const double* x) const {
     return diagP[k] * x[k] -

@@ -33,6 +33,18 @@ TEST(FilmBadInput, NonPositiveOrNaNGap) {
   }
 }
 
+// A gap floor must be finite and >= 0, and the film gaps of a floored problem lie above it.
+TEST(FilmBadInput, GapFloorNegativeOrAboveAGap) {
+  for (double bad : {-1e-9, kNaN, std::numeric_limits<double>::infinity()}) {
+    BadInputCase s;
+    s.problem.gapFloor_m = bad;
+    expectInvalidArgument([&] { s.solve(); }, {"FilmSolver::solve", "problem.gapFloor_m", ">= 0"});
+  }
+  BadInputCase s;
+  s.problem.gapFloor_m = s.problem.gap_m[23];
+  expectInvalidArgument([&] { s.solve(); }, {"gap h[", "above problem.gapFloor_m"});
+}
+
 // Mass-conserving model with an open edge below p_cav (gauge edges against an absolute p_cav):
 // rejected up front instead of running the solvers' whole budget into non-convergence. The
 // Reynolds model is well posed there (the edge is simply a fixed pressure) and is accepted.

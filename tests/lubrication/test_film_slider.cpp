@@ -4,7 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
+#include "pistondyn/lubrication/GapFloor.h"
 #include "test_film_support.h"
 
 namespace pistondyn::lubrication {
@@ -171,6 +175,79 @@ TEST(FilmSlider, NodalPressuresAreExactForALinearGapOnACoarseGrid) {
   }
   test::reportFigure("slider6.nodalPressureError.relativeToPeak", worst / peak);
   EXPECT_LT(worst, 1e-9 * peak);
+}
+
+
+// A slider that runs into contact: the nominal gap falls linearly from 2 um at the inlet to
+// -1 um at the outlet (the mean planes overlap over the last third), the film takes the
+// floored gap h_f = calcFlooredGap(h, h_c), h_c = 50 nm (GapFloor.h, FilmProblem::gapFloor_m).
+// With the flux q constant along the strip, p(y) = 12 eta int_0^y (U h_f / 2 - q) / h_f^3 dy'
+// and p(0) = p(B) = 0 gives q = (U/2) int h_f^-2 / int h_f^-3: integrals computed here over
+// the nominal gap (h is linear in y) by 6-point Gauss-Legendre on 30000 panels, 600 per h_c.
+// The floor's knee is 1/60 of the pad here, a fraction of a cell of the grids below: faces
+// that take h_f itself as linear between the nodes miss it (first order in the cell size),
+// faces that follow the nominal gap through the knee (gapFloor_m) do not.
+TEST(FilmSlider, FlooredGapIntoContactMatchesTheQuadratureOnCoarseGrids) {
+  const double eta = 0.01, U = 1.0, B = 0.01, hIn = 2e-6, hOut = -1e-6, hc = 5e-8, w = 1e-3;
+  const auto gauss = [] {
+    // 6-point Gauss-Legendre on [0, 1].
+    const double x[6] = {0.033765242898423975, 0.16939530676686776, 0.38069040695840156,
+                         0.61930959304159845,  0.83060469323313224, 0.96623475710157603};
+    const double wt[6] = {0.085662246189585178, 0.18038078652406930, 0.23395696728634552,
+                          0.23395696728634552,  0.18038078652406930, 0.085662246189585178};
+    return std::make_pair(std::vector<double>(x, x + 6), std::vector<double>(wt, wt + 6));
+  }();
+  auto filmGap = [&](double y) {
+    return calcFlooredGap(hIn + (hOut - hIn) * y / B, hc).film_m;
+  };
+  // int_0^y of h_f^-2 and h_f^-3 (y in [0, B]).
+  auto integrals = [&](double y) {
+    const int panels = static_cast<int>(std::ceil(30000.0 * y / B)) + 1;
+    double i2 = 0.0, i3 = 0.0;
+    const double d = y / panels;
+    for (int k = 0; k < panels; ++k)
+      for (int m = 0; m < 6; ++m) {
+        const double h = filmGap((k + gauss.first[m]) * d);
+        i2 += gauss.second[m] * d / (h * h);
+        i3 += gauss.second[m] * d / (h * h * h);
+      }
+    return std::make_pair(i2, i3);
+  };
+  const auto [all2, all3] = integrals(B);
+  const double q = 0.5 * U * all2 / all3;
+  auto closed = [&](double y) {
+    const auto [i2, i3] = integrals(y);
+    return 12.0 * eta * (0.5 * U * i2 - q * i3);
+  };
+  double peak = 0.0;
+  for (int k = 1; k < 200; ++k)
+    peak = std::max(peak, closed(B * k / 200.0));
+  for (int ny : {11, 41}) {
+    const FilmGrid g = FilmGrid::uniform(3, w, ny, B, true);
+    FilmProblem pr;
+    pr.gap_m.resize(g.nodeCount());
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < 3; ++i)
+        pr.gap_m[g.nodeIndex(i, j)] = filmGap(g.y_m()[j]);
+    pr.slidingVelocity_mps = {0.0, U};
+    pr.viscosity_Pas = eta;
+    pr.cavitation = CavitationModel::None;
+    double errors[2] = {0.0, 0.0};
+    for (int floored = 0; floored < 2; ++floored) {
+      pr.gapFloor_m = floored ? hc : 0.0;
+      FilmSolver solver(test::tightOptions(FilmSolverType::FastActiveSet, 1e-13));
+      const FilmResult r = solver.solve(g, pr);
+      ASSERT_TRUE(r.converged);
+      for (int j = 0; j < ny; ++j)
+        errors[floored] = std::max(
+            errors[floored], std::abs(r.pressure_Pa()[g.nodeIndex(1, j)] - closed(g.y_m()[j])));
+      errors[floored] /= peak;
+    }
+    test::reportFigure("flooredSlider" + std::to_string(ny) + ".filmGapFaces", errors[0]);
+    test::reportFigure("flooredSlider" + std::to_string(ny) + ".nominalGapFaces", errors[1]);
+    EXPECT_LT(errors[1], 1e-4) << ny << " nodes";
+    EXPECT_GT(errors[0], 10.0 * errors[1]) << ny << " nodes";  // what the floor's faces fix
+  }
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pistondyn/common/Validation.h"
+#include "pistondyn/lubrication/GapFloor.h"
 
 namespace pistondyn::skirt {
 namespace {
@@ -336,6 +337,7 @@ struct SkirtSideLubrication::Impl {
       e->pressure_Pa = p.edgePressure_Pa;
     }
     problem.referencePressure_Pa = p.edgePressure_Pa;
+    problem.gapFloor_m = clamp_m;  // the faces integrate along the nominal gap (GapFloor.h)
     clampSlope.resize(n);
     zero = Eigen::ArrayXd::Zero(n);
   }
@@ -379,10 +381,9 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   lubrication::FilmProblem& p = m.problem;
   const double hc = m.clamp_m;
   for (int k = 0; k < n; ++k) {
-    const double h = gap.gap_m[k];
-    const double root = std::sqrt((h - hc) * (h - hc) + hc * hc);
-    p.gap_m[k] = 0.5 * (h + hc + root);
-    m.clampSlope[k] = 0.5 * (1.0 + (h - hc) / root);
+    const lubrication::FlooredGap f = lubrication::calcFlooredGap(gap.gap_m[k], hc);
+    p.gap_m[k] = f.film_m;
+    m.clampSlope[k] = f.slope;
   }
   p.gapRate_mps = gap.gapRate_mps * m.clampSlope;
   const Eigen::Index extra = in.extraSqueezeBasis ? in.extraSqueezeBasis->cols() : 0;

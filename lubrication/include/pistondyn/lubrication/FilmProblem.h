@@ -91,6 +91,15 @@ struct FilmBoundary {
 // arrays in place between calls: no allocation happens at a fixed size.
 struct FilmProblem {
   Eigen::ArrayXd gap_m;        // nominal gap h per node, [m], > 0 and finite (required)
+  // Optional floor h_c of the gap [m] (0 = none, the default; else finite and > 0, and every
+  // gap_m above it): gap_m are then the film gaps h_f = calcFlooredGap(h, h_c) of a nominal
+  // gap h (GapFloor.h) that may be <= 0 where rough surfaces touch. The face values (above)
+  // take h linear between the nodes instead of h_f: near a contact the floor's knee, where
+  // h_f bends from h to h_c over a nominal range of a few h_c, is far narrower than a cell,
+  // and a face across it integrates K and C through it (exactly for h_f; the flow factors and
+  // contents linear between points at fixed multiples of h_c, FilmSystem.cpp). Everything
+  // else (nodal terms, rates, bases, results) is in terms of gap_m as given.
+  double gapFloor_m = 0.0;
   Eigen::ArrayXd gapRate_mps;  // dh/dt per node at a fixed grid point, [m/s]; empty = 0
   Eigen::Vector2d slidingVelocity_mps = Eigen::Vector2d::Zero();  // U of surface 1 rel. to 2
                                                                   // along (x, y), [m/s]

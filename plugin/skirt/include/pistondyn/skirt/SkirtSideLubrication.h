@@ -15,7 +15,9 @@
 //                  smooth clamp >= h_c = max(clampFraction * sigma, minimumClampGap_m),
 //                  sigma = getCompositeSigma_m() (PatirChengFlowFactors.h: it changes the
 //                  film gap by < 1.2 % at h/sigma >= 0.5); the gap rate and the squeeze
-//                  basis are multiplied by dh_f/dh
+//                  basis are multiplied by dh_f/dh (lubrication::calcFlooredGap; the film
+//                  solves with FilmProblem::gapFloor_m = h_c, so its faces follow the
+//                  nominal gap through the clamp's knee at a contact's rim)
 //   film           lubrication::FilmSolver on SkirtSideGrid::getFilmGrid(), all four edges
 //                  open at edgePressure_Pa, the inlet supply film on both axial edges (it
 //                  matters only where the liner slides in), the flow-factor model of the

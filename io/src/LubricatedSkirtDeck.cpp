@@ -121,6 +121,8 @@ void readGrid(DeckSection& liner, skirt::SkirtSideGridParameters& g) {
   g.nPhi = static_cast<int>(grid.getInteger(skirtKey("liner.grid.nodes_circumferential")));
   g.nY = static_cast<int>(grid.getInteger(skirtKey("liner.grid.nodes_axial")));
   g.axialClustering = grid.getNumber(skirtKey("liner.grid.axial_clustering"));
+  g.circumferentialClustering =
+      grid.getNumber(skirtKey("liner.grid.circumferential_clustering"));
 }
 
 // ---- skirt profile --------------------------------------------------------------------

@@ -47,6 +47,12 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
               .byDefault(0.0)
               .within(Bounds::between(0, 10))
               .means("tanh clustering of the axial nodes towards the skirt edges (2–3 strong)"),
+          K::number("liner.grid.circumferential_clustering")
+              .byDefault(0.0)
+              .within(Bounds::between(0, 10))
+              .means("sinh clustering of the circumferential nodes towards each side's centre "
+                     "line, where the ovality puts the contact (2: 0.55× the uniform spacing "
+                     "there, 2.1× at the edges)"),
           K::file("liner.skirt_profile.axial_profile_file",
                   "CSV `height_above_pin_mm, radial_drop_um`")
               .byDefault("cylindrical")

@@ -31,7 +31,8 @@ class FullSkirtDeck : public SkirtScratchDeck {
   model: lubricated_skirt
   cold_radial_clearance_um: 60
   reference_temperature_degC: 25
-  grid: {arc_width_deg: 90, nodes_circumferential: 20, nodes_axial: 14, axial_clustering: 1}
+  grid: {arc_width_deg: 90, nodes_circumferential: 20, nodes_axial: 14, axial_clustering: 1,
+         circumferential_clustering: 1.5}
   skirt_profile:
     axial_profile_file: skirt_profile.csv
     mirrored: true

@@ -138,6 +138,7 @@ TEST_F(FullSkirtDeck, EveryKeyReachesTheElementInSI) {
   EXPECT_EQ(p.grid.nPhi, 20);
   EXPECT_EQ(p.grid.nY, 14);
   EXPECT_EQ(p.grid.axialClustering, 1.0);
+  EXPECT_EQ(p.grid.circumferentialClustering, 1.5);
   EXPECT_TRUE(p.gap.skirtProfile.axial.mirrored);
   const auto& ov = p.gap.skirtProfile.ovality;
   ASSERT_EQ(ov.model, pistondyn::skirt::OvalityModel::Table);

@@ -54,6 +54,8 @@ TEST(SkirtBadInput, SkirtSideGridParameters) {
   expectGridRejected([](P& p) { p.skirtLength_m = -0.01; }, {s, "skirtLength_m", "positive"});
   expectGridRejected([](P& p) { p.axialClustering = -1.0; },
                      {s, "axialClustering", "non-negative"});
+  expectGridRejected([](P& p) { p.circumferentialClustering = -0.5; },
+                     {s, "circumferentialClustering", "non-negative"});
 }
 
 TEST(SkirtBadInput, CalcLoadsOnPiston) {

@@ -97,17 +97,21 @@ TEST(SkirtSideGrid, WeightsEqualGaussQuadratureOfTheHats) {
     ps::SkirtSide side;
     double arc;
     int nPhi, nY;
-    double clustering;
+    double clustering, circumferentialClustering = 0.0;
   };
-  // fine (small half-widths: series branch), coarse and wide (closed-form branch), anti-thrust
+  // fine (small half-widths: series branch), coarse and wide (closed-form branch), anti-thrust;
+  // centre-clustered angles (unequal cells around phi)
   for (const Case& cs : {Case{ps::SkirtSide::Thrust, kPi / 3, 24, 9, 0.0},
                          Case{ps::SkirtSide::AntiThrust, 1.2, 17, 6, 2.0},
                          Case{ps::SkirtSide::Thrust, 3.0, 3, 3, 0.0},
-                         Case{ps::SkirtSide::AntiThrust, 2.9, 4, 5, 0.5}}) {
+                         Case{ps::SkirtSide::AntiThrust, 2.9, 4, 5, 0.5},
+                         Case{ps::SkirtSide::Thrust, 1.4, 33, 7, 0.0, 2.0},
+                         Case{ps::SkirtSide::AntiThrust, 2.5, 8, 5, 1.0, 3.0}}) {
     ps::SkirtSideGridParameters p = ps::test::thrustSide(cs.nPhi, cs.nY);
     p.side = cs.side;
     p.arcWidth_rad = cs.arc;
     p.axialClustering = cs.clustering;
+    p.circumferentialClustering = cs.circumferentialClustering;
     const ps::SkirtSideGrid g(p);
     const std::vector<std::pair<const Eigen::ArrayXd*, std::function<double(double, double)>>>
         families = {
@@ -128,6 +132,32 @@ TEST(SkirtSideGrid, WeightsEqualGaussQuadratureOfTheHats) {
         }
     std::printf("[ weights  ] arc %.2f rad, %d x %d: worst relative deviation %.2e\n", cs.arc,
                 cs.nPhi, cs.nY, worst);
+  }
+}
+
+// Circumferential clustering: phi = (Phi/2) sinh(b xi) / sinh(b) of xi uniform in [-1, 1]
+// (closed form here), exactly antisymmetric about the centre line, the arc's ends kept; b = 2
+// gives b / sinh(b) = 0.551 of the uniform spacing at the centre line.
+TEST(SkirtSideGrid, CircumferentialClusteringFollowsTheSinhMapAndKeepsTheSymmetry) {
+  for (ps::SkirtSide side : {ps::SkirtSide::Thrust, ps::SkirtSide::AntiThrust}) {
+    ps::SkirtSideGridParameters p = ps::test::thrustSide(65, 5);
+    p.side = side;
+    p.arcWidth_rad = 1.4;
+    p.circumferentialClustering = 2.0;
+    const ps::SkirtSideGrid g(p);
+    const Eigen::VectorXd& phi = g.getPhiNodes_rad();
+    const double c = g.getCentreAngle_rad();
+    for (int i = 0; i < 65; ++i) {
+      const double xi = (2.0 * i - 64.0) / 64.0;
+      EXPECT_NEAR(phi[i] - c, 0.7 * std::sinh(2.0 * xi) / std::sinh(2.0), 1e-15) << i;
+      EXPECT_EQ(phi[i] - c, -(phi[64 - i] - c)) << i;
+    }
+    EXPECT_EQ(phi[32], c);
+    // Cell sizes against the map's slope at the cells' middles: 0.551 and 2.01 x uniform.
+    const double uniform = 1.4 / 64.0;
+    auto slope = [](double xi) { return 2.0 * std::cosh(2.0 * xi) / std::sinh(2.0); };
+    EXPECT_NEAR((phi[33] - phi[32]) / uniform, slope(1.0 / 64.0), 1e-4);
+    EXPECT_NEAR((phi[64] - phi[63]) / uniform, slope(63.0 / 64.0), 1e-3);
   }
 }
 

@@ -28,6 +28,8 @@ const SkirtSideGridParameters& validated(const SkirtSideGridParameters& p) {
   detail::requireFinite(kWhere, "skirtTopHeight_m", p.skirtTopHeight_m, "m");
   detail::requirePositive(kWhere, "skirtLength_m", p.skirtLength_m, "m");
   detail::requireNonNegative(kWhere, "axialClustering", p.axialClustering, "");
+  detail::requireNonNegative(kWhere, "circumferentialClustering", p.circumferentialClustering,
+                             "");
   return p;
 }
 
@@ -35,13 +37,22 @@ double centreAngle(SkirtSide side) {
   return side == SkirtSide::Thrust ? 0.0 : kPi;
 }
 
-// Angles relative to the centre line, phi_c + Phi (2i - (n-1)) / (2(n-1)): the integer
-// numerator makes the offsets exactly antisymmetric about the centre line.
+// Angles relative to the centre line, (Phi / 2) xi with xi = (2i - (n-1)) / (n-1), or
+// (Phi / 2) sinh(b xi) / sinh(b) with the circumferential clustering b: the integer numerator
+// and the stretching of |xi| with its sign make the offsets exactly antisymmetric about the
+// centre line.
 Eigen::VectorXd relativeAngles(const SkirtSideGridParameters& p) {
   Eigen::VectorXd s(p.nPhi);
-  const double den = 2.0 * (p.nPhi - 1);
-  for (int i = 0; i < p.nPhi; ++i)
-    s[i] = p.arcWidth_rad * ((2.0 * i - (p.nPhi - 1)) / den);
+  const double b = p.circumferentialClustering;
+  for (int i = 0; i < p.nPhi; ++i) {
+    const double num = 2.0 * i - (p.nPhi - 1);
+    if (b > 0.0) {
+      const double xi = num / (p.nPhi - 1.0);
+      s[i] = 0.5 * p.arcWidth_rad * std::copysign(std::sinh(b * std::abs(xi)) / std::sinh(b), xi);
+    } else {
+      s[i] = p.arcWidth_rad * (num / (2.0 * (p.nPhi - 1)));
+    }
+  }
   return s;
 }
 

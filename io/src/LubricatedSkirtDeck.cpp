@@ -446,6 +446,9 @@ void readSurfaces(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
       skirtKey("liner.film.cavitation"),
       {{"mass_conserving", lubrication::CavitationModel::MassConserving},
        {"reynolds", lubrication::CavitationModel::Reynolds}});
+  p.lubrication.faceValues = film.getChoice<lubrication::FaceValues>(
+      skirtKey("liner.film.faces"), {{"nodal_mean", lubrication::FaceValues::NodalMean},
+                                     {"linear_gap", lubrication::FaceValues::LinearGap}});
   p.lubrication.solver.solver = film.getChoice<lubrication::FilmSolverType>(
       skirtKey("liner.film.solver"),
       {{"fast", lubrication::FilmSolverType::FastActiveSet},

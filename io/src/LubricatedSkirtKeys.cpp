@@ -192,6 +192,10 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
           K::choice("liner.film.cavitation", {"mass_conserving", "reynolds"})
               .byDefault("mass_conserving")
               .means("JFO / Elrod–Adams, or Swift–Stieber (the thesis')"),
+          K::choice("liner.film.faces", {"nodal_mean", "linear_gap"})
+              .byDefault("nodal_mean")
+              .means("film face conductance: mean of the nodes', or exact for a gap linear "
+                     "between them (plugin/README.md, \"Face values\")"),
           K::choice("liner.film.solver", {"fast", "reference_gauss_seidel"})
               .byDefault("fast")
               .means("film solver (active set with CG/GMRES, or the thesis' projected "

@@ -76,6 +76,10 @@ void validate(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm
   if (!(std::isfinite(pr.gapFloor_m) && pr.gapFloor_m >= 0.0))
     fail("problem.gapFloor_m = ", pr.gapFloor_m, " m must be finite and >= 0 (0: no floor)");
   if (pr.gapFloor_m > 0.0) {
+    if (pr.faces != FaceValues::LinearGap)
+      fail("problem.gapFloor_m = ", pr.gapFloor_m,
+           " m needs problem.faces = FaceValues::LinearGap (the nodal means cannot follow the "
+           "floor's knee)");
     for (Eigen::Index k = 0; k < n; ++k)
       if (!(pr.gap_m[k] > pr.gapFloor_m))
         fail("gap h[", k, "] = ", pr.gap_m[k], " m must be above problem.gapFloor_m = ",

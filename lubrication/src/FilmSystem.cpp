@@ -110,7 +110,10 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
   for (int k = 0; k < n; ++k) {
     const NodeFlowFactors& f = nodeFactors[static_cast<std::size_t>(k)];
     const double mu = perNodeEta ? pr.viscosityPerNode_Pas[k] : pr.viscosity_Pas;
-    const double base = 1.0 / (12.0 * mu);
+    // NodalMean faces take the nodal conductances themselves (phi_p h^3 / (12 eta)).
+    const double h = pr.gap_m[k];
+    const double base = pr.faces == FaceValues::LinearGap ? 1.0 / (12.0 * mu)
+                                                          : h * h * h / (12.0 * mu);
     const double phiSlide = f.phiPressureSliding, phiCross = f.phiPressureCross;
     fx[k] = base * (slideY ? phiCross : phiSlide);
     fy[k] = base * (slideY ? phiSlide : phiCross);
@@ -142,7 +145,8 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
   // integrates 1/(f h_f^3) and C/(f h_f^3) at 3 Gauss points with h_f of the nominal gap
   // there, a piece beyond it (a node deep in contact or far from it) takes h_f linear (the
   // formulas above); the pieces' resistances mean(1/K) and mean(C/K) add.
-  const double floor = pr.gapFloor_m;
+  const bool linearGapFaces = pr.faces == FaceValues::LinearGap;
+  const double floor = linearGapFaces ? pr.gapFloor_m : 0.0;
   if (floor > 0.0) {
     const FlowFactorModel* factorModel = pr.flowFactors;
     if (kneeFactors.size() != static_cast<std::size_t>(kKneePoints) || kneeModel != factorModel ||
@@ -165,6 +169,8 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
     const double ha = pr.gap_m[a], hb = pr.gap_m[b];
     const double na = floor > 0.0 ? calcNominalGap(ha, floor) : ha;
     const double nb = floor > 0.0 ? calcNominalGap(hb, floor) : hb;
+    if (!linearGapFaces)
+      return {0.5 * (f[a] + f[b]), 0.5 * (C[a] + C[b])};
     if (!(floor > 0.0) || std::min(na, nb) >= kneeLimit || na == nb) {
       return {0.5 * (f[a] + f[b]) * 2.0 * ha * ha * hb * hb / (ha + hb),
               (C[a] * hb + C[b] * ha) / (ha + hb)};

@@ -34,15 +34,20 @@ TEST(FilmBadInput, NonPositiveOrNaNGap) {
 }
 
 // A gap floor must be finite and >= 0, and the film gaps of a floored problem lie above it.
-TEST(FilmBadInput, GapFloorNegativeOrAboveAGap) {
+TEST(FilmBadInput, GapFloorNegativeAboveAGapOrWithNodalMeans) {
   for (double bad : {-1e-9, kNaN, std::numeric_limits<double>::infinity()}) {
     BadInputCase s;
     s.problem.gapFloor_m = bad;
     expectInvalidArgument([&] { s.solve(); }, {"FilmSolver::solve", "problem.gapFloor_m", ">= 0"});
   }
   BadInputCase s;
+  s.problem.faces = FaceValues::LinearGap;
   s.problem.gapFloor_m = s.problem.gap_m[23];
   expectInvalidArgument([&] { s.solve(); }, {"gap h[", "above problem.gapFloor_m"});
+  // The nodal means cannot honour a floor: said, not ignored.
+  BadInputCase m;
+  m.problem.gapFloor_m = 0.5 * m.problem.gap_m.minCoeff();
+  expectInvalidArgument([&] { m.solve(); }, {"problem.gapFloor_m", "FaceValues::LinearGap"});
 }
 
 // Mass-conserving model with an open edge below p_cav (gauge edges against an absolute p_cav):

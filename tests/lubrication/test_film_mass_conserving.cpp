@@ -15,9 +15,7 @@ using test::kPi;
 // Oil balance of the unknown (interior) control volumes, recomputed here from the returned
 // pressure and fill fraction with the finite-volume fluxes documented in FilmProblem.h (smooth
 // surfaces): through every face between an edge node and an interior node the flux is
-//   K_f L_f (p_k - p_n) / d_f + (U.n / 2) theta_upwind C_f L_f,
-// with the face values of a gap linear between the nodes, K_f = 2 h_k^2 h_n^2 / (h_k + h_n) /
-// (12 eta) and C_f = (h_k h_n + h_n h_k) / (h_k + h_n) (C = h for smooth surfaces),
+//   K_f L_f (p_k - p_n) / d_f + (U.n / 2) theta_upwind (h_k + h_n)/2 L_f,  K_f = mean h^3/(12 eta),
 // and the storage rate is sum A_k [theta_k dh/dt_k + h_k (theta_k - thetaPrev_k) / dt].
 struct Balance {
   double in = 0.0, out = 0.0, storage = 0.0;
@@ -59,11 +57,10 @@ Balance oilBalance(const FilmGrid& g, const FilmProblem& pr, const FilmResult& r
           continue;
         const int m = g.nodeIndex(nb.i, nb.j);
         const double hk = pr.gap_m[k], hm = pr.gap_m[m];
-        const double K = 2.0 * hk * hk * hm * hm / (hk + hm) / (12.0 * eta);
-        const double content = 2.0 * hk * hm / (hk + hm);
+        const double K = 0.5 * (hk * hk * hk + hm * hm * hm) / (12.0 * eta);
         const double thetaUp = nb.un > 0.0 ? th[k] : th[m];
         const double flux =
-            K * nb.L * (p[k] - p[m]) / nb.d + 0.5 * nb.un * thetaUp * content * nb.L;
+            K * nb.L * (p[k] - p[m]) / nb.d + 0.5 * nb.un * thetaUp * 0.5 * (hk + hm) * nb.L;
         if (flux > 0.0)
           b.out += flux;
         else

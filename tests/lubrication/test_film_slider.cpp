@@ -147,7 +147,7 @@ TEST(FilmSlider, ConstantFlowFactorsScaleTheClosedForm) {
 }
 
 
-// The face values are those of a gap linear between the nodes (FilmProblem.h): in one
+// Face values of a gap linear between the nodes (FaceValues::LinearGap, FilmProblem.h): in one
 // dimension the flux through each face is then exact, and so is the pressure at every node,
 // however coarse the grid. Closed form of the pressure (InclinedSlider's equation integrated
 // once more, h decreasing linearly from hi to ho):
@@ -158,7 +158,9 @@ TEST(FilmSlider, NodalPressuresAreExactForALinearGapOnACoarseGrid) {
   const InclinedSlider s;
   const FilmGrid g = s.grid(6);
   FilmSolver solver(test::tightOptions(FilmSolverType::FastActiveSet, 1e-13));
-  const FilmResult r = solver.solve(g, s.problem(g));
+  FilmProblem pr = s.problem(g);
+  pr.faces = FaceValues::LinearGap;
+  const FilmResult r = solver.solve(g, pr);
   ASSERT_TRUE(r.converged);
   const double ho = s.outletGap_m, hi = s.gapAt(0.0);
   const double hStar = 2.0 * hi * ho / (hi + ho);
@@ -232,6 +234,7 @@ TEST(FilmSlider, FlooredGapIntoContactMatchesTheQuadratureOnCoarseGrids) {
     pr.slidingVelocity_mps = {0.0, U};
     pr.viscosity_Pas = eta;
     pr.cavitation = CavitationModel::None;
+    pr.faces = FaceValues::LinearGap;
     double errors[2] = {0.0, 0.0};
     for (int floored = 0; floored < 2; ++floored) {
       pr.gapFloor_m = floored ? hc : 0.0;

@@ -337,7 +337,9 @@ struct SkirtSideLubrication::Impl {
       e->pressure_Pa = p.edgePressure_Pa;
     }
     problem.referencePressure_Pa = p.edgePressure_Pa;
-    problem.gapFloor_m = clamp_m;  // the faces integrate along the nominal gap (GapFloor.h)
+    problem.faces = p.faceValues;
+    // LinearGap faces integrate along the nominal gap through the clamp's knee (GapFloor.h).
+    problem.gapFloor_m = p.faceValues == lubrication::FaceValues::LinearGap ? clamp_m : 0.0;
     clampSlope.resize(n);
     zero = Eigen::ArrayXd::Zero(n);
   }

@@ -13,12 +13,9 @@
 //   net outflow_k = sum_faces [ -K_f (p_nb - p_k) / d_f + (U.n_f / 2) * theta_up * C_f ] * L_f
 //                 + A_k * [ theta_k * dhT/dt_k + hT_k * (theta_k - thetaPrev_k) / dt ] = 0
 // with K = phi_p * h^3 / (12 eta) (phi_p: pressure flow factor of the face direction),
-// C = hT + sigma*phiS (expected gap plus shear-flow term of Patir & Cheng), face values those
-// of a gap linear between the two nodes (the one-dimensional flux through the face exact):
-// K_f = f_f 2 ha^2 hb^2 / (ha + hb) with f_f the mean of phi_p / (12 eta) of the two nodes,
-// C_f = (Ca hb + Cb ha) / (ha + hb) (both the arithmetic means where ha = hb, second order;
-// accurate also where the gap changes by a large factor within a cell), L_f the face length,
-// d_f the node spacing,
+// C = hT + sigma*phiS (expected gap plus shear-flow term of Patir & Cheng), face values K_f,
+// C_f as chosen by FilmProblem::faces (FaceValues below: the arithmetic means of the two nodes
+// by default), L_f the face length, d_f the node spacing,
 // A_k the control-volume area. theta_up is the fill fraction of the upwind node (mass-conserving
 // model only; 1 otherwise): in a full film this is exactly the central second-order Reynolds
 // discretisation, in a cavitated zone it is the monotone upwind transport of the oil content.
@@ -58,6 +55,20 @@ enum class FilmSolverType {
                          // multigrid or a lagged CHOLMOD / KLU factorisation (FastLinearSolver)
 };
 
+// How a face between nodes a and b takes its conductance K_f and Couette content C_f (the
+// "Discrete equation" above). Both are second order and agree where ha = hb.
+enum class FaceValues {
+  // K_f = (Ka + Kb) / 2, C_f = (Ca + Cb) / 2: the default, the scheme every cycle figure in
+  // the READMEs and BENCHMARKS.md was computed with.
+  NodalMean,
+  // The face values of a gap linear between the two nodes (the one-dimensional flux through
+  // the face exact): K_f = f_f 2 ha^2 hb^2 / (ha + hb) with f_f the mean of phi_p / (12 eta)
+  // of the two nodes, C_f = (Ca hb + Cb ha) / (ha + hb). Accurate also where the gap changes
+  // by a large factor within a cell (a thin-film patch near contact; lubrication/README.md,
+  // "Face values"), and the only scheme that honours gapFloor_m.
+  LinearGap,
+};
+
 // One open edge of the film region. Ignored for x edges of an x-periodic grid.
 struct FilmEdge {
   // Pressure on the edge, [Pa], default 0 (gauge ambient). MassConserving: must be >=
@@ -91,9 +102,10 @@ struct FilmBoundary {
 // arrays in place between calls: no allocation happens at a fixed size.
 struct FilmProblem {
   Eigen::ArrayXd gap_m;        // nominal gap h per node, [m], > 0 and finite (required)
-  // Optional floor h_c of the gap [m] (0 = none, the default; else finite and > 0, and every
-  // gap_m above it): gap_m are then the film gaps h_f = calcFlooredGap(h, h_c) of a nominal
-  // gap h (GapFloor.h) that may be <= 0 where rough surfaces touch. The face values (above)
+  FaceValues faces = FaceValues::NodalMean;  // face conductance and content (FaceValues)
+  // Optional floor h_c of the gap [m] (0 = none, the default; else finite and > 0, every gap_m
+  // above it, and faces = LinearGap): gap_m are then the film gaps h_f = calcFlooredGap(h,
+  // h_c) of a nominal gap h (GapFloor.h) that may be <= 0 where rough surfaces touch. The face values (above)
   // take h linear between the nodes instead of h_f: near a contact the floor's knee, where
   // h_f bends from h to h_c over a nominal range of a few h_c, is far narrower than a cell,
   // and a face across it integrates K and C through it (exactly for h_f; the flow factors and

@@ -15,9 +15,10 @@
 //                  smooth clamp >= h_c = max(clampFraction * sigma, minimumClampGap_m),
 //                  sigma = getCompositeSigma_m() (PatirChengFlowFactors.h: it changes the
 //                  film gap by < 1.2 % at h/sigma >= 0.5); the gap rate and the squeeze
-//                  basis are multiplied by dh_f/dh (lubrication::calcFlooredGap; the film
-//                  solves with FilmProblem::gapFloor_m = h_c, so its faces follow the
-//                  nominal gap through the clamp's knee at a contact's rim)
+//                  basis are multiplied by dh_f/dh (lubrication::calcFlooredGap); with
+//                  faceValues = LinearGap the film also solves with FilmProblem::gapFloor_m
+//                  = h_c, so its faces follow the nominal gap through the clamp's knee at a
+//                  contact's rim
 //   film           lubrication::FilmSolver on SkirtSideGrid::getFilmGrid(), all four edges
 //                  open at edgePressure_Pa, the inlet supply film on both axial edges (it
 //                  matters only where the liner slides in), the flow-factor model of the
@@ -93,6 +94,11 @@ struct SkirtLubricationParameters {
   // when the flow factors are smooth: the contact law always has one).
   double clampFraction = 0.1;       // [-], > 0, default 0.1
   double minimumClampGap_m = 1e-8;  // floor of h_c [m], > 0, default 10 nm
+  // The film's face values (lubrication::FaceValues): the nodal means by default; LinearGap
+  // (with the clamp as the film's gap floor) converges faster in the grid on a rigid starved
+  // skirt but is not the default: on the coarse elastic skirt it changed fmep by a factor of
+  // 3.6 and made the coupling fail on many more trial steps (plugin/README.md, "Face values").
+  lubrication::FaceValues faceValues = lubrication::FaceValues::NodalMean;
   // Archard wear coefficient k/H of the liner-skirt pair, wear volume per (normal force x
   // sliding distance) [m^2/N] = [1/Pa], >= 0, default 0 (no wear reported).
   double wearCoefficient_m2pN = 0.0;

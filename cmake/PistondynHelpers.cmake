@@ -52,10 +52,12 @@ function(pistondyn_add_library module)
   endif()
 endfunction()
 
-# pistondyn_add_gtest(<name> SOURCES <files...> LIBS <targets...> [LABELS <labels...>])
-# One GoogleTest executable; each TEST becomes its own CTest test.
+# pistondyn_add_gtest(<name> SOURCES <files...> LIBS <targets...> [LABELS <labels...>]
+#                     [TIMEOUT <seconds>])
+# One GoogleTest executable; each TEST becomes its own CTest test (TIMEOUT: each test's,
+# for the slow whole-cycle studies that outlast CTest's default).
 function(pistondyn_add_gtest name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_compile_options(${name} PRIVATE ${PISTONDYN_WARNINGS})
   target_link_libraries(${name} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gtest_main)
@@ -66,11 +68,18 @@ function(pistondyn_add_gtest name)
   # option of gtest_discover_tests writes a list unquoted, so "plugin;cycle" became LABELS
   # plugin and a property named "cycle" (every label after the first was lost and
   # `ctest -LE cycle` ran the slow tests).
-  if(ARG_LABELS)
+  if(ARG_LABELS OR ARG_TIMEOUT)
+    set(properties "")
+    if(ARG_LABELS)
+      string(APPEND properties " LABELS \"${ARG_LABELS}\"")
+    endif()
+    if(ARG_TIMEOUT)
+      string(APPEND properties " TIMEOUT ${ARG_TIMEOUT}")
+    endif()
     set(script "${CMAKE_CURRENT_BINARY_DIR}/${name}_labels.cmake")
     file(WRITE "${script}"
       "foreach(t IN LISTS ${name}_TESTS)\n"
-      "  set_tests_properties(\"\${t}\" PROPERTIES LABELS \"${ARG_LABELS}\")\n"
+      "  set_tests_properties(\"\${t}\" PROPERTIES${properties})\n"
       "endforeach()\n")
     set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${script}")
   endif()

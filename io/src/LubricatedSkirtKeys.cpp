@@ -41,9 +41,8 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
               .byDefault(64.0)
               .means("film grid nodes per side around the skirt"),
           K::wholeNumber("liner.grid.nodes_axial", 3, 1000)
-              .byDefault(96.0)
-              .means("film grid nodes per side along the skirt (96: the starved skirt's fmep "
-                     "converges under axial refinement, plugin/README.md)"),
+              .byDefault(48.0)
+              .means("film grid nodes per side along the skirt"),
           K::number("liner.grid.axial_clustering")
               .byDefault(0.0)
               .within(Bounds::between(0, 10))

@@ -54,7 +54,7 @@ TEST(SkirtDeck, TheGasolineExampleSectionBecomesTheElementsParametersInSI) {
   EXPECT_EQ(p.gap.referenceTemperature_degC, 20.0);
   EXPECT_EQ(p.grid.arcWidth_rad, 80.0 * kDeg);
   EXPECT_EQ(p.grid.nPhi, 64);
-  EXPECT_EQ(p.grid.nY, 96);
+  EXPECT_EQ(p.grid.nY, 48);
   EXPECT_EQ(p.grid.axialClustering, 0.0);
   // The profile table: 101 rows, -25 .. +25 mm, 0.12 um/mm^2 (y + 6 mm)^2.
   const auto& axial = p.gap.skirtProfile.axial;

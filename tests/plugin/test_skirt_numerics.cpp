@@ -1,7 +1,7 @@
 // Numerics of whole-cycle skirt runs on the passenger-car example (fully flooded, where the
 // cycle is periodic): the step size, the cavitation model, the periodic steady state, the
 // bound on the lateral motion, and the doubling of the film grid (half the deck's grid ->
-// the deck's, 32 x 48 -> 64 x 96).
+// the deck's, 32 x 24 -> 64 x 48).
 
 #include <gtest/gtest.h>
 
@@ -227,7 +227,7 @@ TEST(SkirtNumerics, LateralMotionStaysWithinClearanceAndAsperityCompliance) {
 }
 
 // Grid convergence (the criterion): doubling the film grid in both directions, from
-// half the deck's grid to the deck's (32 x 48 -> 64 x 96 per side), changes the periodic
+// half the deck's grid to the deck's (32 x 24 -> 64 x 48 per side), changes the periodic
 // fully flooded fmep by less than 2 %. The starved skirt's doubling from the deck's grid is
 // the slow test StarvedSkirtGrid (test_starved_grid_convergence.cpp).
 TEST(SkirtNumerics, DoublingTheFilmGridChangesFullyFloodedFmepByLessThanTwoPercent) {

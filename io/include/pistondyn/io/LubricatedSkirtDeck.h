@@ -7,7 +7,7 @@
 //     model: lubricated_skirt
 //     cold_radial_clearance_um: 40        # required
 //     reference_temperature_degC: 20
-//     grid: {arc_width_deg: 80, nodes_circumferential: 64, nodes_axial: 96,
+//     grid: {arc_width_deg: 80, nodes_circumferential: 64, nodes_axial: 48,
 //            axial_clustering: 0, circumferential_clustering: 0}
 //     skirt_profile: {axial_profile_file: profile.csv, mirrored: false,
 //                     ovality_diametral_um: 0, ovality_cos4_coefficient: 0}  # or ovality_file

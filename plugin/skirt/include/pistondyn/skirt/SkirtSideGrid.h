@@ -69,8 +69,7 @@ struct SkirtSideGridParameters {
   double radius_m = 0.0;               // nominal skirt radius R = bore / 2 [m], > 0 (required)
   double arcWidth_rad = 0.0;           // arc width Phi of the side [rad], 0 < Phi < pi (required)
   int nPhi = 64;                       // nodes around, >= 3, default 64
-  int nY = 96;                         // nodes along, >= 3, default 96 (plugin/README.md: the
-                                       // starved skirt's grid study)
+  int nY = 48;                         // nodes along, >= 3, default 48
   double skirtTopHeight_m = 0.0;       // skirt top edge above the pin axis [m] (negative if below)
   double skirtLength_m = 0.0;          // axial skirt length L [m], > 0 (required)
   // Clustering of the axial nodes towards the skirt's top and bottom edges (tanh stretching of

@@ -61,7 +61,7 @@ void FilmSystem::resizeFor(const FilmGrid& grid) {
        {&tE,         &tW,   &tN,      &tS,       &diagP,     &couE,      &couN,  &aOut,
         &inCx,       &inCy, &squeeze, &capacity, &thetaPrev, &thetaCoef, &src,   &fixedPressure,
         &fixedTheta, &hT,   &dhTdh,   &eta,      &phiF,      &phiFs,     &phiFp, &p,
-        &theta}) {
+        &theta,      &fillCorrE, &fillCorrN, &fillCorrOut, &fillCorrScratch}) {
     a->setZero(n);
   }
   inIx.assign(n, 0);
@@ -424,6 +424,10 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
   if (!(residualScale > 0.0))
     residualScale = 1.0;
 
+  // Needs the capacities and the fixed nodes; its fluxes are bounded by the capacities, so
+  // they do not enter the residual's scale.
+  assembleFillFractionCorrection(grid, pr);
+
   // Sweep order for Gauss-Seidel: lexicographic, following the sliding direction.
   order.clear();
   const bool up = Uy >= 0.0, right = Ux >= 0.0;
@@ -465,13 +469,17 @@ void FilmSystem::fluxDiagnostics(double& inflow, double& outflow, double& storag
     storage += theta[k] * (squeeze[k] + capacity[k]) - capacity[k] * thetaPrev[k];
     const int e = nbE[k], w = nbW[k], no = nbN[k], s = nbS[k];
     if (e != k && status[e] == kFixed)
-      add(tE[k] * (p[k] - p[e]) + couE[k] * (couE[k] >= 0.0 ? theta[k] : theta[e]));
+      add(tE[k] * (p[k] - p[e]) + couE[k] * (couE[k] >= 0.0 ? theta[k] : theta[e]) +
+          fillCorrE[k]);
     if (w != k && status[w] == kFixed)
-      add(tW[k] * (p[k] - p[w]) - couE[w] * (couE[w] >= 0.0 ? theta[w] : theta[k]));
+      add(tW[k] * (p[k] - p[w]) - couE[w] * (couE[w] >= 0.0 ? theta[w] : theta[k]) -
+          fillCorrE[w]);
     if (no != k && status[no] == kFixed)
-      add(tN[k] * (p[k] - p[no]) + couN[k] * (couN[k] >= 0.0 ? theta[k] : theta[no]));
+      add(tN[k] * (p[k] - p[no]) + couN[k] * (couN[k] >= 0.0 ? theta[k] : theta[no]) +
+          fillCorrN[k]);
     if (s != k && status[s] == kFixed)
-      add(tS[k] * (p[k] - p[s]) - couN[s] * (couN[s] >= 0.0 ? theta[s] : theta[k]));
+      add(tS[k] * (p[k] - p[s]) - couN[s] * (couN[s] >= 0.0 ? theta[s] : theta[k]) -
+          fillCorrN[s]);
   }
 }
 

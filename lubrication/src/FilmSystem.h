@@ -44,6 +44,10 @@ struct FilmSystem {
   Eigen::ArrayXd capacity;      // A hT / dt, [m^3/s] (0 when steady or not JFO)
   Eigen::ArrayXd thetaPrev;     // fill fraction at the start of the step (JFO)
   Eigen::ArrayXd thetaCoef;     // aOut + squeeze + capacity: coefficient of the own theta
+  // FillFractionFlux::LimitedSecondOrder: the explicit correction flux through the east /
+  // north face (signed along +x / +y, [m^3/s]) and its net outflow per node; zero otherwise.
+  Eigen::ArrayXd fillCorrE, fillCorrN, fillCorrOut;
+  Eigen::ArrayXd fillCorrScratch;  // the limiter's per-node sums (no allocation per solve)
   Eigen::ArrayXd src;           // Reynolds-mode constant part: aOut - inflow(theta=1) + squeeze
   double residualScale = 1.0;   // F of the residual definition
   // Mean diagP over the non-fixed nodes (1 when there is none or it is not positive): the
@@ -77,6 +81,10 @@ struct FilmSystem {
   // The rest of assemble from nodeFactors (which must belong to problem.gap_m): lets a caller
   // swap in the factors of some nodes without re-evaluating all of them.
   void assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem& problem);
+  // The explicit second-order fill-fraction correction (FillFractionFlux::LimitedSecondOrder,
+  // FillFractionFlux.cpp) into fillCorrE / fillCorrN / fillCorrOut, from the assembled
+  // Couette fluxes, capacities and fixed-node status.
+  void assembleFillFractionCorrection(const FilmGrid& grid, const FilmProblem& problem);
   std::vector<NodeFlowFactors> nodeFactors;  // of the last assembly
 
   // Floored gaps (FilmProblem::gapFloor_m): the flow factors at the knee's breakpoints
@@ -96,7 +104,7 @@ struct FilmSystem {
   double residualAt(int k) const {
     const double P = poiseuilleAt(k, p.data());
     const double in = inCx[k] * theta[inIx[k]] + inCy[k] * theta[inIy[k]];
-    return P + theta[k] * thetaCoef[k] - in - capacity[k] * thetaPrev[k];
+    return P + theta[k] * thetaCoef[k] - in - capacity[k] * thetaPrev[k] + fillCorrOut[k];
   }
 
   // Relative residual of the current iterate (definition in FilmProblem.h).

@@ -42,7 +42,8 @@ double elrodAdamsSweep(FilmSystem& s, double omega, double omegaTheta) {
   for (const int k : s.order) {
     const double P = s.poiseuilleAt(k, p);
     const double G =
-        -(s.inCx[k] * th[s.inIx[k]] + s.inCy[k] * th[s.inIy[k]]) - s.capacity[k] * s.thetaPrev[k];
+        -(s.inCx[k] * th[s.inIx[k]] + s.inCy[k] * th[s.inIy[k]]) - s.capacity[k] * s.thetaPrev[k] +
+        s.fillCorrOut[k];
     const double a = s.thetaCoef[k];
     if (th[k] >= 1.0) {
       const double r = P + a + G;

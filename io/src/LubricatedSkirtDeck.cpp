@@ -449,6 +449,10 @@ void readSurfaces(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
   p.lubrication.faceValues = film.getChoice<lubrication::FaceValues>(
       skirtKey("liner.film.faces"), {{"nodal_mean", lubrication::FaceValues::NodalMean},
                                      {"linear_gap", lubrication::FaceValues::LinearGap}});
+  p.lubrication.fillFractionFlux = film.getChoice<lubrication::FillFractionFlux>(
+      skirtKey("liner.film.fill_fraction_flux"),
+      {{"upwind", lubrication::FillFractionFlux::Upwind},
+       {"second_order", lubrication::FillFractionFlux::LimitedSecondOrder}});
   p.lubrication.solver.solver = film.getChoice<lubrication::FilmSolverType>(
       skirtKey("liner.film.solver"),
       {{"fast", lubrication::FilmSolverType::FastActiveSet},

@@ -196,6 +196,11 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
               .byDefault("nodal_mean")
               .means("film face conductance: mean of the nodes', or exact for a gap linear "
                      "between them (plugin/README.md, \"Face values\")"),
+          K::choice("liner.film.fill_fraction_flux", {"upwind", "second_order"})
+              .byDefault("upwind")
+              .means("fill fraction of the film's Couette faces (mass-conserving): the "
+                     "upwind node's, or limited second order (plugin/README.md, \"Fill-"
+                     "fraction flux\")"),
           K::choice("liner.film.solver", {"fast", "reference_gauss_seidel"})
               .byDefault("fast")
               .means("film solver (active set with CG/GMRES, or the thesis' projected "

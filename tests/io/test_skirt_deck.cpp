@@ -99,7 +99,10 @@ TEST(SkirtDeck, TheGasolineExampleSectionBecomesTheElementsParametersInSI) {
   EXPECT_EQ(p.boundaryFriction.regularisationSpeed_mps, 1.0 * 1e-3);
   EXPECT_EQ(p.lubrication.wearCoefficient_m2pN, 0.0);
   EXPECT_EQ(p.lubrication.cavitation, pistondyn::lubrication::CavitationModel::MassConserving);
-  EXPECT_EQ(p.lubrication.faceValues, pistondyn::lubrication::FaceValues::NodalMean);
+  // Second order along the sliding direction (the deck's choice, not the keys' defaults).
+  EXPECT_EQ(p.lubrication.faceValues, pistondyn::lubrication::FaceValues::LinearGap);
+  EXPECT_EQ(p.lubrication.fillFractionFlux,
+            pistondyn::lubrication::FillFractionFlux::LimitedSecondOrder);
   EXPECT_EQ(p.lubrication.solver.solver, pistondyn::lubrication::FilmSolverType::FastActiveSet);
   EXPECT_EQ(p.lubrication.solver.tolerance, 1e-8);
   // The one tertiary switch reaches the element and the crank train.
@@ -189,6 +192,8 @@ TEST_F(FullSkirtDeck, EveryKeyReachesTheElementInSI) {
   EXPECT_EQ(p.lubrication.wearCoefficient_m2pN, 1e-6 * 1e-9);  // mm^3/(N m) -> m^3/(N m)
   EXPECT_EQ(p.lubrication.cavitation, pistondyn::lubrication::CavitationModel::Reynolds);
   EXPECT_EQ(p.lubrication.faceValues, pistondyn::lubrication::FaceValues::LinearGap);
+  EXPECT_EQ(p.lubrication.fillFractionFlux,
+            pistondyn::lubrication::FillFractionFlux::LimitedSecondOrder);
   EXPECT_EQ(p.lubrication.solver.solver,
             pistondyn::lubrication::FilmSolverType::ReferenceGaussSeidel);
   EXPECT_EQ(p.lubrication.solver.tolerance, 1e-7);

@@ -338,6 +338,7 @@ struct SkirtSideLubrication::Impl {
     }
     problem.referencePressure_Pa = p.edgePressure_Pa;
     problem.faces = p.faceValues;
+    problem.fillFractionFlux = p.fillFractionFlux;
     // LinearGap faces integrate along the nominal gap through the clamp's knee (GapFloor.h).
     problem.gapFloor_m = p.faceValues == lubrication::FaceValues::LinearGap ? clamp_m : 0.0;
     clampSlope.resize(n);

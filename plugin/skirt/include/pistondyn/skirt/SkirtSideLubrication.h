@@ -100,6 +100,11 @@ struct SkirtLubricationParameters {
   // without the floor, fmep rose 2.2 to 3.6 fold with 6 to 30 times the failed trial steps;
   // plugin/README.md, "Face values").
   lubrication::FaceValues faceValues = lubrication::FaceValues::NodalMean;
+  // How the film's Couette faces take the fill fraction (lubrication::FillFractionFlux,
+  // mass-conserving model with the fill history only): the implicit upwind value by default,
+  // or the limited second-order value (plugin/README.md, "Known limitations": the starved
+  // skirt's grid error along the sliding direction).
+  lubrication::FillFractionFlux fillFractionFlux = lubrication::FillFractionFlux::Upwind;
   // Archard wear coefficient k/H of the liner-skirt pair, wear volume per (normal force x
   // sliding distance) [m^2/N] = [1/Pa], >= 0, default 0 (no wear reported).
   double wearCoefficient_m2pN = 0.0;

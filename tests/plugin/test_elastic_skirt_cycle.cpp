@@ -35,7 +35,9 @@ struct Outcome {
 plugin::LubricatedSkirtParameters deckParameters(bool elastic) {
   std::vector<std::string> overrides = {"liner.grid.nodes_circumferential=32",
                                         "liner.grid.nodes_axial=24", "liner.film.tolerance=1e-11",
-                                        "liner.parallel_sides=false"};
+                                        "liner.parallel_sides=false",
+                                        // both cases on the faces the elastic skirt needs
+                                        "liner.film.faces=nodal_mean"};
   if (elastic) {
     const std::vector<std::string> fe = ts::gasolineElasticSkirtOverrides();
     overrides.insert(overrides.end(), fe.begin(), fe.end());

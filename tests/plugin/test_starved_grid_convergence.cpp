@@ -5,12 +5,14 @@
 // same run on the doubled grid (128 x 96). The grid is read from the deck, so the test
 // follows a change of the default.
 //
-// FAILS today (plugin/README.md, known limitations): -8.4 % (3.208 -> 2.937 kPa). The study
-// behind it: the circumferential spacing hardly matters (64 x 96 2.947, 128 x 96 2.937 kPa),
-// the axial spacing converges at first order (64 x 48 3.208, 64 x 96 2.947, 128 x 192
-// 2.818): two first-order discretisations along y, the fill fraction's upwind transport and
-// the nodal-mean faces at a contact's rim (an uncommitted experiment fixing both gave -1.7 %).
-// Label `slow` (about 30 min on one core): outside the default run.
+// History: with the nodal-mean faces and the upwind fill fraction (the keys' defaults) it
+// failed, -8.4 % (3.208 -> 2.937 kPa): the circumferential spacing hardly matters, the axial
+// spacing converged at first order, because two discretisations along y were first order,
+// the fill fraction's upwind transport and the nodal-mean faces at a contact's rim. The deck
+// now takes the linear-gap faces and the limited second-order fill-fraction flux
+// (plugin/README.md, "Known limitations").
+// Measured 2026-12-05: 2.8613 -> 2.8065 kPa, -1.91 % (374 s + 698 s on a shared machine).
+// Label `slow` (about 18 min on one core): outside the default run.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -73,11 +73,14 @@ inline plugin::LubricatedSkirtParameters exampleSkirtParameters(int nPhi, int nY
 
 // The --set overrides that give the example deck the gasoline piston's committed FE skirt
 // (examples/fe/gasoline_1400_2000rpm: compliance and node table with its gas column; paths
-// relative to the deck's folder). Index 0 the compliance, 1 the node table.
+// relative to the deck's folder). Index 0 the compliance, 1 the node table, 2 the nodal-mean
+// faces the elastic skirt needs (the deck's linear-gap faces broke its coupling:
+// plugin/README.md, "Face values").
 inline std::vector<std::string> gasolineElasticSkirtOverrides() {
   return {"liner.elastic_skirt.compliance_file=../../fe/gasoline_1400_2000rpm/"
           "skirt_compliance.mtx",
-          "liner.elastic_skirt.nodes_file=../../fe/gasoline_1400_2000rpm/skirt_nodes.csv"};
+          "liner.elastic_skirt.nodes_file=../../fe/gasoline_1400_2000rpm/skirt_nodes.csv",
+          "liner.film.faces=nodal_mean"};
 }
 
 // The example deck's stepper for whole-cycle tests: linearly implicit BDF2, its 0.25 deg

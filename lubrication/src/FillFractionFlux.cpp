@@ -33,6 +33,7 @@ void FilmSystem::assembleFillFractionCorrection(const FilmGrid& grid, const Film
   if (!use)
     return;
   const Eigen::ArrayXd& th = pr.previousFillFraction;
+  previousFill = th;  // no allocation at a fixed size (resizeFor sized it)
   const int nx = grid.nx();
 
   // Raw correction of one face with signed full-film Couette flux F from node `lo` to node
@@ -71,6 +72,26 @@ void FilmSystem::assembleFillFractionCorrection(const FilmGrid& grid, const Film
     }
   }
 
+  if (freezeFillLimiter) {
+    // The derivative assemblies (FilmSolver.cpp): the factors of the solve's own assembly,
+    // so that a node's balance depends on the gaps of its five-point stencil only.
+    fillCorrE *= fillLimitE;
+    fillCorrN *= fillLimitN;
+  } else {
+    calcFillLimiter();
+  }
+  fillCorrOut.setZero();
+  for (int k = 0; k < n; ++k) {
+    fillCorrOut[k] += fillCorrE[k] + fillCorrN[k];
+    if (fillCorrE[k] != 0.0)
+      fillCorrOut[nbE[k]] -= fillCorrE[k];
+    if (fillCorrN[k] != 0.0)
+      fillCorrOut[nbN[k]] -= fillCorrN[k];
+  }
+}
+
+void FilmSystem::calcFillLimiter() {
+  const Eigen::ArrayXd& th = previousFill;
   // Zalesak's limiter on the correction fluxes: per unknown node, the total the corrections
   // would take out of (put into) its oil content over the step must not move its reference
   // fill fraction below (above) the smallest (largest) of its neighbourhood at the start of
@@ -119,26 +140,18 @@ void FilmSystem::assembleFillFractionCorrection(const FilmGrid& grid, const Film
     takeOut[k] = down;
     putIn[k] = up;
   }
-  auto limit = [&](double& flux, int lo, int hi) {
+  // A positive flux takes oil out of lo and puts it into hi.
+  auto factor = [&](double flux, int lo, int hi) {
     if (flux == 0.0)
-      return;
-    // flux > 0 takes oil out of lo and into hi.
-    const double factor =
-        flux > 0.0 ? std::min(takeOut[lo], putIn[hi]) : std::min(putIn[lo], takeOut[hi]);
-    flux *= factor;
+      return 1.0;
+    return flux > 0.0 ? std::min(takeOut[lo], putIn[hi]) : std::min(putIn[lo], takeOut[hi]);
   };
   for (int k = 0; k < n; ++k) {
-    limit(fillCorrE[k], k, nbE[k]);
-    limit(fillCorrN[k], k, nbN[k]);
+    fillLimitE[k] = factor(fillCorrE[k], k, nbE[k]);
+    fillLimitN[k] = factor(fillCorrN[k], k, nbN[k]);
   }
-  fillCorrOut.setZero();
-  for (int k = 0; k < n; ++k) {
-    fillCorrOut[k] += fillCorrE[k] + fillCorrN[k];
-    if (fillCorrE[k] != 0.0)
-      fillCorrOut[nbE[k]] -= fillCorrE[k];
-    if (fillCorrN[k] != 0.0)
-      fillCorrOut[nbN[k]] -= fillCorrN[k];
-  }
+  fillCorrE *= fillLimitE;
+  fillCorrN *= fillLimitN;
 }
 
 }  // namespace pistondyn::lubrication::detail

@@ -410,6 +410,12 @@ void FilmSolver::Impl::calcGapColumns(const FilmGrid& grid, const FilmProblem& p
                                       Eigen::Index first) {
   const Eigen::Index g = pr.gapBasis.cols();
   gapProblem = pr;  // once per call (same sizes after the first: no allocation)
+  // The perturbed assemblies keep the solve's fill-fraction limiter factors
+  // (FilmSystem::freezeFillLimiter): the coloured Jacobian needs five-point stencils.
+  gapSystem.resizeFor(grid);
+  gapSystem.fillLimitE = sys.fillLimitE;
+  gapSystem.fillLimitN = sys.fillLimitN;
+  gapSystem.freezeFillLimiter = true;
   if (calcBalanceGapJacobian(grid, pr)) {
     for (Eigen::Index c = 0; c < g; ++c)
       for (int k = 0; k < sys.n; ++k) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "FilmSystem.h"
 #include "test_film_support.h"
 
 namespace pistondyn::lubrication {
@@ -114,7 +115,14 @@ void expectCompleteSolveDerivatives(const FilmGrid& g, const FilmProblem& pr,
 // started from the base so that they keep its set) agrees to 1e-5 of the column's size (the
 // difference quotient loses ~5 digits of the solve tolerance; its truncation is ~1e-10; the
 // solver's coloured one-sided perturbations are good to ~2e-6).
-void checkAgainstCompleteSolves(CavitationModel model, const std::string& tag) {
+// limitedFlux: mass-conserving, FillFractionFlux::LimitedSecondOrder, and a history whose fill
+// fraction ramps from 0.4 at the bottom edge to 1 at mid-height, so that the explicit
+// correction fluxes are non-zero on most faces (checked on the assembled system): the
+// derivative then includes their dependence on the gaps (through the faces' Couette
+// contents), with the limiter's factors frozen at the solve's so that the coloured Jacobian
+// keeps five-point stencils (FilmSystem::freezeFillLimiter).
+void checkAgainstCompleteSolves(CavitationModel model, const std::string& tag,
+                                bool limitedFlux = false) {
   const test::SkirtPatch sp;
   const test::GaussianRoughFactors rough(0.8e-6);
   const FilmGrid g = sp.grid(36, 28);
@@ -122,6 +130,16 @@ void checkAgainstCompleteSolves(CavitationModel model, const std::string& tag) {
   pr.flowFactors = &rough;
   if (model == CavitationModel::MassConserving)
     test::SkirtPatch::setPartlyFilledHistory(g, 0.6, pr);
+  if (limitedFlux) {
+    pr.fillFractionFlux = FillFractionFlux::LimitedSecondOrder;
+    const int half = g.ny() / 2;
+    for (int j = 0; j < g.ny(); ++j)
+      for (int i = 0; i < g.nx(); ++i)
+        pr.previousFillFraction[g.nodeIndex(i, j)] = j >= half ? 1.0 : 0.4 + 0.6 * j / half;
+    detail::FilmSystem assembled;
+    assembled.assemble(g, pr);
+    ASSERT_GT(assembled.fillCorrOut.abs().maxCoeff(), 0.0) << tag;
+  }
   pr.squeezeBasis = sp.squeezeBasis(g);  // asked together with the gap columns
   pr.gapBasis = gapShapes(sp, g);
   FilmSolver solver(test::tightOptions(FilmSolverType::FastActiveSet, 1e-12));
@@ -151,6 +169,10 @@ TEST(FilmGapDerivative, MatchesCompleteSolvesReynolds) {
 
 TEST(FilmGapDerivative, MatchesCompleteSolvesMassConserving) {
   checkAgainstCompleteSolves(CavitationModel::MassConserving, "jfo");
+}
+
+TEST(FilmGapDerivative, MatchesCompleteSolvesWithTheLimitedFillFractionFlux) {
+  checkAgainstCompleteSolves(CavitationModel::MassConserving, "jfoLimited", true);
 }
 
 // A coordinate that moves the gap and, backward Euler over a step dt, its rate

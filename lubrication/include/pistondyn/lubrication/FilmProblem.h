@@ -19,6 +19,7 @@
 // A_k the control-volume area. theta_up is the fill fraction of the upwind node (mass-conserving
 // model only; 1 otherwise): in a full film this is exactly the central second-order Reynolds
 // discretisation, in a cavitated zone it is the monotone upwind transport of the oil content.
+// FillFractionFlux::LimitedSecondOrder (below) adds a known correction flux per face to it.
 // Without a time step (steady state, dt = inf) the last term vanishes.
 //
 // Residual tolerance (same definition for both solvers)
@@ -80,14 +81,18 @@ enum class FillFractionFlux {
   // theta_up + (1/2) minmod(theta_up - theta_upup (scaled to the face's spacing),
   // theta_down - theta_up), the limited second-order (MUSCL) face value, with the correction
   // to the upwind value taken from previousFillFraction: the upwind part stays implicit, the
-  // second-order part is an explicit face flux (deferred correction lagged by one step). A face
-  // whose upwind node has no upwind neighbour stays first order. The correction fluxes are
-  // scaled down (Zalesak's flux limiter) so that alone they would move no unknown node's fill
-  // fraction of the start of the step outside [0, 1]; they cancel between the two nodes of
-  // every face, so the scheme conserves mass exactly. Second order in space (a cavitated
+  // second-order part is an explicit face flux (deferred correction lagged by one step; it
+  // adds a known term to the net outflow of the "Discrete equation" above). A face whose
+  // upwind node has no upwind neighbour stays first order. The correction fluxes are scaled
+  // down (Zalesak's flux limiter) so that alone they would move no unknown node's storage
+  // reference outside the range of previousFillFraction over the node and its four
+  // neighbours (within [0, 1]); they cancel between the two nodes of every face, so the
+  // scheme conserves mass exactly. The face value may exceed 1 for one step where its
+  // upwind node fills during the step (still conservative). Second order in space (a cavitated
   // film's oil transport: L1 order 1.89 against 0.94 upwind). Bounded (no new extremum at a
   // front) with backward Euler up to Courant numbers |U| dt / (2 d) of 0.9 and with the BDF2
-  // history up to 0.25 (the skirt's: ~0.1 on 64 x 48 at 0.25 deg steps); beyond that BDF2
+  // history up to 0.25 (the skirt's peak at its largest 0.25 deg steps, 2000 rpm: ~0.14 on
+  // 64 x 48, ~0.29 on 128 x 96); beyond that BDF2
   // overshoots (0.3: +8e-5 of a unit front, 0.5: +0.022; BDF2 with the upwind value alone at
   // 0.9: +0.004). test_film_fill_fraction_flux.cpp, lubrication/README.md, "Fill-fraction
   // flux".

@@ -33,8 +33,6 @@ void FilmSystem::assembleFillFractionCorrection(const FilmGrid& grid, const Film
   if (!use)
     return;
   const Eigen::ArrayXd& th = pr.previousFillFraction;
-  previousFill = th;  // no allocation at a fixed size (resizeFor sized it)
-  const int nx = grid.nx();
 
   // Raw correction of one face with signed full-film Couette flux F from node `lo` to node
   // `hi` (+x or +y): with u the upwind node, d the downwind one and uu the node upwind of u,
@@ -78,7 +76,7 @@ void FilmSystem::assembleFillFractionCorrection(const FilmGrid& grid, const Film
     fillCorrE *= fillLimitE;
     fillCorrN *= fillLimitN;
   } else {
-    calcFillLimiter();
+    calcFillLimiter(th);
   }
   fillCorrOut.setZero();
   for (int k = 0; k < n; ++k) {
@@ -90,8 +88,7 @@ void FilmSystem::assembleFillFractionCorrection(const FilmGrid& grid, const Film
   }
 }
 
-void FilmSystem::calcFillLimiter() {
-  const Eigen::ArrayXd& th = previousFill;
+void FilmSystem::calcFillLimiter(const Eigen::ArrayXd& th) {
   // Zalesak's limiter on the correction fluxes: per unknown node, the total the corrections
   // would take out of (put into) its oil content over the step must not move its reference
   // fill fraction below (above) the smallest (largest) of its neighbourhood at the start of

@@ -61,8 +61,8 @@ void FilmSystem::resizeFor(const FilmGrid& grid) {
        {&tE,         &tW,   &tN,      &tS,       &diagP,     &couE,      &couN,  &aOut,
         &inCx,       &inCy, &squeeze, &capacity, &thetaPrev, &thetaCoef, &src,   &fixedPressure,
         &fixedTheta, &hT,   &dhTdh,   &eta,      &phiF,      &phiFs,     &phiFp, &p,
-        &theta,      &fillCorrE, &fillCorrN, &fillCorrOut, &fillCorrScratch, &fillLimitE, &fillLimitN,
-        &previousFill}) {
+        &theta,      &fillCorrE, &fillCorrN, &fillCorrOut, &fillCorrScratch, &fillLimitE,
+        &fillLimitN}) {
     a->setZero(n);
   }
   inIx.assign(n, 0);

@@ -48,13 +48,13 @@ struct FilmSystem {
   // north face (signed along +x / +y, [m^3/s]) and its net outflow per node; zero otherwise.
   Eigen::ArrayXd fillCorrE, fillCorrN, fillCorrOut;
   Eigen::ArrayXd fillCorrScratch;  // the limiter's per-node sums (no allocation per solve)
-  // The limiter's factor per east / north face (in [0, 1]) and the fill fraction it used.
+  // The limiter's factor per east / north face (in [0, 1]).
   // With freezeFillLimiter the assembly applies fillLimitE / fillLimitN as they are instead
   // of recomputing them: the gap-derivative assemblies copy them from the solve's system, so
   // that the derivative of a node's balance stays within its five-point stencil (the
   // limiter's own dependence on the gaps two nodes away is left out, a frozen-limiter
   // Jacobian).
-  Eigen::ArrayXd fillLimitE, fillLimitN, previousFill;
+  Eigen::ArrayXd fillLimitE, fillLimitN;
   bool freezeFillLimiter = false;
   Eigen::ArrayXd src;           // Reynolds-mode constant part: aOut - inflow(theta=1) + squeeze
   double residualScale = 1.0;   // F of the residual definition
@@ -93,8 +93,9 @@ struct FilmSystem {
   // FillFractionFlux.cpp) into fillCorrE / fillCorrN / fillCorrOut, from the assembled
   // Couette fluxes, capacities and fixed-node status.
   void assembleFillFractionCorrection(const FilmGrid& grid, const FilmProblem& problem);
-  // Zalesak's limiter: the face factors fillLimitE / fillLimitN, applied to the raw fluxes.
-  void calcFillLimiter();
+  // Zalesak's limiter: the face factors fillLimitE / fillLimitN from the fill fraction at
+  // the start of the step (theta_n), applied to the raw fluxes.
+  void calcFillLimiter(const Eigen::ArrayXd& theta_n);
   std::vector<NodeFlowFactors> nodeFactors;  // of the last assembly
 
   // Floored gaps (FilmProblem::gapFloor_m): the flow factors at the knee's breakpoints

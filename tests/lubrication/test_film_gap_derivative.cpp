@@ -7,6 +7,7 @@
 #include <string>
 
 #include "FilmSystem.h"
+#include "pistondyn/lubrication/GapFloor.h"
 #include "test_film_support.h"
 
 namespace pistondyn::lubrication {
@@ -221,6 +222,31 @@ TEST(FilmGapDerivative, BadBasisNamesTheMember) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("problem.gapRateBasis"), std::string::npos) << e.what();
   }
+}
+
+}  // namespace
+}  // namespace pistondyn::lubrication
+
+namespace pistondyn::lubrication {
+namespace {
+
+// GapFloor.h: the floored gap's slope and curvature against central differences of the
+// formula itself, across the knee (h from deep overlap to far above the floor h_c).
+TEST(GapFloor, SlopeAndCurvatureMatchCentralDifferences) {
+  const double hc = 5e-8;
+  for (const double h : {-1e-6, -1e-7, -2e-8, 0.0, 3e-8, 5e-8, 8e-8, 2e-7, 2e-6}) {
+    const FlooredGap f = calcFlooredGap(h, hc);
+    const double d = 1e-4 * hc;
+    const FlooredGap up = calcFlooredGap(h + d, hc), down = calcFlooredGap(h - d, hc);
+    const double slope = (up.film_m - down.film_m) / (2.0 * d);
+    const double curvature = (up.slope - down.slope) / (2.0 * d);
+    EXPECT_NEAR(f.slope, slope, 1e-7) << "h = " << h;
+    EXPECT_NEAR(f.curvature_per_m, curvature, 1e-6 * f.curvature_per_m + 1e-3) << "h = " << h;
+    EXPECT_GT(f.curvature_per_m, 0.0);
+  }
+  // At the knee h = h_c: slope 1/2, curvature 1 / (2 h_c).
+  EXPECT_DOUBLE_EQ(calcFlooredGap(hc, hc).slope, 0.5);
+  EXPECT_NEAR(calcFlooredGap(hc, hc).curvature_per_m, 0.5 / hc, 1e-12 / hc);
 }
 
 }  // namespace

@@ -189,7 +189,7 @@ struct SkirtSideLubrication::Impl {
   lubrication::FilmProblem problem;
   lubrication::FilmState warmStart;
   bool haveWarmStart = false;
-  Eigen::ArrayXd clampSlope, pressureColumn, shearColumnX, shearColumnY, zero;
+  Eigen::ArrayXd clampSlope, clampCurvature, rateCurvature, pressureColumn, shearColumnX, shearColumnY, zero;
   Eigen::ArrayXd couetteY, couetteX;     // film shear on the skirt (Couette + Poiseuille)
   Eigen::ArrayXXd boundaryX, boundaryY;  // boundary shear as grid-shaped scratch
   // Outward normal of the side's centre line (cos phi_c, sin phi_c) in (x, z).
@@ -342,6 +342,7 @@ struct SkirtSideLubrication::Impl {
     // LinearGap faces integrate along the nominal gap through the clamp's knee (GapFloor.h).
     problem.gapFloor_m = p.faceValues == lubrication::FaceValues::LinearGap ? clamp_m : 0.0;
     clampSlope.resize(n);
+    clampCurvature.resize(n);
     zero = Eigen::ArrayXd::Zero(n);
   }
 };
@@ -387,6 +388,7 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
     const lubrication::FlooredGap f = lubrication::calcFlooredGap(gap.gap_m[k], hc);
     p.gap_m[k] = f.film_m;
     m.clampSlope[k] = f.slope;
+    m.clampCurvature[k] = f.curvature_per_m;
   }
   p.gapRate_mps = gap.gapRate_mps * m.clampSlope;
   const Eigen::Index extra = in.extraSqueezeBasis ? in.extraSqueezeBasis->cols() : 0;
@@ -398,6 +400,17 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
         (in.extraSqueezeBasis->col(c).array() * m.clampSlope).matrix();
   scaleRowsInto(in.extraGapBasis, m.clampSlope, p.gapBasis);
   scaleRowsInto(in.extraGapRateBasis, m.clampSlope, p.gapRateBasis);
+  if (in.extraGapBasis) {
+    // The film's rate is slope(h) dh/dt, so a gap change moves it also through the clamp's
+    // curvature: d(rate_f)/du_g = slope d(dh/dt)/du_g + curvature dh/dt dh/du_g. Where the gap
+    // closes fast near the floor this part is as large as the others (the elastic coupling's
+    // Newton steps overshot by 2-3.5x without it, 2026-12-05).
+    m.rateCurvature = m.clampCurvature * gap.gapRate_mps;
+    if (p.gapRateBasis.size() == 0)
+      p.gapRateBasis.setZero(n, in.extraGapBasis->cols());
+    for (Eigen::Index c = 0; c < in.extraGapBasis->cols(); ++c)
+      p.gapRateBasis.col(c) += (in.extraGapBasis->col(c).array() * m.rateCurvature).matrix();
+  }
   p.slidingVelocity_mps =
       Eigen::Vector2d(in.slidingVelocityCircumferential_mps, in.slidingVelocityAxial_mps);
   p.viscosity_Pas = in.viscosity_Pas;

@@ -19,13 +19,17 @@ namespace pistondyn::lubrication {
 struct FlooredGap {
   double film_m = 0.0;  // h_f [m]
   double slope = 0.0;   // dh_f/dh [-]
+  // d^2h_f/dh^2 = h_c^2 / (2 ((h - h_c)^2 + h_c^2)^(3/2)) [1/m] (> 0): a film rate
+  // slope * dh/dt changes with the gap through it.
+  double curvature_per_m = 0.0;
 };
 
 // Inputs: nominal gap h [m] (finite), floor h_c [m] (> 0).
 inline FlooredGap calcFlooredGap(double nominal_m, double floor_m) {
   const double d = nominal_m - floor_m;
   const double root = std::sqrt(d * d + floor_m * floor_m);
-  return {0.5 * (nominal_m + floor_m + root), 0.5 * (1.0 + d / root)};
+  return {0.5 * (nominal_m + floor_m + root), 0.5 * (1.0 + d / root),
+          0.5 * floor_m * floor_m / (root * root * root)};
 }
 
 // Inputs: film gap h_f [m] (> h_c), floor h_c [m] (> 0). Returns the nominal gap [m]; a film

@@ -129,7 +129,8 @@ struct SkirtSideInputs {
   // Optional gap-basis columns (nodeCount rows, finite; nullptr = none): d(nominal gap)/d(u_g)
   // per node, e.g. the elastic skirt's modal shapes (-Psi_j). The film returns dp/du_g on its
   // final active set in film.dPressure_dGap (lubrication::FilmProblem::gapBasis; the film-gap
-  // clamp's slope applied here).
+  // clamp's slope applied here, and its curvature times the gap rate added to the columns'
+  // rate part: the film's rate slope(h) dh/dt moves with the gap too).
   const Eigen::MatrixXd* extraGapBasis = nullptr;
   // Optional, with extraGapBasis (same shape): each column also moves the gap rate by this
   // much per unit (FilmProblem::gapRateBasis), e.g. -Psi_j / dt for a backward-Euler elastic

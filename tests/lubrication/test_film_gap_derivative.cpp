@@ -224,12 +224,6 @@ TEST(FilmGapDerivative, BadBasisNamesTheMember) {
   }
 }
 
-}  // namespace
-}  // namespace pistondyn::lubrication
-
-namespace pistondyn::lubrication {
-namespace {
-
 // GapFloor.h: the floored gap's slope and curvature against central differences of the
 // formula itself, across the knee (h from deep overlap to far above the floor h_c).
 TEST(GapFloor, SlopeAndCurvatureMatchCentralDifferences) {

@@ -189,7 +189,10 @@ struct SkirtSideLubrication::Impl {
   lubrication::FilmProblem problem;
   lubrication::FilmState warmStart;
   bool haveWarmStart = false;
-  Eigen::ArrayXd clampSlope, clampCurvature, rateCurvature, pressureColumn, shearColumnX, shearColumnY, zero;
+  // The film-gap clamp's slope per node, and its curvature times the nominal gap rate (the
+  // rate part of a gap column, below).
+  Eigen::ArrayXd clampSlope, rateCurvature;
+  Eigen::ArrayXd pressureColumn, shearColumnX, shearColumnY, zero;
   Eigen::ArrayXd couetteY, couetteX;     // film shear on the skirt (Couette + Poiseuille)
   Eigen::ArrayXXd boundaryX, boundaryY;  // boundary shear as grid-shaped scratch
   // Outward normal of the side's centre line (cos phi_c, sin phi_c) in (x, z).
@@ -342,7 +345,7 @@ struct SkirtSideLubrication::Impl {
     // LinearGap faces integrate along the nominal gap through the clamp's knee (GapFloor.h).
     problem.gapFloor_m = p.faceValues == lubrication::FaceValues::LinearGap ? clamp_m : 0.0;
     clampSlope.resize(n);
-    clampCurvature.resize(n);
+    rateCurvature.resize(n);
     zero = Eigen::ArrayXd::Zero(n);
   }
 };
@@ -388,7 +391,7 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
     const lubrication::FlooredGap f = lubrication::calcFlooredGap(gap.gap_m[k], hc);
     p.gap_m[k] = f.film_m;
     m.clampSlope[k] = f.slope;
-    m.clampCurvature[k] = f.curvature_per_m;
+    m.rateCurvature[k] = f.curvature_per_m * gap.gapRate_mps[k];
   }
   p.gapRate_mps = gap.gapRate_mps * m.clampSlope;
   const Eigen::Index extra = in.extraSqueezeBasis ? in.extraSqueezeBasis->cols() : 0;
@@ -399,17 +402,19 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
     p.squeezeBasis.col(in.squeezeColumns + c) =
         (in.extraSqueezeBasis->col(c).array() * m.clampSlope).matrix();
   scaleRowsInto(in.extraGapBasis, m.clampSlope, p.gapBasis);
-  scaleRowsInto(in.extraGapRateBasis, m.clampSlope, p.gapRateBasis);
   if (in.extraGapBasis) {
-    // The film's rate is slope(h) dh/dt, so a gap change moves it also through the clamp's
+    // The film's rate is slope(h) dh/dt, so a gap column moves it also through the clamp's
     // curvature: d(rate_f)/du_g = slope d(dh/dt)/du_g + curvature dh/dt dh/du_g. Where the gap
     // closes fast near the floor this part is as large as the others (the elastic coupling's
     // Newton steps overshot by 2-3.5x without it, 2026-12-05).
-    m.rateCurvature = m.clampCurvature * gap.gapRate_mps;
-    if (p.gapRateBasis.size() == 0)
-      p.gapRateBasis.setZero(n, in.extraGapBasis->cols());
-    for (Eigen::Index c = 0; c < in.extraGapBasis->cols(); ++c)
-      p.gapRateBasis.col(c) += (in.extraGapBasis->col(c).array() * m.rateCurvature).matrix();
+    p.gapRateBasis.resize(n, in.extraGapBasis->cols());
+    for (Eigen::Index c = 0; c < in.extraGapBasis->cols(); ++c) {
+      p.gapRateBasis.col(c) = (in.extraGapBasis->col(c).array() * m.rateCurvature).matrix();
+      if (in.extraGapRateBasis)
+        p.gapRateBasis.col(c) += (in.extraGapRateBasis->col(c).array() * m.clampSlope).matrix();
+    }
+  } else if (p.gapRateBasis.size() > 0) {
+    p.gapRateBasis.resize(0, 0);
   }
   p.slidingVelocity_mps =
       Eigen::Vector2d(in.slidingVelocityCircumferential_mps, in.slidingVelocityAxial_mps);

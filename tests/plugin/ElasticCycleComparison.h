@@ -36,6 +36,18 @@ inline plugin::LubricatedSkirtParameters comparisonParameters(
   return deckSkirtParameters(io::loadEngineDeck(gasolineDeckPath(), overrides));
 }
 
+// The rows of the table's last 720 deg (its first row is the one 720 deg before its last): a
+// run that is not stopped at a periodic state keeps the rows of every cycle.
+inline plugin::ResultTable lastCycleOf(plugin::ResultTable t) {
+  const std::size_t a = t.columnIndex("crank_angle_deg");
+  const double start_deg = t.rows.back()[a] - 720.0;
+  const auto first = std::find_if(t.rows.begin(), t.rows.end(), [&](const auto& row) {
+    return row[a] >= start_deg - 1e-9;
+  });
+  t.rows.erase(t.rows.begin(), first);
+  return t;
+}
+
 // Two cycles from the deck's start with the deck's stepper; the second cycle's rows.
 inline CycleOutcome runTwoCycles(const plugin::LubricatedSkirtParameters& p) {
   SkirtModel m = makeGasolineSkirtModel(32, 24, &p);
@@ -44,7 +56,7 @@ inline CycleOutcome runTwoCycles(const plugin::LubricatedSkirtParameters& p) {
   plugin::CycleSimulation sim(*m.model, s);
   plugin::ResultTableSink table;
   sim.run({&table});
-  return {table.releaseTable(), sim.getStats()};
+  return {lastCycleOf(table.releaseTable()), sim.getStats()};
 }
 
 inline double minOfColumn(const plugin::ResultTable& t, const std::string& column) {
@@ -59,6 +71,23 @@ inline std::pair<double, double> peakOfColumn(const plugin::ResultTable& t,
   const auto v = t.column(column);
   const auto peak = std::max_element(v.begin(), v.end());
   return {std::fmod(angle[std::size_t(peak - v.begin())], 720.0), *peak};
+}
+
+// Friction work [J] between crank angles from_deg and to_deg (0 .. 720) of the table's last
+// 720 deg (the cumulative friction_work_J column at the rows nearest to those angles).
+inline double frictionWorkBetween_J(const plugin::ResultTable& t, double from_deg,
+                                    double to_deg) {
+  const auto angle = t.column("crank_angle_deg");
+  const auto work = t.column("friction_work_J");
+  const double cycleStart_deg = angle.back() - 720.0;
+  auto at = [&](double a_deg) {
+    const double target = cycleStart_deg + a_deg;
+    const auto it = std::min_element(angle.begin(), angle.end(), [&](double x, double y) {
+      return std::abs(x - target) < std::abs(y - target);
+    });
+    return work[std::size_t(it - angle.begin())];
+  };
+  return at(to_deg) - at(from_deg);
 }
 
 }  // namespace pistondyn::testsupport

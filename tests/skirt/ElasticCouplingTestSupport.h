@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include "pistondyn/mapping/StructuralCompliance.h"
+#include "pistondyn/skirt/SkirtSideGrid.h"
 
 namespace pistondyn::skirt::test {
 
@@ -145,6 +146,29 @@ inline mapping::StructuralCompliance readCommittedCompliance(const std::string& 
 // The skirt's film-gap clamp shape (SkirtSideLubrication.h): smooth, >= hc.
 inline double smoothClamp(double h, double hc) {
   return 0.5 * (h + hc + std::sqrt((h - hc) * (h - hc) + hc * hc));
+}
+
+// The gasoline example's committed FE files (examples/fe/gasoline_1400_2000rpm), by the plain
+// parser above: "skirt" or "liner".
+inline mapping::StructuralCompliance gasolineCompliance(const std::string& part) {
+  const std::string dir =
+      std::string(PISTONDYN_SOURCE_DIR) + "/examples/fe/gasoline_1400_2000rpm/";
+  return readCommittedCompliance(dir + part + "_compliance.mtx", dir + part + "_nodes.csv");
+}
+
+// The gasoline example's thrust side (examples/engines/gasoline_1400_2000rpm/engine.yaml):
+// bore 74.5 mm, skirt 30 mm from 12 mm above the pin axis, 80 deg sides; the film grid
+// coarser than the deck's 64 x 48 to keep the tests fast.
+inline SkirtSideGrid gasolineThrustSide(int nPhi = 40, int nY = 30) {
+  SkirtSideGridParameters gp;
+  gp.side = SkirtSide::Thrust;
+  gp.radius_m = 0.0745 / 2.0;
+  gp.arcWidth_rad = 80.0 * 3.14159265358979323846 / 180.0;
+  gp.skirtTopHeight_m = 0.012;
+  gp.skirtLength_m = 0.030;
+  gp.nPhi = nPhi;
+  gp.nY = nY;
+  return SkirtSideGrid(gp);
 }
 
 }  // namespace pistondyn::skirt::test

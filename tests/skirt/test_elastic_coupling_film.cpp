@@ -45,22 +45,9 @@ namespace {
 constexpr double kRadius_m = 0.0745 / 2.0, kC0_m = 40e-6;
 constexpr double kRqLiner_m = 0.4e-6, kRqSkirt_m = 0.6e-6;
 
-pm::StructuralCompliance gasolineSkirt() {
-  const std::string dir = std::string(PISTONDYN_SOURCE_DIR) + "/examples/fe/gasoline_1400_2000rpm/";
-  return ps::test::readCommittedCompliance(dir + "skirt_compliance.mtx", dir + "skirt_nodes.csv");
-}
+pm::StructuralCompliance gasolineSkirt() { return ps::test::gasolineCompliance("skirt"); }
 
-ps::SkirtSideGrid gasolineThrustSide() {
-  ps::SkirtSideGridParameters gp;
-  gp.side = ps::SkirtSide::Thrust;
-  gp.radius_m = kRadius_m;
-  gp.arcWidth_rad = 80.0 * kPi / 180.0;
-  gp.skirtTopHeight_m = 0.012;
-  gp.skirtLength_m = 0.030;
-  gp.nPhi = 40;
-  gp.nY = 30;
-  return ps::SkirtSideGrid(gp);
-}
+ps::SkirtSideGrid gasolineThrustSide() { return ps::test::gasolineThrustSide(); }
 
 // One skirt side with its film; film(e, elastic) solves for a lateral displacement e.
 class GasolineSide {

@@ -115,11 +115,32 @@ const mapping::CylinderGrid& checkedCoverage(const SkirtSideGrid& side,
   return side.getCylinderGrid();
 }
 
+// The liner's grid after its checks (the liner frame; the side's radius, as the skirt's).
+std::optional<mapping::CylinderGrid> linerGridOf(const SkirtSideGrid& side,
+                                                 const mapping::StructuralCompliance* liner,
+                                                 const ElasticCouplingParameters& parameters) {
+  if (!liner)
+    return std::nullopt;
+  const std::string where = std::string(kWhere) + " (liner StructuralCompliance)";
+  if (parameters.scheme == ElasticCouplingScheme::Newton)
+    detail::fail(where, "the liner needs the modal or the Aitken scheme (the Newton scheme's "
+                        "preconditioner is built once for a fixed compliance)");
+  if (!liner->fullCircle)
+    detail::fail(where, "the liner's structural grid must be a full circle (its loaded area "
+                        "turns with no side: the node table's angles must close the ring)");
+  if (liner->hasGasDisplacement())
+    detail::fail(where, "the liner has a gas field: only the skirt's is applied (remove the "
+                        "liner node table's gas column)");
+  // The skirt's checks (sizes, finite entries) apply as they are.
+  return structuralGrid(side, *liner);
+}
+
 }  // namespace
 
 ElasticCoupling::ElasticCoupling(const SkirtSideGrid& side,
                                  const mapping::StructuralCompliance& skirt,
-                                 const ElasticCouplingParameters& parameters)
+                                 const ElasticCouplingParameters& parameters,
+                                 const mapping::StructuralCompliance* liner)
     : parameters_((checkParameters(parameters), parameters)),
       filmGrid_(side.getCylinderGrid()),
       structural_(structuralGrid(side, skirt)),
@@ -128,7 +149,12 @@ ElasticCoupling::ElasticCoupling(const SkirtSideGrid& side,
       forceMap_(checkedCoverage(side, structural_), structural_, {0.0, 0.0}),
       surface_(structural_, Eigen::VectorXd::Zero(structural_.nodeCount())),
       start_m_(Eigen::VectorXd::Zero(structural_.nodeCount())),
-      startRelaxation_(parameters.initialRelaxation) {
+      startRelaxation_(parameters.initialRelaxation),
+      linerGrid_(linerGridOf(side, liner, parameters)) {
+  if (linerGrid_) {
+    linerCompliance_m_per_N_ = liner->compliance_m_per_N;
+    skirtCompliance_m_per_N_ = compliance_m_per_N_;
+  }
   const Eigen::Index ns = structural_.nodeCount(), nf = filmGrid_.nodeCount();
   u_m_ = Eigen::VectorXd::Zero(ns);
   force_N_ = Eigen::VectorXd::Zero(ns);
@@ -224,6 +250,9 @@ ElasticCouplingReport ElasticCoupling::solve(const FilmPressureFunction& film,
   detail::requireFinite(kWhere, "solve(cylinderPressure_Pa)", cylinderPressure_Pa, "Pa");
   if (!film)
     detail::fail(kWhere, "solve(film): the film evaluation is empty");
+  if (linerGrid_ && !std::isfinite(linerPinHeight_m_))
+    detail::fail(kWhere, "solve(): the coupling has a liner but no position: call "
+                         "setLinerPosition(pinHeight_m) first");
   u_m_ = start_m_;
   switch (parameters_.scheme) {
     case ElasticCouplingScheme::Newton:

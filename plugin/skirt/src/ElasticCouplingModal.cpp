@@ -23,6 +23,17 @@ constexpr int kLineSearchTrials = 6;
 
 void ElasticCoupling::setUpModal() {
   setUpNodeSets();
+  calcModes();
+  const Eigen::Index ns = structural_.nodeCount();
+  const int m = modeCount();
+  modal_m_ = modalResidual_m_ = modalStep_m_ = modalBase_m_ = Eigen::VectorXd::Zero(m);
+  gasU_m_ = Eigen::VectorXd::Zero(ns);
+  modalForce_N_ = Eigen::MatrixXd::Zero(ns, m);
+  modalJacobian_ = Eigen::MatrixXd::Zero(m, m);
+  modalLu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(m);  // sized once: no allocation per step
+}
+
+void ElasticCoupling::calcModes() {
   const Eigen::Index ns = structural_.nodeCount(), nf = filmGrid_.nodeCount();
   // The modes of C_FF, the compliance among the nodes F that take this side's forces: the
   // nodal forces are truncated to their span, and each mode's displacement everywhere is what
@@ -66,11 +77,6 @@ void ElasticCoupling::setUpModal() {
     toFilmGrid(modes_.col(j), filmColumn_);
     modalShapes_.col(j) = filmColumn_;
   }
-  modal_m_ = modalResidual_m_ = modalStep_m_ = modalBase_m_ = Eigen::VectorXd::Zero(m);
-  gasU_m_ = Eigen::VectorXd::Zero(ns);
-  modalForce_N_ = Eigen::MatrixXd::Zero(ns, m);
-  modalJacobian_ = Eigen::MatrixXd::Zero(m, m);
-  modalLu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(m);  // sized once: no allocation per step
 }
 
 ElasticCouplingReport ElasticCoupling::solveModal(const FilmPressureFunction& film,

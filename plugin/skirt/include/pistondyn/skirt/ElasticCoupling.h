@@ -94,15 +94,35 @@
 // film evaluations; the deformation then holds the last iterate (and the pressure of it), and
 // the warm start keeps the last CONVERGED deformation.
 //
-// Not done here: the liner's deformation (its compliance moves with the piston); the elastic
-// gap RATE (GapFields::pistonElasticRate_mps) is the caller's (e.g. the change of the converged
-// deformation between steps over the step).
+// The liner (optional, Aitken and Modal schemes): the liner's radial compliance C_L on its own
+// structural grid (the liner frame: heights above the crank axis, the same angles, a full
+// circle) is seen from the skirt through the bilinear interpolation Q(Y_pin) of liner nodal
+// values at the skirt's structural nodes, the piston's pin axis at height Y_pin. The film
+// pressure pushes the liner outwards with the forces Q^T (-f) (static equivalence of the skirt's
+// nodal forces f, the hats' own transfer: the total is exact) and the liner's outward
+// displacement u_L opens the gap as much as the skirt's inward one, so the two act as springs in
+// series on the skirt's structural nodes:
+//   u = (C_skirt + Q C_L Q^T) f + g p_cyl,   the gap term h_el = -Hermite(u)
+// (u is then the skirt's displacement minus the liner's as seen from the piston; the term goes
+// into GapFields::pistonElastic_m, linerElastic_m stays zero). setLinerPosition(Y_pin) rebuilds
+// Q and the effective compliance (and, modal, the modes and shapes) before each solve; the
+// rate of the gap term taken in the piston frame (the caller's backward Euler on the film
+// grid) then holds the liner's deformation sliding past the skirt as well as its change.
+// Assumptions: the liner node heights are those of the pin axis frame shifted by Y_pin (no
+// tilt, no lateral offset of the piston: both are below 1 % of a liner row); each side's
+// coupling sees only its own side's forces (as the skirt: the other side's load is not in this
+// side's deformation).
+//
+// Not done here: the elastic gap RATE (GapFields::pistonElasticRate_mps) is the caller's
+// (e.g. the change of the converged deformation between steps over the step).
 //
 // Cost: per iteration one film evaluation (the caller's), one sparse force map (film nodes),
 // one dense compliance product (structural nodes^2) and two Hermite updates (O(nodes)).
 // Stateful (warm start, workspaces): one object per skirt side and thread; not thread-safe.
 
 #include <functional>
+#include <limits>
+#include <optional>
 
 #include <Eigen/Core>
 #include <Eigen/LU>
@@ -230,8 +250,21 @@ class ElasticCoupling {
   // Throws std::invalid_argument with the member named for: a compliance whose size is not
   // nodes x nodes of its grid, a gas field of the wrong size, non-finite entries, a film grid
   // reaching outside the structural grid (heights, or angles of a sector), bad parameters.
+  //   liner       optional: radial compliance of the liner on its structural grid (liner
+  //               frame: heights above the crank axis; a full circle, no gas field), or null
+  // Also throws for a liner that is not a full circle, has a gas field, a bad size or
+  // non-finite entries, or with the Newton scheme (its preconditioner is built once).
   ElasticCoupling(const SkirtSideGrid& side, const mapping::StructuralCompliance& skirt,
-                  const ElasticCouplingParameters& parameters = {});
+                  const ElasticCouplingParameters& parameters = {},
+                  const mapping::StructuralCompliance* liner = nullptr);
+
+  // With a liner: the pin axis's height above the crank axis Y_pin [m] (finite) for the next
+  // solves; rebuilds the effective compliance (and the modes). Required before the first
+  // solve() with a liner; a no-op when Y_pin is the one in use. Throws std::invalid_argument
+  // when a skirt structural node would lie outside the liner's heights (naming both), or
+  // without a liner.
+  void setLinerPosition(double pinHeight_m);
+  bool hasLiner() const { return linerGrid_.has_value(); }
 
   // Converges the film pressure and the skirt deformation.
   // Inputs:
@@ -297,8 +330,12 @@ class ElasticCoupling {
   void setUpNewton();
   // The node sets S, F and the Hermite rows on S (Newton and Modal).
   void setUpNodeSets();
-  // Modal: Phi, Lambda of C_FF, D, Psi; the modal solve.
+  // Modal: the node sets and the workspaces (once), then the modes of the current compliance.
   void setUpModal();
+  // Modal: Phi, Lambda of C_FF, D, Psi of compliance_m_per_N_ (again after each liner move).
+  void calcModes();
+  // Liner: Q at the current pin height and compliance_m_per_N_ = C_skirt + Q C_L Q^T.
+  void calcEffectiveCompliance();
   ElasticCouplingReport solveModal(const FilmPressureFunction& film, double cylinderPressure_Pa);
   void factorPreconditioner();
   // The preconditioner's own step into step_m_: P^-1 r on S, the plain step r elsewhere.
@@ -311,7 +348,7 @@ class ElasticCoupling {
 
   ElasticCouplingParameters parameters_;
   mapping::CylinderGrid filmGrid_, structural_;
-  Eigen::MatrixXd compliance_m_per_N_;
+  Eigen::MatrixXd compliance_m_per_N_;  // the skirt's, or with a liner the effective one
   Eigen::VectorXd gas_m_per_Pa_;  // empty without a gas field
   mapping::ForceMap forceMap_;
   mapping::HermiteSurface surface_;
@@ -319,6 +356,12 @@ class ElasticCoupling {
 
   Eigen::VectorXd start_m_;  // warm start
   double startRelaxation_;
+  // Liner (empty without): its grid (the skirt's radius), compliance, the skirt's own
+  // compliance, Q (skirt structural nodes x liner nodes) and the pin height it was built for.
+  std::optional<mapping::CylinderGrid> linerGrid_;
+  Eigen::MatrixXd linerCompliance_m_per_N_, skirtCompliance_m_per_N_, linerProduct_;
+  Eigen::SparseMatrix<double, Eigen::RowMajor> linerTransfer_;
+  double linerPinHeight_m_ = std::numeric_limits<double>::quiet_NaN();
   // Iterates and scratch (sized once).
   Eigen::VectorXd u_m_, force_N_, target_m_, residual_m_, previousResidual_m_, residualFilm_m_,
       uFilm_m_, previousU_m_;

@@ -488,8 +488,13 @@ void readElasticSkirt(DeckSection& liner, plugin::LubricatedSkirtParameters& p,
   gasDeformation = e.getBool(skirtKey("liner.elastic_skirt.gas_deformation"));
   const auto matrix = e.getOptionalFilePath("compliance_file");
   const auto nodes = e.getOptionalFilePath("nodes_file");
-  if (!matrix && !nodes)
+  if (!matrix && !nodes) {
+    if (e.has("liner_compliance_file") || e.has("liner_nodes_file"))
+      e.addProblem(e.has("liner_compliance_file") ? "liner_compliance_file" : "liner_nodes_file",
+                   "the elastic liner is coupled through the skirt's structural grid: give the "
+                   "skirt's compliance_file and nodes_file too");
     return;
+  }
   if (!matrix || !nodes) {
     e.addProblem(matrix ? "nodes_file" : "compliance_file",
                  "give both compliance_file (the matrix) and nodes_file (its node table), or "
@@ -501,6 +506,22 @@ void readElasticSkirt(DeckSection& liner, plugin::LubricatedSkirtParameters& p,
     el.enabled = true;
   } catch (const std::exception& ex) {
     e.addProblem("compliance_file", ex.what());
+  }
+  // The elastic liner (in series with the skirt; needs it).
+  const auto linerMatrix = e.getOptionalFilePath("liner_compliance_file");
+  const auto linerNodes = e.getOptionalFilePath("liner_nodes_file");
+  if (!linerMatrix && !linerNodes)
+    return;
+  if (!linerMatrix || !linerNodes) {
+    e.addProblem(linerMatrix ? "liner_nodes_file" : "liner_compliance_file",
+                 "give both liner_compliance_file (the matrix) and liner_nodes_file (its node "
+                 "table), or neither (rigid liner)");
+    return;
+  }
+  try {
+    el.liner = readStructuralCompliance(*linerMatrix, *linerNodes);
+  } catch (const std::exception& ex) {
+    e.addProblem("liner_compliance_file", ex.what());
   }
 }
 
@@ -602,6 +623,22 @@ void checkAgainstEngine(DeckSection& liner, const mbd::EngineDescription& e,
         liner.getSection("elastic_skirt")
             .addProblem("nodes_file",
                         std::string("the compliance does not fit this skirt: ") + ex.what());
+        return;
+      }
+      // The liner: its grid must cover the skirt's structural rows at BDC and TDC (the rows
+      // move with the pin between them).
+      if (!p.elasticSkirt.liner)
+        continue;
+      try {
+        skirt::ElasticCoupling check(skirt::SkirtSideGrid(g), p.elasticSkirt.compliance,
+                                     p.elasticSkirt.coupling, &*p.elasticSkirt.liner);
+        check.setLinerPosition(kinematics.pinHeightAtBdc_m());
+        check.setLinerPosition(kinematics.pinHeightAtTdc_m());
+      } catch (const std::exception& ex) {
+        liner.getSection("elastic_skirt")
+            .addProblem("liner_nodes_file",
+                        std::string("the liner compliance does not fit this engine: ") +
+                            ex.what());
         return;
       }
     }

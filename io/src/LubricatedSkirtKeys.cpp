@@ -247,6 +247,18 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
               .means("node table of compliance_file (piston frame: heights above the pin); "
                      "its grid must cover both film grids. Its optional gas column (radial "
                      "displacement per unit cylinder pressure) is applied with gas_deformation"),
+          K::file("liner.elastic_skirt.liner_compliance_file",
+                  "Matrix Market `array` or `coordinate`, n x n [m/N]")
+              .byDefault("rigid liner")
+              .means("radial compliance of the liner on its structural grid (e.g. `examples/"
+                     "fe/*/liner_compliance.mtx`); with liner_nodes_file and the elastic skirt "
+                     "the liner deforms too, in series with the skirt at the piston's height "
+                     "(`skirt/ElasticCoupling.h`, \"The liner\"; schemes modal and aitken)"),
+          K::file("liner.elastic_skirt.liner_nodes_file", "CSV `node, phi_deg, y_mm`")
+              .byDefault("rigid liner")
+              .means("node table of liner_compliance_file (heights above the crank axis, a "
+                     "full circle, no gas column); its heights must cover the skirt over the "
+                     "stroke"),
           K::number("liner.elastic_skirt.tolerance_nm", Q::Length)
               .byDefault(1.0)
               .within(Bounds{0.0, 1000.0, true})

@@ -100,6 +100,9 @@ LubricatedSkirtElement::LubricatedSkirtElement(const LubricatedSkirtParameters& 
           p.elasticSkirt.crankcasePressure_Pa >= 0.0))
       badParameter("elasticSkirt.crankcasePressure_Pa must be finite and >= 0");
   }
+  if (p.elasticSkirt.liner && !p.elasticSkirt.enabled)
+    badParameter("elasticSkirt.liner needs the elastic skirt (elasticSkirt.enabled with the "
+                 "skirt's compliance): the liner is coupled through the skirt's structural grid");
 }
 
 LubricatedSkirtElement::~LubricatedSkirtElement() = default;
@@ -153,8 +156,10 @@ void LubricatedSkirtElement::addToModel(const ModelBuildContext& context) {
     workspace_->gapFields[k] = workspace_->gap[k]->makeFields();
     if (parameters_.elasticSkirt.enabled) {
       // Checks the compliance against this side's grid (size, finiteness, coverage).
+      const auto& liner = parameters_.elasticSkirt.liner;
       workspace_->elastic[k] = std::make_unique<skirt::ElasticCoupling>(
-          grid, parameters_.elasticSkirt.compliance, parameters_.elasticSkirt.coupling);
+          grid, parameters_.elasticSkirt.compliance, parameters_.elasticSkirt.coupling,
+          liner ? &*liner : nullptr);
     }
   }
 }
@@ -265,6 +270,10 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
       gapAndFilm();
       return;
     }
+    // An elastic liner: its compliance seen from the skirt at the pin's height now (the
+    // modes and their film shapes follow).
+    if (coupling->hasLiner())
+      coupling->setLinerPosition(pose.pinHeight_m);
     if (elasticRate && history->elasticStructural_m.size() == coupling->structuralNodeCount()) {
       // The start: the accepted deformation moved on at its last rate (FillHistory).
       Eigen::VectorXd& warm = workspace_->elasticStart[k];
@@ -290,8 +299,8 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     inputs[k].extraGapRateBasis = modalRate && modalGap ? &modalBasis : nullptr;
     if (modalGap) {
       Eigen::MatrixXd& gapBasis = workspace_->modalGapBasis[k];
-      if (gapBasis.cols() != coupling->modeCount())
-        gapBasis = -coupling->modalShapes();
+      if (gapBasis.cols() != coupling->modeCount() || coupling->hasLiner())
+        gapBasis = -coupling->modalShapes();  // the liner moves the shapes with the piston
       inputs[k].extraGapBasis = &gapBasis;
     } else {
       inputs[k].extraGapBasis = nullptr;

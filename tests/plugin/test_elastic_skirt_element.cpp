@@ -210,4 +210,43 @@ TEST(ElasticSkirtElement, DeckKeysSwitchItOn) {
   }
 }
 
+// The elastic liner's keys: the committed FE liner in series with the skirt; the liner without
+// the skirt, half a pair, and a liner that does not cover this engine's stroke are refused,
+// naming the key.
+TEST(ElasticSkirtElement, LinerKeysAddTheLinerOrSayWhyNot) {
+  const std::string deck = ts::gasolineDeckPath();
+  const std::string mtx = ts::gasolineElasticSkirtOverrides()[0];
+  const std::string nodes = ts::gasolineElasticSkirtOverrides()[1];
+  const std::string linerMtx =
+      "liner.elastic_skirt.liner_compliance_file=../../fe/gasoline_1400_2000rpm/"
+      "liner_compliance.mtx";
+  const std::string linerNodes =
+      "liner.elastic_skirt.liner_nodes_file=../../fe/gasoline_1400_2000rpm/liner_nodes.csv";
+  {
+    const io::EngineDeck d = io::loadEngineDeck(deck, {mtx, nodes, linerMtx, linerNodes});
+    const auto liner = d.makeLinerElement();
+    const auto& p = dynamic_cast<const plugin::LubricatedSkirtElement&>(*liner).getParameters();
+    ASSERT_TRUE(p.elasticSkirt.liner.has_value());
+    EXPECT_EQ(p.elasticSkirt.liner->nodeCount(), 552);  // 24 x 23 (examples/fe/README.md)
+    EXPECT_TRUE(p.elasticSkirt.liner->fullCircle);
+  }
+  const auto refused = [&](const std::vector<std::string>& sets, const std::string& text) {
+    try {
+      (void)io::loadEngineDeck(deck, sets);
+      ADD_FAILURE() << "accepted; expected an error with: " << text;
+    } catch (const io::DeckError& ex) {
+      EXPECT_NE(std::string(ex.what()).find(text), std::string::npos) << ex.what();
+    }
+  };
+  refused({linerMtx, linerNodes}, "give the skirt's compliance_file and nodes_file too");
+  refused({mtx, nodes, linerMtx}, "liner_nodes_file");
+  // The Briggs & Stratton liner (rows 5 mm apart over its own, shorter stroke) under the
+  // gasoline skirt: off the liner at one end of the stroke.
+  refused({mtx, nodes,
+           "liner.elastic_skirt.liner_compliance_file=../../fe/briggs_stratton_500/"
+           "liner_compliance.mtx",
+           "liner.elastic_skirt.liner_nodes_file=../../fe/briggs_stratton_500/liner_nodes.csv"},
+          "the liner compliance does not fit this engine");
+}
+
 }  // namespace

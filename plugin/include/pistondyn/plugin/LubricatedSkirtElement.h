@@ -44,6 +44,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "pistondyn/contact_forces/BoundaryFriction.h"
@@ -87,6 +88,12 @@ struct ElasticSkirtParameters {
   // Radial compliance of the skirt in the piston frame (io::readStructuralCompliance): its
   // grid must cover both skirt sides.
   mapping::StructuralCompliance compliance;
+  // Optional: the liner's radial compliance on its own structural grid (liner frame: heights
+  // above the crank axis, a full circle; io::readStructuralCompliance), in series with the
+  // skirt's at the piston's current height (skirt/ElasticCoupling.h, "The liner"). Needs the
+  // elastic skirt (enabled) and the modal or Aitken scheme; its grid must cover the skirt over
+  // the stroke. Empty: a rigid liner.
+  std::optional<mapping::StructuralCompliance> liner;
   // Tolerances, iteration cap, scheme. Default: the modal scheme, the one that carries whole
   // cycles (plugin/README.md, "The elastic coupling: which scheme and why"), as the deck's
   // liner.elastic_skirt.scheme; ElasticCouplingParameters alone defaults to Aitken, which

@@ -20,9 +20,10 @@ struct CycleOutcome {
   plugin::SimulationStats stats;
 };
 
-// The deck's parameters on 32 x 24 with `extra` overrides; `elastic` adds the FE skirt.
+// The deck's parameters on 32 x 24 with `extra` overrides; `elastic` adds the FE skirt,
+// `elasticLiner` (with elastic) the FE liner in series with it.
 inline plugin::LubricatedSkirtParameters comparisonParameters(
-    bool elastic, const std::vector<std::string>& extra = {}) {
+    bool elastic, const std::vector<std::string>& extra = {}, bool elasticLiner = false) {
   std::vector<std::string> overrides = {"liner.grid.nodes_circumferential=32",
                                         "liner.grid.nodes_axial=24", "liner.film.tolerance=1e-11",
                                         "liner.parallel_sides=false",
@@ -32,6 +33,13 @@ inline plugin::LubricatedSkirtParameters comparisonParameters(
   if (elastic) {
     const std::vector<std::string> fe = gasolineElasticSkirtOverrides();
     overrides.insert(overrides.end(), fe.begin(), fe.end());
+  }
+  if (elasticLiner) {
+    overrides.push_back(
+        "liner.elastic_skirt.liner_compliance_file=../../fe/gasoline_1400_2000rpm/"
+        "liner_compliance.mtx");
+    overrides.push_back(
+        "liner.elastic_skirt.liner_nodes_file=../../fe/gasoline_1400_2000rpm/liner_nodes.csv");
   }
   return deckSkirtParameters(io::loadEngineDeck(gasolineDeckPath(), overrides));
 }

@@ -5,6 +5,9 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "Gnuplot.h"
 #include "PlotSupport.h"
@@ -60,6 +63,38 @@ std::vector<ComparedFigure> describeFigures() {
   };
 }
 
+// The legend of a case, in lines of at most kLegendWidth characters (gnuplot drops a key that
+// does not fit beside the panels into the plot area, over the curves): the label's
+// "key=value" items, a value that is a path shortened to its file name, wrapped at the items.
+constexpr std::size_t kLegendWidth = 52;
+
+std::vector<std::string> legendLines(const std::string& label) {
+  const std::size_t colon = label.find(": ");
+  if (colon == std::string::npos)
+    return {label};
+  std::vector<std::string> items;
+  for (std::size_t at = colon + 2; at < label.size();) {
+    std::size_t end = label.find(", ", at);
+    if (end == std::string::npos)
+      end = label.size();
+    std::string item = label.substr(at, end - at);
+    const std::size_t eq = item.find('='), slash = item.rfind('/');
+    if (eq != std::string::npos && slash != std::string::npos && slash > eq)
+      item = item.substr(0, eq + 1) + item.substr(slash + 1);
+    items.push_back(item);
+    at = end + 2;
+  }
+  std::vector<std::string> lines{label.substr(0, colon + 1)};
+  for (const std::string& item : items) {
+    const bool first = lines.size() == 1 && lines[0].size() == colon + 1;
+    if (!first && lines.back().size() + 2 + item.size() > kLegendWidth)
+      lines.push_back("  " + item);
+    else
+      lines.back() += (first ? " " : ", ") + item;
+  }
+  return lines;
+}
+
 // One figure: a data file per case (angle, then the figure's panels) and its script.
 bool writeFigure(const ComparedFigure& fig, const std::vector<ComparisonCase>& cases,
                  const std::vector<io::CycleWindow>& windows, const fs::path& work,
@@ -105,6 +140,9 @@ bool writeFigure(const ComparedFigure& fig, const std::vector<ComparisonCase>& c
     if (!out)
       throw std::runtime_error(data[k].string() + ": write failed");
   }
+  std::vector<std::vector<std::string>> legend;
+  for (const ComparisonCase& c : cases)
+    legend.push_back(legendLines(c.label));
   const int height = 110 + 360 * static_cast<int>(panels.size());
   gp << "\nset terminal pngcairo size " << 900 + 8 * rightMargin << "," << height
      << " noenhanced font 'Sans,11'\n"
@@ -126,7 +164,11 @@ bool writeFigure(const ComparedFigure& fig, const std::vector<ComparisonCase>& c
         continue;
       add(quoted(data[k].string()) + " using 1:" + std::to_string(columnOf[k][p]) +
           " with lines lw 2 dt " + std::to_string(1 + static_cast<int>(k / 10)) + " lc rgb '" +
-          getCaseColour(k) + "' title " + quoted(cases[k].label));
+          getCaseColour(k) + "' title " + quoted(std::as_const(legend[k]).front()));
+      // The legend's further lines as text-only key entries (a title with line breaks would
+      // overlap the next entry).
+      for (std::size_t l = 1; l < legend[k].size(); ++l)
+        add("keyentry with lines lt nodraw title " + quoted(std::as_const(legend[k])[l]));
     }
     for (const auto& [value, lineTitle] : panel.lines) {
       add(number(value) + " with lines dt 3 lw 1.2 lc rgb 'gray40' " +
@@ -153,7 +195,8 @@ std::vector<std::string> writeComparisonPlots(const std::vector<ComparisonCase>&
   std::size_t longest = 0;
   for (const auto& c : cases) {
     windows.push_back(io::selectLastCycle(c.folder.cycle));
-    longest = std::max(longest, c.label.size());
+    for (const std::string& line : legendLines(c.label))
+      longest = std::max(longest, line.size());
   }
   // Room for the legend beside the panels (characters).
   const int rightMargin =

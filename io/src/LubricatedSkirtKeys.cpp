@@ -220,9 +220,9 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
                      "(BDF2 over the last two accepted steps)"),
           K::onOff("liner.parallel_sides")
               .byDefault(1.0)
-              .means("solve the thrust and anti-thrust films on two threads (the same "
-                     "results; faster where a second core is free); not with the elastic "
-                     "skirt, whose sides are solved one after the other"),
+              .means("solve the thrust and anti-thrust films (and elastic couplings) on two "
+                     "threads: the same results, faster where a second core is free (1.3-1.6x; "
+                     "BENCHMARKS.md)"),
           K::onOff("liner.tertiary_motion")
               .byDefault(0.0)
               .means("motion along the pin axis; sets both the element and the crank train's "

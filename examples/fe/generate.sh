@@ -25,6 +25,9 @@ run skirt --deck ../engines/gasoline_1400_2000rpm/engine.yaml --out refinement \
     --name gasoline_skirt_refine4 --n-phi 24 --n-y 11 --refine 4 --diagonal-at-phi-deg 0,90
 run skirt --deck ../engines/gasoline_1400_2000rpm/engine.yaml --out refinement \
     --name gasoline_skirt_refine5 --n-phi 24 --n-y 11 --refine 5 --diagonal-at-phi-deg 0,90
+# 6 elements per cell on the pin line only (~24 min CPU, 5 GB): its staircase support.
+run skirt --deck ../engines/gasoline_1400_2000rpm/engine.yaml --out refinement \
+    --name gasoline_skirt_refine6 --n-phi 24 --n-y 11 --refine 6 --diagonal-at-phi-deg 90
 
 # Verification (tests/io/test_fe_compliance.cpp): the uniform ring load on the bottom row as one
 # load case, on the gasoline skirt and on a variant whose pin bosses end at the pin axis.

@@ -262,7 +262,8 @@ class ElasticCoupling {
   // solves; rebuilds the effective compliance (and the modes). Required before the first
   // solve() with a liner; a no-op when Y_pin is the one in use. Throws std::invalid_argument
   // when a skirt structural node would lie outside the liner's heights (naming both), or
-  // without a liner.
+  // without a liner. Allocates (the effective compliance and, modal, an eigen-decomposition
+  // of the side's loaded nodes, ~100 x 100): the price of an elastic liner per evaluation.
   void setLinerPosition(double pinHeight_m);
   bool hasLiner() const { return linerGrid_.has_value(); }
 

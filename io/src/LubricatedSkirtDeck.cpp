@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pistondyn/common/Validation.h"
@@ -466,6 +468,27 @@ void readSurfaces(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
                                                    {{"backward_euler", 1}, {"bdf2", 2}});
 }
 
+// A compliance given as two files, the matrix under matrixKey and its node table under
+// nodesKey, at least one of them given (matrix, nodes: their paths). Half a pair or a file the
+// reader refuses is a problem of the section (naming the key); nullopt then.
+std::optional<mapping::StructuralCompliance> readCompliancePair(
+    DeckSection& e, const std::optional<std::string>& matrix,
+    const std::optional<std::string>& nodes, const std::string& matrixKey,
+    const std::string& nodesKey, const std::string& neither) {
+  if (!matrix || !nodes) {
+    e.addProblem(matrix ? nodesKey : matrixKey,
+                 "give both " + matrixKey + " (the matrix) and " + nodesKey +
+                     " (its node table), or neither (" + neither + ")");
+    return std::nullopt;
+  }
+  try {
+    return readStructuralCompliance(*matrix, *nodes);
+  } catch (const std::exception& ex) {
+    e.addProblem(matrixKey, ex.what());
+    return std::nullopt;
+  }
+}
+
 // The elastic skirt: on when both files are given (compliance and its node table).
 void readElasticSkirt(DeckSection& liner, plugin::LubricatedSkirtParameters& p,
                       bool& gasDeformation) {
@@ -495,34 +518,19 @@ void readElasticSkirt(DeckSection& liner, plugin::LubricatedSkirtParameters& p,
                    "skirt's compliance_file and nodes_file too");
     return;
   }
-  if (!matrix || !nodes) {
-    e.addProblem(matrix ? "nodes_file" : "compliance_file",
-                 "give both compliance_file (the matrix) and nodes_file (its node table), or "
-                 "neither (rigid skirt)");
-    return;
-  }
-  try {
-    el.compliance = readStructuralCompliance(*matrix, *nodes);
+  auto skirt = readCompliancePair(e, matrix, nodes, "compliance_file", "nodes_file", "rigid skirt");
+  if (!matrix || !nodes)
+    return;  // half a pair (reported): the liner is not read
+  if (skirt) {
+    el.compliance = std::move(*skirt);
     el.enabled = true;
-  } catch (const std::exception& ex) {
-    e.addProblem("compliance_file", ex.what());
   }
   // The elastic liner (in series with the skirt; needs it).
   const auto linerMatrix = e.getOptionalFilePath("liner_compliance_file");
   const auto linerNodes = e.getOptionalFilePath("liner_nodes_file");
-  if (!linerMatrix && !linerNodes)
-    return;
-  if (!linerMatrix || !linerNodes) {
-    e.addProblem(linerMatrix ? "liner_nodes_file" : "liner_compliance_file",
-                 "give both liner_compliance_file (the matrix) and liner_nodes_file (its node "
-                 "table), or neither (rigid liner)");
-    return;
-  }
-  try {
-    el.liner = readStructuralCompliance(*linerMatrix, *linerNodes);
-  } catch (const std::exception& ex) {
-    e.addProblem("liner_compliance_file", ex.what());
-  }
+  if (linerMatrix || linerNodes)
+    el.liner = readCompliancePair(e, linerMatrix, linerNodes, "liner_compliance_file",
+                                  "liner_nodes_file", "rigid liner");
 }
 
 void readFieldDumps(DeckSection& liner, LinerDeckContext& context) {

@@ -54,7 +54,22 @@ void ElasticCoupling::calcEffectiveCompliance() {
   // simulated pin passes it by the crank train's give (1 um seen on the gasoline example);
   // rows that far out read the end row's values.
   constexpr double slackY = 1e-4;
+  // The angles do not move with the pin: each skirt angle's liner cell (i0, i1) and weight once.
+  // The liner is a full circle: an angle is reduced onto its ring [phi_0, phi_0 + 2 pi).
   const int nPhiL = liner.nPhi();
+  const double phi0 = liner.phi_rad()[0];
+  std::vector<int> phiCell(std::size_t(structural_.nPhi()));
+  std::vector<double> phiWeight(std::size_t(structural_.nPhi()));
+  for (int i = 0; i < structural_.nPhi(); ++i) {
+    double phi = structural_.phi_rad()[i] - phi0;
+    phi -= kTwoPi * std::floor(phi / kTwoPi);
+    int cell = 0;
+    while (cell < nPhiL - 1 && phi >= liner.phiNode_rad(cell + 1) - phi0)
+      ++cell;
+    const double a = liner.phiNode_rad(cell) - phi0, b = liner.phiNode_rad(cell + 1) - phi0;
+    phiCell[std::size_t(i)] = cell;
+    phiWeight[std::size_t(i)] = std::clamp((phi - a) / (b - a), 0.0, 1.0);
+  }
   for (int j = 0; j < structural_.nY(); ++j) {
     const double y = structural_.y_m()[j] + linerPinHeight_m_;
     int cellY = 0;
@@ -68,16 +83,8 @@ void ElasticCoupling::calcEffectiveCompliance() {
                                detail::str(linerY[linerY.size() - 1]) +
                                "] m: the liner compliance must cover the skirt over the stroke");
     for (int i = 0; i < structural_.nPhi(); ++i) {
-      // The liner is a full circle: reduce the angle onto its ring [phi_0, phi_0 + 2 pi).
-      const double phi0 = liner.phi_rad()[0];
-      double phi = structural_.phi_rad()[i] - phi0;
-      phi -= kTwoPi * std::floor(phi / kTwoPi);
-      int cellPhi = 0;
-      while (cellPhi < nPhiL - 1 && phi >= liner.phiNode_rad(cellPhi + 1) - phi0)
-        ++cellPhi;
-      const double a = liner.phiNode_rad(cellPhi) - phi0, b = liner.phiNode_rad(cellPhi + 1) - phi0;
-      const double tphi = std::clamp((phi - a) / (b - a), 0.0, 1.0);
-      const int i0 = cellPhi, i1 = (cellPhi + 1) % nPhiL;
+      const double tphi = phiWeight[std::size_t(i)];
+      const int i0 = phiCell[std::size_t(i)], i1 = (i0 + 1) % nPhiL;
       const int row = structural_.index(i, j);
       const double w[4] = {(1 - tphi) * (1 - ty), tphi * (1 - ty), (1 - tphi) * ty, tphi * ty};
       const int col[4] = {liner.index(i0, cellY), liner.index(i1, cellY),

@@ -300,6 +300,53 @@ def hat_weights_1d(n_coarse, m, periodic, h_fine):
     return weights, n_fine
 
 
+def hat_weights_nested(coarse, fine):
+    """As hat_weights_1d for an open coarse grid and a fine grid that need not be uniform: the
+    fine node positions `fine` (sorted, containing every coarse node) refine the coarse cells; the
+    coarse hat N_c is piecewise linear on the fine grid, so the 1-D mass matrix applied to its
+    nodal values is exact. Returns the weights [{fine index: integral phi_g N_c ds}]."""
+    index = {}
+    for c, yc in enumerate(coarse):
+        hits = [f for f, yf in enumerate(fine) if abs(yf - yc) <= 1e-9 * (1.0 + abs(yc))]
+        if len(hits) != 1:
+            raise RuntimeError(f"coarse node {yc} is not a node of the fine grid")
+        index[c] = hits[0]
+
+    def hat(c, f):  # N_c at fine node f
+        y = fine[f]
+        if c > 0 and coarse[c - 1] < y < coarse[c]:
+            return (y - coarse[c - 1]) / (coarse[c] - coarse[c - 1])
+        if c + 1 < len(coarse) and coarse[c] <= y < coarse[c + 1]:
+            return (coarse[c + 1] - y) / (coarse[c + 1] - coarse[c])
+        return 1.0 if f == index[c] else 0.0
+
+    weights = []
+    for c in range(len(coarse)):
+        w = {}
+        lo = index[c - 1] if c > 0 else index[c]
+        hi = index[c + 1] if c + 1 < len(coarse) else index[c]
+        for f in range(lo, hi + 1):
+            value = hat(c, f)
+            if value == 0.0:
+                continue
+            for g in (f - 1, f + 1):  # each element (f, g) adds h/3 at f and h/6 at g
+                if 0 <= g < len(fine):
+                    h = abs(fine[g] - fine[f])
+                    w[f] = w.get(f, 0.0) + value * h / 3.0
+                    w[g] = w.get(g, 0.0) + value * h / 6.0
+        weights.append(w)
+    return weights
+
+
+def subdivide(breaks, counts):
+    """Node positions of intervals [breaks[i], breaks[i+1]] each split uniformly in counts[i]."""
+    out = [breaks[0]]
+    for a, b, n in zip(breaks[:-1], breaks[1:], counts):
+        out += [a + (b - a) * (q + 1) / n for q in range(n)]
+        out[-1] = b
+    return out
+
+
 class LoadedSurface:
     """FE nodes of the loaded surface on the structural grid (nested m times) and the weights
     W_J(f) = integral phi_f N_J dA, dA = R dphi dy [mm^2]."""
@@ -307,7 +354,12 @@ class LoadedSurface:
     def __init__(self, mesh, grid, radius, m):
         self.grid, self.radius, self.m = grid, radius, m
         wphi, self.n_fphi = hat_weights_1d(grid.n_phi, m, True, grid.dphi / m)
-        wy, self.n_fy = hat_weights_1d(grid.n_y, m, False, grid.dy / m)
+        # y: the mesher's fine rows (grid.fine_y, not uniform where a support edge splits a
+        # cell), else the structural rows nested m times
+        fine_y = getattr(grid, "fine_y", None) or subdivide(
+            [grid.y(j) for j in range(grid.n_y)], [m] * (grid.n_y - 1))
+        wy = hat_weights_nested([grid.y(j) for j in range(grid.n_y)], fine_y)
+        self.n_fy = len(fine_y)
         # FE node number of each fine surface point (a, b)
         self.fe_node = {}
         tol = 1e-6 * max(radius, 1.0)
@@ -316,9 +368,9 @@ class LoadedSurface:
             if abs(r - radius) > tol or y < grid.y0 - tol or y > grid.y1 + tol:
                 continue
             a = phi / (grid.dphi / m)
-            b = (y - grid.y0) / (grid.dy / m)
-            ia, ib = int(round(a)) % self.n_fphi, int(round(b))
-            if abs(a - round(a)) > 1e-6 or abs(b - ib) > 1e-6:
+            ib = min(range(self.n_fy), key=lambda f: abs(fine_y[f] - y))
+            ia = int(round(a)) % self.n_fphi
+            if abs(a - round(a)) > 1e-6 or abs(fine_y[ib] - y) > 1e-6 * grid.dy:
                 raise RuntimeError(f"surface node at phi {math.degrees(phi)} deg, y {y} mm is off "
                                    "the nested structural grid")
             self.fe_node[(ia, ib)] = idx + 1
@@ -502,8 +554,33 @@ def mesh_piston(args, work):
     r_breaks = [r0, r1, r2, R]
     r_counts = [max(2, int(round((r1 - r0) / (1.5 * h_arc)))),
                 max(1, int(round((t_rb - t_s) / (t_s / m)))), m]
-    y_breaks = [y_bot] + ([y_b] if j_b > 0 else []) + [y_top, y_c1, y_crown]
-    y_counts = ([j_b * m] if j_b > 0 else []) + [(grid.n_y - 1 - j_b) * m]
+    # The pin's support: the boss over the pin's diameter in height, its edges y = -+a on mesh
+    # lines at every refinement (a support made of the nodes inside the pin circle is a
+    # staircase that moves with the mesh and does not converge). An edge within 0.1 of a row
+    # spacing of a structural row is moved onto it (no sliver elements); otherwise it splits its
+    # cell - a rule of the structural grid, not of the mesh, so the model is the same at every
+    # refinement.
+    a = args.pin_radius_mm
+    edges = []
+    for e in (-a, a):
+        j = int(round((e - y_bot) / grid.dy))
+        edges.append(grid.y(j) if 0 <= j < grid.n_y and abs(grid.y(j) - e) <= 0.1 * grid.dy else e)
+    edges[0] = max(edges[0], y_b)  # bosses ending above the pin's bottom: support from there
+    if not (y_b < edges[1] < y_top):
+        raise InputError(f"the pin's top (radius {a:g} mm) is not between the boss's bottom "
+                         f"({y_b:g} mm) and the skirt top ({y_top:g} mm): check "
+                         "--pin-diameter-mm and --boss-half-height-mm")
+    # y: every structural row and the support edges are breaks; m layers per structural cell,
+    # a split cell shares its m in proportion (at least one layer each side).
+    y_breaks, y_counts = [y_bot], []
+    for j in range(grid.n_y - 1):
+        lo, hi = grid.y(j), grid.y(j + 1)
+        inner = [e for e in edges if lo + 1e-9 < e < hi - 1e-9]
+        for u, v in zip([lo] + inner, inner + [hi]):
+            y_breaks.append(v)
+            y_counts.append(m if not inner else max(1, int(round(m * (v - u) / grid.dy))))
+    grid.fine_y = subdivide(y_breaks, y_counts)
+    y_breaks += [y_c1, y_crown]
     y_counts += partition([y_top, y_c1], 1.5 * grid.dy / m, "ring belt")
     y_counts += [max(2, m)]
     geo = os.path.join(work, "model.geo")
@@ -530,7 +607,7 @@ def mesh_piston(args, work):
     fixed = []
     for idx, p in enumerate(mesh.xyz):
         r, phi, y = cyl(p)
-        if r < r2 - tol and near_pin_axis(phi) and math.hypot(p[0], p[1]) <= args.pin_radius_mm + tol:
+        if r < r2 + tol and near_pin_axis(phi) and edges[0] - tol <= y <= edges[1] + tol:
             fixed.append((idx + 1, 1, 3))
     for side in (+1, -1):
         if not any(mesh.xyz[n - 1][2] * side > 0 for n, _, _ in fixed):
@@ -538,12 +615,13 @@ def mesh_piston(args, work):
                              "--pin-diameter-mm and the boss size" % args.pin_radius_mm)
     model = {
         "kind": "piston skirt: skirt shell, two pin bosses, ring belt, annular crown; "
-                "bonded rigid pin",
+                "bonded rigid pin over the boss's width and the pin's diameter",
         "bore_mm": args.bore_mm, "skirt_top_above_pin_mm": y_top, "skirt_length_mm": L,
         "compression_height_mm": y_crown, "skirt_wall_mm": t_s, "ring_belt_wall_mm": t_rb,
         "crown_thickness_mm": t_c, "crown_hole_radius_mm": r0,
         "pin_diameter_mm": 2 * args.pin_radius_mm,
         "boss_bottom_above_pin_mm": y_b, "boss_half_angle_deg": math.degrees(beta),
+        "pin_support_y_mm": edges,
         "young_modulus_MPa": args.young_MPa, "poisson_ratio": args.poisson,
         "loaded_surface": "outer, radius bore/2",
     }

@@ -298,11 +298,11 @@ TEST(CommittedCompliance, SkirtGasFieldHasTheModelsSymmetry) {
 // Mesh refinement: the gasoline skirt's diagonal with 3, 4 and 5 elements per structural cell (and
 // through the wall; examples/fe/refinement/) against the committed 2, on the thrust line
 // (0 deg: the middle of the film region, where film pressures load the skirt) and the pin line
-// (90 deg). The limit applies on the thrust line, between each mesh and the next (so also
-// between the committed mesh and the next, and between the two finest). On the pin line the boss sits on a bonded pin whose support is the
-// set of mesh nodes inside the pin circle - a staircase that changes with the mesh - and the
-// diagonal there is 6..75 times smaller and converges slowly (printed; README, "Limits"); no
-// film acts there.
+// (90 deg: over the pin's support). The criterion: less than 5 % between the two finest
+// meshes, on both lines; on the thrust line also between every mesh and the next (so between the
+// committed mesh and the next); on both lines the changes shrink step by step (a support that
+// moved with the mesh - the nodes inside the pin circle, before 2026-12-05 - gave 25, 9, 5.6 and
+// 5.4 % on the pin line and failed this).
 TEST(CommittedCompliance, DiagonalChangesLessThanFivePercentUnderMeshRefinement) {
   const auto c = load("gasoline_1400_2000rpm", "skirt");
   const auto diagonal = [](const std::string& name) {
@@ -319,11 +319,12 @@ TEST(CommittedCompliance, DiagonalChangesLessThanFivePercentUnderMeshRefinement)
   ASSERT_EQ(r5[0], r3[0]);
   // Largest relative change per step [2->3, 3->4, 4->5] and line [thrust, pin].
   double change[3][2] = {};
-  int thrustRows = 0;
+  int rows[2] = {};
   for (std::size_t r = 0; r < r3[0].size(); ++r) {
     const int k = static_cast<int>(r3[0][r]) - 1;
-    const int line = r3[1][r] == 0.0 ? 0 : 1;
-    thrustRows += line == 0 ? 1 : 0;
+    const int line = r3[1][r] == 0.0 ? 0 : (r3[1][r] == 90.0 ? 1 : -1);
+    ASSERT_GE(line, 0) << "refinement rows are on the 0 and 90 deg lines";
+    ++rows[line];
     const double c2 = c.compliance_m_per_N(k, k), c3 = r3[2][r], c4 = r4[2][r], c5 = r5[2][r];
     change[0][line] = std::max(change[0][line], std::abs(c2 / c3 - 1.0));
     change[1][line] = std::max(change[1][line], std::abs(c3 / c4 - 1.0));
@@ -334,20 +335,15 @@ TEST(CommittedCompliance, DiagonalChangesLessThanFivePercentUnderMeshRefinement)
       "%.2f %%, 3 vs 4 %.2f / %.2f %%, 4 vs 5 %.2f / %.2f %%\n",
       100 * change[0][0], 100 * change[0][1], 100 * change[1][0], 100 * change[1][1],
       100 * change[2][0], 100 * change[2][1]);
-  // 6 elements per cell on the pin line only (printed: the staircase support).
-  const auto r6 = diagonal("gasoline_skirt_refine6");
-  double pin56 = 0.0;
-  for (std::size_t r = 0; r < r6[0].size(); ++r)
-    for (std::size_t q = 0; q < r5[0].size(); ++q)
-      if (r5[0][q] == r6[0][r])
-        pin56 = std::max(pin56, std::abs(r5[2][q] / r6[2][r] - 1.0));
-  std::printf("  pin line, refine 5 vs 6: largest change %.2f %%\n", 100 * pin56);
-  EXPECT_EQ(r6[0].size(), std::size_t(c.nY()));
-  EXPECT_EQ(thrustRows, c.nY());
+  EXPECT_EQ(rows[0], c.nY());
+  EXPECT_EQ(rows[1], c.nY());
   for (const auto& step : change)
     EXPECT_LT(step[0], 0.05);
-  EXPECT_LT(change[2][0], change[1][0]);  // converging
-  EXPECT_LT(change[1][0], change[0][0]);
+  for (int line = 0; line < 2; ++line) {
+    EXPECT_LT(change[2][line], 0.05) << "line " << line;  // the two finest meshes
+    EXPECT_LT(change[2][line], change[1][line]) << "line " << line;  // converging
+    EXPECT_LT(change[1][line], change[0][line]) << "line " << line;
+  }
 }
 
 }  // namespace

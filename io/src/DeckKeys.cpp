@@ -373,6 +373,11 @@ const DeckKeyTable& getEngineDeckKeys() {
               .byDefault(0.25)
               .within(Bounds{0.0, 10.0, true})
               .means("`linearly_implicit_bdf2`: largest step"),
+          K::wholeNumber("simulation.stepper_order", 2, 3)
+              .byDefault(2)
+              .means("`linearly_implicit_bdf2`: order of the BDF formula, 2 or 3 (variable-step "
+                     "BDF3: the global error of the slow secondary motion falls with the cube "
+                     "of the step; BENCHMARKS.md)"),
           K::wholeNumber("simulation.max_steps", 1, 2000000000)
               .byDefault(2e7)
               .means("step budget of the run (a run never hangs: it stops with the crank angle "

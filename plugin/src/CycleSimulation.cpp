@@ -57,6 +57,8 @@ void validate(const SimulationSettings& s) {
     fail("poseTolerance_m must be in (0, 1e-3) m");
   if (!(s.maxStep_deg > 0.0 && s.maxStep_deg <= 10.0))
     fail("maxStep_deg must be in (0, 10] deg");
+  if (s.stepperOrder != 2 && s.stepperOrder != 3)
+    fail("stepperOrder must be 2 or 3");
   if (s.maxSteps < 1)
     fail("maxSteps must be at least 1");
   if (!(s.periodicFmepTolerance > 0.0 && s.periodicFmepTolerance < 1.0))
@@ -194,6 +196,7 @@ class StepperAdvancer final : public Advancer {
     o.initialStep_s = std::min(1e-3 * degree_s, o.maxStep_s);
     o.minStep_s = std::min(1e-9 * degree_s, o.initialStep_s);
     o.maxSteps = settings.maxSteps;
+    o.maxOrder = settings.stepperOrder;
     options_ = o;
   }
   void initialize(const SimTK::State& s) override {

@@ -52,7 +52,7 @@ struct LinearlyImplicitStepper::Impl {
   SimTK::Array_<SimTK::UIndex> freeU;
   int nq = 0, nu = 0, nz = 0, n = 0;
   Eigen::VectorXd absTol;        // per q_f, u_f entry
-  std::array<Point, 3> history;  // history[0] newest accepted point
+  std::array<Point, 4> history;  // history[0] newest accepted point (4 for the third order)
   int historySize = 0;
   double hNext = 0.0;  // proposed next step
   int failuresInRow = 0;
@@ -249,9 +249,55 @@ struct LinearlyImplicitStepper::Impl {
     return ec / (ec - ep);
   }
 
+  // Variable-step BDF3 (maxOrder 3): y1 = sum_j c_j y_{n+1-j} + g f(y1) from the derivative
+  // at t1 of the cubic through t1 and the last three accepted points: alpha_j = l_j'(t1) of
+  // its Lagrange basis, g = 1 / alpha_0, c_j = -alpha_j / alpha_0. Also the error factor
+  // Ec / (Ec - Ep) of the estimate, with Ec = -sum_{j>=1} alpha_j (t_j - t1)^4 / alpha_0 (the
+  // corrector's local error per unit y^(4) / 4!) and Ep = -prod_{j=0..3} (t1 - t_j) (the cubic
+  // predictor's). For BDF2 the same construction gives errorFactor above (checked: 2/11 for
+  // constant steps); BDF3 with constant steps: g = 6 h / 11, factor 0.12.
+  void bdf3Coefficients(double t1, std::array<double, 3>& c, double& g, double& factor) const {
+    const std::array<double, 4> tau = {t1, history[0].t, history[1].t, history[2].t};
+    std::array<double, 4> alpha{};
+    alpha[0] = 1.0 / (t1 - tau[1]) + 1.0 / (t1 - tau[2]) + 1.0 / (t1 - tau[3]);
+    for (int j = 1; j < 4; ++j) {
+      double num = 1.0, den = 1.0;
+      for (int m = 1; m < 4; ++m)
+        if (m != j)
+          num *= t1 - tau[m];
+      for (int m = 0; m < 4; ++m)
+        if (m != j)
+          den *= tau[j] - tau[m];
+      alpha[j] = num / den;
+    }
+    g = 1.0 / alpha[0];
+    double ec = 0.0;
+    for (int j = 1; j < 4; ++j) {
+      c[j - 1] = -alpha[j] * g;
+      const double d = tau[j] - t1;
+      ec -= alpha[j] * d * d * d * d * g;
+    }
+    const double ep = -(t1 - history[0].t) * (t1 - history[1].t) * (t1 - history[2].t) *
+                      (t1 - history[3].t);
+    factor = ec / (ec - ep);
+  }
+
   // Extrapolates the accepted points' y and f to t0 + h (the same polynomial weights).
   void predict(double h, Eigen::VectorXd& yOut, Eigen::VectorXd& fOut) const {
     const Point& p0 = history[0];
+    if (historySize == 4) {  // maxOrder 3: the cubic through the four points
+      const double t = p0.t + h;
+      std::array<double, 4> l{};
+      for (int j = 0; j < 4; ++j) {
+        l[j] = 1.0;
+        for (int m = 0; m < 4; ++m)
+          if (m != j)
+            l[j] *= (t - history[m].t) / (history[j].t - history[m].t);
+      }
+      yOut = l[0] * p0.y + l[1] * history[1].y + l[2] * history[2].y + l[3] * history[3].y;
+      fOut = l[0] * p0.f + l[1] * history[1].f + l[2] * history[2].f + l[3] * history[3].f;
+      return;
+    }
     if (historySize == 1) {
       yOut = p0.y + h * p0.f;
       fOut = p0.f;
@@ -289,21 +335,27 @@ struct LinearlyImplicitStepper::Impl {
   // sets hNext either way.
   bool tryStep(double t1) {
     const double t0 = history[0].t, h = t1 - t0;
-    const int order = historySize >= 3 ? 2 : 1;
+    const int order = historySize == 4 ? 3 : (historySize >= 3 ? 2 : 1);
     predict(h, yp, fpred);
 
-    // BDF coefficients: y1 = a0 y_n + a1 y_{n-1} + g f(y1).
-    double a0 = 1.0, a1 = 0.0, beta = 1.0;
+    // BDF coefficients: y1 = a0 y_n + a1 y_{n-1} + g f(y1) (order 3: c3 on three points).
+    double a0 = 1.0, a1 = 0.0, g = h, factor3 = 0.0;
+    std::array<double, 3> c3{};
     if (order == 2) {
       const double w = h / (t0 - history[1].t);
       a0 = (1.0 + w) * (1.0 + w) / (1.0 + 2.0 * w);
       a1 = -w * w / (1.0 + 2.0 * w);
-      beta = (1.0 + w) / (1.0 + 2.0 * w);
+      g = (1.0 + w) / (1.0 + 2.0 * w) * h;
+    } else if (order == 3) {
+      bdf3Coefficients(t1, c3, g, factor3);
     }
-    const double g = beta * h;
-    base = a0 * history[0].y;
-    if (order == 2)
-      base += a1 * history[1].y;
+    if (order == 3) {
+      base = c3[0] * history[0].y + c3[1] * history[1].y + c3[2] * history[2].y;
+    } else {
+      base = a0 * history[0].y;
+      if (order == 2)
+        base += a1 * history[1].y;
+    }
 
     // First iterate: one linearised step from the predictor with the extrapolated
     // derivative and the Jacobian of the last evaluated state (no evaluation yet).
@@ -342,14 +394,15 @@ struct LinearlyImplicitStepper::Impl {
       previousNorm = norm;
       y += delta;
     }
-    // The z are quadratures: BDF2 with the rates of the evaluated solution.
+    // The z are quadratures: the BDF formula with the rates of the evaluated solution.
     if (nz > 0)
       y.tail(nz) = base.tail(nz) + g * ft.tail(nz);
 
     // Local error estimate from the corrector-predictor difference.
     delta = y - yp;
-    const double err = weightedNorm(delta, std::abs(errorFactor(h, order)));
-    const double exponent = order == 2 ? 1.0 / 3.0 : 0.5;
+    const double err =
+        weightedNorm(delta, std::abs(order == 3 ? factor3 : errorFactor(h, order)));
+    const double exponent = 1.0 / (order + 1);
     const double grow = err > 0.0 ? 0.9 * std::pow(err, -exponent) : 2.0;
     if (err > 1.0) {
       ++stats.rejectedSteps;
@@ -363,14 +416,16 @@ struct LinearlyImplicitStepper::Impl {
     if (nz > 0)
       setZ(y, trial);
     std::swap(currentPtr, trialPtr);
+    history[3] = std::move(history[2]);
     history[2] = std::move(history[1]);
     history[1] = std::move(history[0]);
     history[0].t = t1;
     history[0].y = y;
     history[0].f = ft;
-    historySize = std::min(historySize + 1, 3);
-    // BDF2 stays zero-stable for step ratios below 1 + sqrt(2); keep below 2.
-    hNext = h * std::clamp(grow, 0.2, 2.0);
+    historySize = std::min(historySize + 1, options.maxOrder + 1);
+    // BDF2 stays zero-stable for step ratios below 1 + sqrt(2): keep below 2. Variable-step
+    // BDF3 is zero-stable only for smaller ratios (about 1.6): keep below 1.5.
+    hNext = h * std::clamp(grow, 0.2, options.maxOrder == 3 ? 1.5 : 2.0);
     return true;
   }
 
@@ -433,6 +488,8 @@ LinearlyImplicitStepper::LinearlyImplicitStepper(const PistonAssemblyModel& mode
     bad("newtonTolerance must be positive and finite");
   if (o.maxNewtonIterations < 1)
     bad("maxNewtonIterations must be at least 1");
+  if (o.maxOrder != 2 && o.maxOrder != 3)
+    bad("maxOrder must be 2 or 3");
 }
 
 LinearlyImplicitStepper::~LinearlyImplicitStepper() = default;

@@ -116,6 +116,7 @@ TEST(SkirtDeck, TheGasolineExampleSectionBecomesTheElementsParametersInSI) {
   EXPECT_EQ(s.cycles, 8);
   EXPECT_EQ(s.poseTolerance_m, 10.0 * 1e-9);
   EXPECT_EQ(s.maxStep_deg, 0.25);
+  EXPECT_EQ(s.stepperOrder, 2);
   EXPECT_EQ(s.periodicFmepTolerance, 0.005);
   EXPECT_EQ(s.periodicPoseTolerance_m, 0.2 * 1e-6);
   // The hot running clearance without thermal growth is the cold one at the profile's
@@ -249,6 +250,14 @@ TEST_F(SkirtScratchDeck, AnExplicitIntegratorIsRejectedForTheSkirt) {
     EXPECT_NE(m.find("use linearly_implicit_bdf2 (or cpodes_bdf)"), std::string::npos) << m;
   }
   EXPECT_EQ(rejection({"simulation.integrator=cpodes_bdf"}), "");
+}
+
+TEST_F(SkirtScratchDeck, TheStepperOrderIsTwoOrThree) {
+  EXPECT_EQ(rejection({"simulation.stepper_order=3"}), "");
+  for (const char* bad : {"1", "4", "2.5"}) {
+    const std::string m = rejection({std::string("simulation.stepper_order=") + bad});
+    EXPECT_NE(m.find("simulation.stepper_order"), std::string::npos) << m;
+  }
 }
 
 TEST_F(SkirtScratchDeck, UntilPeriodicNeedsTwoCycles) {

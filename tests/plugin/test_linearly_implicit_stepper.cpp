@@ -244,6 +244,39 @@ TEST(LinearlyImplicitStepper, ConvergesAtSecondOrderInTheStepSize) {
   EXPECT_GT(order2, 1.7);
 }
 
+// maxOrder 3: halving the step divides the error by about eight (variable-step BDF3 after
+// the short first- and second-order start-up steps), and at the same step the error is far
+// below BDF2's.
+TEST(LinearlyImplicitStepper, ConvergesAtThirdOrderWithMaxOrderThree) {
+  plugin::LinearlyImplicitStepperOptions o;
+  o.positionTolerance_m = 1e-3;  // never binding: the step is the maximum step
+  o.velocityTolerance_mps = 1e3;
+  o.relativeTolerance = 0.5;
+  auto run = [&](double step, int order) {
+    Model m;
+    o.maxStep_s = step;
+    // a short start (the first-order start-up step would add its own second-order error),
+    // then steps growing by 1.5 to the maximum
+    o.initialStep_s = 1e-4 * kDegree_s;
+    o.maxOrder = order;
+    return runStepper(m, o);
+  };
+  const auto fine = run(0.0125 * kDegree_s, 3);
+  std::vector<double> errors;
+  for (double step : {0.4, 0.2, 0.1})
+    errors.push_back(poseDifference_m(run(step * kDegree_s, 3), fine));
+  const double bdf2 = poseDifference_m(run(0.2 * kDegree_s, 2), fine);
+  const double order1 = std::log2(errors[0] / errors[1]), order2 = std::log2(errors[1] / errors[2]);
+  std::printf("  BDF3 errors %.3e %.3e %.3e m; observed orders %.2f %.2f; BDF2 at 0.2 deg %.3e m\n",
+              errors[0], errors[1], errors[2], order1, order2, bdf2);
+  EXPECT_GT(order1, 2.6);
+  EXPECT_GT(order2, 2.6);
+  EXPECT_LT(errors[1], 0.2 * bdf2);
+  plugin::PistonAssemblyModel model(testEngine());
+  o.maxOrder = 4;
+  EXPECT_THROW(plugin::LinearlyImplicitStepper(model, o), std::invalid_argument);
+}
+
 // Auto-update variables: one swap at initialize() and one per accepted step, none for a
 // rejected one.
 TEST(LinearlyImplicitStepper, AdvancesHistoryOncePerAcceptedStep) {

@@ -65,6 +65,9 @@ struct SimulationSettings {
   // alone let 0.5 deg steps through the flooded example skirt with a 1.4 um lag of the
   // secondary motion and 4 % on fmep against CPodes (plugin/README.md).
   double maxStep_deg = 0.25;
+  // LinearlyImplicitBDF2: order of the BDF formula, 2 (default) or 3 (LinearlyImplicitStepper
+  // Options::maxOrder: the third order for the global error of the slow secondary motion).
+  int stepperOrder = 2;
   // Step budget of the whole run (every integrator): a run that needs more steps stops with
   // an error naming the crank angle reached, never hangs. Default 2e7.
   long maxSteps = 20000000;

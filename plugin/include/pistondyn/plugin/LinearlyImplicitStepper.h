@@ -85,6 +85,13 @@ struct LinearlyImplicitStepperOptions {
   // most maxNewtonIterations evaluations per attempt, default 4.
   double newtonTolerance = 0.2;
   int maxNewtonIterations = 4;
+  // Order of the BDF formula once enough accepted points exist: 2 (the default, above) or 3
+  // (variable-step BDF3 with a cubic predictor and the error estimate of the same
+  // construction; step ratio kept below 1.5 for zero-stability). BDF3 is A(86 deg)-stable,
+  // not A-stable: enough for the squeeze film's real, strongly negative eigenvalues. Its use:
+  // the global error on the piston's slow motion, which accumulates over the film's slow
+  // relaxation and which the per-step tolerance does not bound (BENCHMARKS.md, 2026-12-05).
+  int maxOrder = 2;
 };
 
 struct LinearlyImplicitStepperStats {

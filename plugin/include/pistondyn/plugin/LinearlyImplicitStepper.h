@@ -33,10 +33,11 @@
 //      does not shrink below 0.9 of the previous one retries the step at h/4);
 //   4. the z (quadratures such as friction work) take the BDF2 formula with f(y_{n+1});
 //   5. estimate the local error from the corrector-predictor difference,
-//      err ~ C_bdf / (C_bdf - C_pred) (y_{n+1} - y_p) = (2/7)(y_{n+1} - y_p) for constant
-//      steps (C_bdf = -2/9 of BDF2, C_pred = -1 of quadratic extrapolation), in a weighted
+//      err ~ C_bdf / (C_bdf - C_pred) (y_{n+1} - y_p) = (2/11)(y_{n+1} - y_p) for constant
+//      steps (solution errors per h^3 y^(3): C_bdf = +2/9 of BDF2, C_pred = -1 of quadratic
+//      extrapolation; BDF3 with the cubic predictor: 0.12), in a weighted
 //      RMS norm over (q_f, u_f) with absolute tolerances per coordinate (below); accept
-//      if err <= 1, and choose the next step from err^(-1/3) (err^(-1/2) on the
+//      if err <= 1, and choose the next step from err^(-1/(order+1)) (err^(-1/2) on the
 //      backward-Euler start-up steps).
 // Every accepted state is an evaluated one, so its forces and the elements' history
 // updates belong to the trajectory itself, and an output row at a step's end reads the

@@ -424,8 +424,13 @@ struct LinearlyImplicitStepper::Impl {
     history[0].f = ft;
     historySize = std::min(historySize + 1, options.maxOrder + 1);
     // BDF2 stays zero-stable for step ratios below 1 + sqrt(2): keep below 2. Variable-step
-    // BDF3 is zero-stable only for smaller ratios (about 1.6): keep below 1.5.
-    hNext = h * std::clamp(grow, 0.2, options.maxOrder == 3 ? 1.5 : 2.0);
+    // BDF3 is zero-stable for any sequence of ratios below about 1.6; a single doubling after
+    // a step that did not grow is harmless and lets the steps reach the output interval
+    // (stepTo splits a step a little shorter than the rest of an interval into two halves:
+    // with growth capped at 1.5, steps of half an output interval would repeat for ever).
+    const bool grewLastTime = historySize >= 3 && h > (history[1].t - history[2].t) * (1 + 1e-12);
+    const double maxRatio = options.maxOrder == 3 && grewLastTime ? 1.5 : 2.0;
+    hNext = h * std::clamp(grow, 0.2, maxRatio);
     return true;
   }
 

@@ -249,15 +249,25 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
       workspace_->gap[k]->calc(skirtPose, skirtRate, pose.pinHeight_m, pose.axialVelocity_mps,
                                fields);
       gapTimes[k] += std::chrono::duration<double>(Clock::now() - gapStart).count();
-      workspace_->lubrication[k]->solve(fields, inputs[k], workspace_->results[k]);
-      const skirt::SkirtSideResults& side = workspace_->results[k];
-      const lubrication::FilmResult& film = side.film;
-      filmTimes[k] += side.filmTime_s;
-      contactTimes[k] += side.contactTime_s;
-      loadsTimes[k] += side.loadsTime_s;
-      ++solves[k];
-      fallbacks[k] += film.usedFallback ? 1 : 0;
-      derivativeFailures[k] += film.derivativesFailed ? 1 : 0;
+      // Counted also when the solve throws (not converged, fallback included): a step that
+      // is retried must not hide its solves and fallbacks from summary.json.
+      const auto count = [&] {
+        const skirt::SkirtSideResults& side = workspace_->results[k];
+        const lubrication::FilmResult& film = side.film;
+        filmTimes[k] += side.filmTime_s;
+        contactTimes[k] += side.contactTime_s;
+        loadsTimes[k] += side.loadsTime_s;
+        ++solves[k];
+        fallbacks[k] += film.usedFallback ? 1 : 0;
+        derivativeFailures[k] += film.derivativesFailed ? 1 : 0;
+      };
+      try {
+        workspace_->lubrication[k]->solve(fields, inputs[k], workspace_->results[k]);
+      } catch (const std::runtime_error&) {
+        count();
+        throw;
+      }
+      count();
     };
     skirt::ElasticCoupling* coupling = workspace_->elastic[k].get();
     // The elastic term's rate from the last accepted step (backward Euler, like the fill

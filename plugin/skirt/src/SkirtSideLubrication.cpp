@@ -470,6 +470,9 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   const lubrication::FilmResult& film = out.film;
   if (!film.converged) {
     m.haveWarmStart = false;  // a failed iterate is a poor start
+    // the caller's clocks and counters still see this solve (out.film says what it did)
+    out.filmTime_s = std::chrono::duration<double>(t1 - t0).count();
+    out.contactTime_s = out.loadsTime_s = 0.0;
     throw std::runtime_error(common::message(
         kSolve, ": the ", sideName(grid.getSide()),
         " side's film solve did not converge (residual ", film.residual, " > tolerance ",

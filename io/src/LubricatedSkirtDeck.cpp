@@ -462,6 +462,8 @@ void readSurfaces(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
   p.lubrication.solver.tolerance = film.getNumber(skirtKey("liner.film.tolerance"));
   p.lubrication.solver.derivativeTolerance =
       film.getNumber(skirtKey("liner.film.derivative_tolerance"));
+  p.lubrication.solver.fallbackToReference =
+      film.getBool(skirtKey("liner.film.fallback_to_reference"));
   // The fill fraction's storage term in time (mass-conserving model): BDF2 converges with
   // the step where backward Euler smears a starved film's oil (plugin/README.md).
   p.fillFractionHistoryOrder = film.getChoice<int>(skirtKey("liner.film.fill_fraction_history"),

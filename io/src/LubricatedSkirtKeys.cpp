@@ -214,6 +214,12 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
               .within(Bounds::between(1e-14, 1e-2))
               .means("relative accuracy of the squeeze-derivative solves (the stepper's "
                      "Jacobian only)"),
+          K::onOff("liner.film.fallback_to_reference")
+              .byDefault(1.0)
+              .means("fast solver: when its active set does not settle, finish with the "
+                     "reference Gauss–Seidel (counted in summary.json's film_fallbacks); off: "
+                     "the solve fails at once and the stepper retries a shorter step, cheaper "
+                     "where the fallback cannot converge either (BENCHMARKS.md)"),
           K::choice("liner.film.fill_fraction_history", {"backward_euler", "bdf2"})
               .byDefault("bdf2")
               .means("mass-conserving model: order of the fill fraction's storage term in time "

@@ -65,7 +65,7 @@ class FullSkirtDeck : public SkirtScratchDeck {
     regularisation_speed_mm_per_s: 2
     wear_coefficient_mm3_per_N_m: 1e-6
   film: {cavitation: reynolds, solver: reference_gauss_seidel, tolerance: 1e-7,
-         faces: linear_gap, fill_fraction_flux: second_order}
+         faces: linear_gap, fill_fraction_flux: second_order, fallback_to_reference: false}
   tertiary_motion: true
   pin_retainer_play_mm: 0.3
   pin_retainer_stiffness_N_per_mm: 1e4

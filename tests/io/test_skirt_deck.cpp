@@ -105,6 +105,7 @@ TEST(SkirtDeck, TheGasolineExampleSectionBecomesTheElementsParametersInSI) {
             pistondyn::lubrication::FillFractionFlux::LimitedSecondOrder);
   EXPECT_EQ(p.lubrication.solver.solver, pistondyn::lubrication::FilmSolverType::FastActiveSet);
   EXPECT_EQ(p.lubrication.solver.tolerance, 1e-8);
+  EXPECT_TRUE(p.lubrication.solver.fallbackToReference);  // the key's default
   // The one tertiary switch reaches the element and the crank train.
   EXPECT_FALSE(p.tertiaryMotion);
   EXPECT_FALSE(b.deck.engine.tertiaryMotion);
@@ -198,6 +199,7 @@ TEST_F(FullSkirtDeck, EveryKeyReachesTheElementInSI) {
   EXPECT_EQ(p.lubrication.solver.solver,
             pistondyn::lubrication::FilmSolverType::ReferenceGaussSeidel);
   EXPECT_EQ(p.lubrication.solver.tolerance, 1e-7);
+  EXPECT_FALSE(p.lubrication.solver.fallbackToReference);
   EXPECT_TRUE(p.tertiaryMotion);
   EXPECT_TRUE(b.deck.engine.tertiaryMotion);  // the crank train gets the pin-axis mobility
   EXPECT_EQ(p.pinRetainerPlay_m, 0.3 * 1e-3);

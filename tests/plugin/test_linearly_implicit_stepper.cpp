@@ -256,7 +256,7 @@ TEST(LinearlyImplicitStepper, ConvergesAtThirdOrderWithMaxOrderThree) {
     Model m;
     o.maxStep_s = step;
     // a short start (the first-order start-up step would add its own second-order error),
-    // then steps growing by 1.5 to the maximum
+    // then steps growing (by 2 and 1.5 in turn) to the maximum
     o.initialStep_s = 1e-4 * kDegree_s;
     o.maxOrder = order;
     return runStepper(m, o);

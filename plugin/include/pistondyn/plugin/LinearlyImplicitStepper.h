@@ -23,7 +23,8 @@
 // approximate Jacobian W = [[0, I, 0], [M^-1 K, M^-1 C, 0], [0, 0, 0]] (K = d f_gen / d q,
 // C = d f_gen / d u: the elements' parts; M the mass matrix of the free mobilities):
 //   1. predict y_p and f_p by extrapolating the polynomial through the last three accepted
-//      points (two on the second step, one with its derivative on the first);
+//      points (four with maxOrder 3; two on the second step, one with its derivative on the
+//      first);
 //   2. first iterate without an evaluation: (I - g W_n) d = a0 y_n + a1 y_{n-1} + g f_p - y_p,
 //      y^1 = y_p + d, W_n the Jacobian of the last evaluated state;
 //   3. evaluate f(y^m) (one realization: one film solve per skirt side) and W there, and
@@ -31,7 +32,7 @@
 //      (the error norm below) is at most newtonTolerance the iterate y^m is the solution;
 //      else y^{m+1} = y^m + d and repeat (at most maxNewtonIterations; a correction that
 //      does not shrink below 0.9 of the previous one retries the step at h/4);
-//   4. the z (quadratures such as friction work) take the BDF2 formula with f(y_{n+1});
+//   4. the z (quadratures such as friction work) take the BDF formula with f(y_{n+1});
 //   5. estimate the local error from the corrector-predictor difference,
 //      err ~ C_bdf / (C_bdf - C_pred) (y_{n+1} - y_p) = (2/11)(y_{n+1} - y_p) for constant
 //      steps (solution errors per h^3 y^(3): C_bdf = +2/9 of BDF2, C_pred = -1 of quadratic
@@ -88,7 +89,8 @@ struct LinearlyImplicitStepperOptions {
   int maxNewtonIterations = 4;
   // Order of the BDF formula once enough accepted points exist: 2 (the default, above) or 3
   // (variable-step BDF3 with a cubic predictor and the error estimate of the same
-  // construction; step ratio kept below 1.5 for zero-stability). BDF3 is A(86 deg)-stable,
+  // construction; step ratio at most 2 after a step that did not grow, else 1.5, for
+  // zero-stability: LinearlyImplicitStepper.cpp). BDF3 is A(86 deg)-stable,
   // not A-stable: enough for the squeeze film's real, strongly negative eigenvalues. Its use:
   // the global error on the piston's slow motion, which accumulates over the film's slow
   // relaxation and which the per-step tolerance does not bound (BENCHMARKS.md, 2026-12-05).

@@ -338,20 +338,21 @@ struct LinearlyImplicitStepper::Impl {
     const int order = historySize == 4 ? 3 : (historySize >= 3 ? 2 : 1);
     predict(h, yp, fpred);
 
-    // BDF coefficients: y1 = a0 y_n + a1 y_{n-1} + g f(y1) (order 3: c3 on three points).
-    double a0 = 1.0, a1 = 0.0, g = h, factor3 = 0.0;
-    std::array<double, 3> c3{};
-    if (order == 2) {
-      const double w = h / (t0 - history[1].t);
-      a0 = (1.0 + w) * (1.0 + w) / (1.0 + 2.0 * w);
-      a1 = -w * w / (1.0 + 2.0 * w);
-      g = (1.0 + w) / (1.0 + 2.0 * w) * h;
-    } else if (order == 3) {
-      bdf3Coefficients(t1, c3, g, factor3);
-    }
+    // BDF coefficients: y1 = base + g f(y1); base = a0 y_n + a1 y_{n-1} (orders 1 and 2) or
+    // c3 on the last three points (order 3).
+    double g = h, factor3 = 0.0;
     if (order == 3) {
+      std::array<double, 3> c3{};
+      bdf3Coefficients(t1, c3, g, factor3);
       base = c3[0] * history[0].y + c3[1] * history[1].y + c3[2] * history[2].y;
     } else {
+      double a0 = 1.0, a1 = 0.0;
+      if (order == 2) {
+        const double w = h / (t0 - history[1].t);
+        a0 = (1.0 + w) * (1.0 + w) / (1.0 + 2.0 * w);
+        a1 = -w * w / (1.0 + 2.0 * w);
+        g = (1.0 + w) / (1.0 + 2.0 * w) * h;
+      }
       base = a0 * history[0].y;
       if (order == 2)
         base += a1 * history[1].y;

@@ -98,6 +98,9 @@ class Grid:
         self.n_phi, self.n_y, self.y0, self.y1 = n_phi, n_y, y0, y1
         self.dphi = TWO_PI / n_phi
         self.dy = (y1 - y0) / (n_y - 1)
+        # Fine row heights of the FE mesh on the loaded surface when the mesher split cells
+        # (mesh_piston: the pin support's edges); None = the rows nested uniformly.
+        self.fine_y = None
 
     def phi(self, i):
         return self.dphi * i
@@ -270,30 +273,20 @@ def cyl(p):
 # Loads and read-outs on the loaded surface: the FE-consistent weights of the structural hats.
 
 
-def hat_weights_1d(n_coarse, m, periodic, h_fine):
-    """w[c] = {fine node g: integral phi_g N_c ds} for the hats N_c of a coarse uniform grid and
-    the hats phi_g of the fine grid nested m times in it (spacing h_fine): the 1-D linear FE mass
-    matrix applied to the nodal values of N_c - exact, both being piecewise linear on the fine
-    grid. Returns (weights, fine node count)."""
-    n_fine = n_coarse * m if periodic else (n_coarse - 1) * m + 1
-
-    def wrap(f):
-        if periodic:
-            return f % n_fine
-        return f if 0 <= f < n_fine else None
-
+def hat_weights_periodic(n_coarse, m, h_fine):
+    """w[c] = {fine node g: integral phi_g N_c ds} for the hats N_c of a coarse uniform periodic
+    grid (the full circle) and the hats phi_g of the fine grid nested m times in it (spacing
+    h_fine): the 1-D linear FE mass matrix applied to the nodal values of N_c - exact, both being
+    piecewise linear on the fine grid. Returns (weights, fine node count)."""
+    n_fine = n_coarse * m
     weights = []
     for c in range(n_coarse):
         w = {}
         for d in range(-m + 1, m):  # nodes where N_c > 0
-            f = wrap(c * m + d)
-            if f is None:
-                continue
+            f = (c * m + d) % n_fine
             value = 1.0 - abs(d) / m
-            for g in (f - 1, f + 1):  # each existing element (f, g) adds h/3 and h/6
-                g = wrap(g)
-                if g is None:
-                    continue
+            for g in (f - 1, f + 1):  # each element (f, g) adds h/3 and h/6
+                g %= n_fine
                 w[f] = w.get(f, 0.0) + value * h_fine / 3.0
                 w[g] = w.get(g, 0.0) + value * h_fine / 6.0
         weights.append(w)
@@ -301,7 +294,7 @@ def hat_weights_1d(n_coarse, m, periodic, h_fine):
 
 
 def hat_weights_nested(coarse, fine):
-    """As hat_weights_1d for an open coarse grid and a fine grid that need not be uniform: the
+    """As hat_weights_periodic for an open coarse grid and a fine grid that need not be uniform: the
     fine node positions `fine` (sorted, containing every coarse node) refine the coarse cells; the
     coarse hat N_c is piecewise linear on the fine grid, so the 1-D mass matrix applied to its
     nodal values is exact. Returns the weights [{fine index: integral phi_g N_c ds}]."""
@@ -353,10 +346,10 @@ class LoadedSurface:
 
     def __init__(self, mesh, grid, radius, m):
         self.grid, self.radius, self.m = grid, radius, m
-        wphi, self.n_fphi = hat_weights_1d(grid.n_phi, m, True, grid.dphi / m)
+        wphi, self.n_fphi = hat_weights_periodic(grid.n_phi, m, grid.dphi / m)
         # y: the mesher's fine rows (grid.fine_y, not uniform where a support edge splits a
         # cell), else the structural rows nested m times
-        fine_y = getattr(grid, "fine_y", None) or subdivide(
+        fine_y = grid.fine_y or subdivide(
             [grid.y(j) for j in range(grid.n_y)], [m] * (grid.n_y - 1))
         wy = hat_weights_nested([grid.y(j) for j in range(grid.n_y)], fine_y)
         self.n_fy = len(fine_y)

@@ -13,6 +13,11 @@
 // (Simbody realizations, the integrator, row output), the mean in-cycle film solve and the
 // ratio cycle time / (film solves x mean solve). Peak RSS is the process' high-water mark
 // (getrusage) after each configuration; run one configuration per process to read it alone.
+// Then issue 12's targets for this setting (one core as stated; the deck's grid and cycle,
+// so they are the issue's only on its setting: 64 x 48 per side, 2000 rpm): wall time per
+// cycle (rigid skirt 2 s, elastic 20 s), cycle / (solves x mean solve) <= 1.5, peak RSS
+// <= 200 MB, and with both solvers the reference's time per cycle >= 10x the fast one's, each
+// as met or missed by how much.
 #include <sys/resource.h>
 #include <time.h>
 
@@ -99,8 +104,22 @@ std::vector<std::string> splitCommas(const std::string& s) {
   return out;
 }
 
-int runConfiguration(const std::string& deckPath, std::vector<std::string> overrides,
-                     const std::string& solver) {
+// One target line: "met" or "missed by <ratio>x".
+void printTarget(const char* what, double value, double limit, bool atMost, const char* unit) {
+  const bool met = atMost ? value <= limit : value >= limit;
+  const double ratio = atMost ? value / limit : limit / value;
+  if (met)
+    std::printf("    %-34s %.3g %s (target %s %.3g %s): met\n", what, value, unit,
+                atMost ? "<=" : ">=", limit, unit);
+  else
+    std::printf("    %-34s %.3g %s (target %s %.3g %s): MISSED by %.2fx\n", what, value, unit,
+                atMost ? "<=" : ">=", limit, unit, ratio);
+}
+
+// Returns the wall time of the last cycle [s] (0 on failure, with rc set).
+double runConfiguration(const std::string& deckPath, std::vector<std::string> overrides,
+                        const std::string& solver, int& rc) {
+  rc = 1;
   overrides.push_back("liner.film.solver=" + solver);
   const auto deck = pistondyn::io::loadEngineDeck(deckPath, overrides);
   auto model = pistondyn::io::buildModel(deck);
@@ -108,14 +127,14 @@ int runConfiguration(const std::string& deckPath, std::vector<std::string> overr
   if (!skirt) {
     std::fprintf(stderr, "bench_cycle: %s has no lubricated skirt (liner.model)\n",
                  deckPath.c_str());
-    return 1;
+    return 0.0;
   }
   CycleClock clock(*skirt);
   const auto outcome = pistondyn::io::runModel(deck, *model, "", {}, {&clock});
   const auto& snaps = clock.getSnapshots();
   if (snaps.size() < 2) {
     std::fprintf(stderr, "bench_cycle: no whole cycle was simulated\n");
-    return 1;
+    return 0.0;
   }
   const Snapshot& a = snaps[snaps.size() - 2];
   const Snapshot& b = snaps.back();
@@ -144,8 +163,17 @@ int runConfiguration(const std::string& deckPath, std::vector<std::string> overr
               meanSolve * 1e3, solves > 0 && meanSolve > 0 ? wall / film : 0.0);
   std::printf("  whole run: %ld integrator steps, %ld rejected, %.1f s   peak RSS %.1f MB\n",
               s.integratorSteps, s.rejectedSteps, s.wallTime_s, peakRss_MB());
+  const bool elastic = skirt->getParameters().elasticSkirt.enabled;
+  std::printf("  issue 12's targets (%s skirt; on its setting: 64 x 48, one core):\n",
+              elastic ? "elastic" : "rigid");
+  printTarget(elastic ? "wall per cycle (elastic)" : "wall per cycle (rigid)", wall,
+              elastic ? 20.0 : 2.0, true, "s");
+  if (solves > 0 && film > 0.0)
+    printTarget("cycle / (solves x mean solve)", wall / film, 1.5, true, "");
+  printTarget("peak RSS", peakRss_MB(), 200.0, true, "MB");
   std::fflush(stdout);
-  return 0;
+  rc = 0;
+  return wall;
 }
 
 }  // namespace
@@ -183,9 +211,21 @@ int main(int argc, char** argv) {
   overrides.insert(overrides.begin(),
                    std::string("liner.parallel_sides=") + (parallelSides ? "true" : "false"));
   try {
-    for (const std::string& solver : solvers)
-      if (const int rc = runConfiguration(deckPath, overrides, solver); rc != 0)
+    double fastWall = 0.0, referenceWall = 0.0;
+    for (const std::string& solver : solvers) {
+      int rc = 0;
+      const double wall = runConfiguration(deckPath, overrides, solver, rc);
+      if (rc != 0)
         return rc;
+      if (solver == "fast")
+        fastWall = wall;
+      else if (solver == "reference_gauss_seidel")
+        referenceWall = wall;
+    }
+    if (fastWall > 0.0 && referenceWall > 0.0) {
+      std::printf("reference / fast, last cycle:\n");
+      printTarget("reference / fast wall per cycle", referenceWall / fastWall, 10.0, false, "x");
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_cycle: %s\n", e.what());
     return 1;

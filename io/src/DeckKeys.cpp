@@ -378,6 +378,13 @@ const DeckKeyTable& getEngineDeckKeys() {
               .means("`linearly_implicit_bdf2`: order of the BDF formula, 2 or 3 (variable-step "
                      "BDF3: the global error of the slow secondary motion falls with the cube "
                      "of the step; BENCHMARKS.md)"),
+          K::wholeNumber("simulation.jacobian_reuse_steps", 0, 1000)
+              .byDefault(0)
+              .means("`linearly_implicit_bdf2`: 0 evaluates the film's squeeze derivatives "
+                     "(the stepper's Jacobian) at every force evaluation; N keeps them for up "
+                     "to N steps while the Newton iteration converges at its first "
+                     "evaluation (a rigid skirt's evaluation then skips ~40 % of its film "
+                     "work; BENCHMARKS.md)"),
           K::wholeNumber("simulation.max_steps", 1, 2000000000)
               .byDefault(2e7)
               .means("step budget of the run (a run never hangs: it stops with the crank angle "

@@ -183,6 +183,8 @@ void readSimulation(YamlDeck& d, const LinerDeckContext& liner, const std::strin
   s.poseTolerance_m = root.getSI(key("simulation.pose_tolerance_nm"));
   s.maxStep_deg = root.getNumber(key("simulation.max_step_deg"));
   s.stepperOrder = static_cast<int>(root.getInteger(key("simulation.stepper_order")));
+  s.jacobianReuseSteps =
+      static_cast<int>(root.getInteger(key("simulation.jacobian_reuse_steps")));
   s.maxSteps = root.getInteger(key("simulation.max_steps"));
   s.untilPeriodic = root.getBool(key("simulation.until_periodic"));
   s.periodicFmepTolerance = root.getNumber(key("simulation.periodic_fmep_tolerance"));

@@ -59,6 +59,8 @@ void validate(const SimulationSettings& s) {
     fail("maxStep_deg must be in (0, 10] deg");
   if (s.stepperOrder != 2 && s.stepperOrder != 3)
     fail("stepperOrder must be 2 or 3");
+  if (s.jacobianReuseSteps < 0)
+    fail("jacobianReuseSteps must be 0 or positive");
   if (s.maxSteps < 1)
     fail("maxSteps must be at least 1");
   if (!(s.periodicFmepTolerance > 0.0 && s.periodicFmepTolerance < 1.0))
@@ -197,6 +199,7 @@ class StepperAdvancer final : public Advancer {
     o.minStep_s = std::min(1e-9 * degree_s, o.initialStep_s);
     o.maxSteps = settings.maxSteps;
     o.maxOrder = settings.stepperOrder;
+    o.jacobianReuseSteps = settings.jacobianReuseSteps;
     options_ = o;
   }
   void initialize(const SimTK::State& s) override {

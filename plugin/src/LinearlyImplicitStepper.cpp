@@ -56,6 +56,8 @@ struct LinearlyImplicitStepper::Impl {
   int historySize = 0;
   double hNext = 0.0;  // proposed next step
   int failuresInRow = 0;
+  int jacobianAge = 0;             // accepted steps since K and C were evaluated
+  bool freshJacobianNext = false;  // a step failed since: evaluate K and C again
   std::string lastFailure;  // why the last step failed (for the message when the step collapses)
 
   // Workspaces (sized at initialize).
@@ -140,15 +142,21 @@ struct LinearlyImplicitStepper::Impl {
   }
 
   // Realizes `s` through Acceleration; false (and the reason) if an element threw.
-  bool evaluate(SimTK::State& s, std::string& reason) {
+  // withJacobian: whether the elements' Jacobian will be read at `s` (updateJacobian).
+  bool evaluate(SimTK::State& s, std::string& reason, bool withJacobian = true) {
     ++stats.forceEvaluations;
+    if (withJacobian)
+      ++stats.jacobianEvaluations;
+    model.setForceJacobianWanted(withJacobian);
+    bool ok = true;
     try {
       system.realize(s, SimTK::Stage::Acceleration);
     } catch (const std::exception& e) {
       reason = e.what();
-      return false;
+      ok = false;
     }
-    return true;
+    model.setForceJacobianWanted(true);  // anyone else realizing gets the default
+    return ok;
   }
 
   void initialize(const SimTK::State& s0) {
@@ -195,16 +203,23 @@ struct LinearlyImplicitStepper::Impl {
   // M, K = d f_gen / d q and C = d f_gen / d u of the free mobilities at an evaluated state
   // (the elements' parts, ForceElement::addForceJacobian).
   void updateJacobian(const SimTK::State& s) {
-    matter.calcM(s, mFull);
+    updateMass(s);
     model.calcElementForceJacobian(s, jac);
     for (int i = 0; i < nu; ++i) {
-      for (int j = 0; j < nu; ++j) {
-        M(i, j) = mFull(freeU[i], freeU[j]);
+      for (int j = 0; j < nu; ++j)
         C(i, j) = jac.dfdu(freeU[i], freeU[j]);
-      }
       for (int j = 0; j < nq; ++j)
         K(i, j) = jac.dfdq(freeU[i], freeQ[j]);
     }
+    jacobianAge = 0;
+    freshJacobianNext = false;
+  }
+  // M alone (an evaluation whose elements' Jacobian is not read: K and C are kept).
+  void updateMass(const SimTK::State& s) {
+    matter.calcM(s, mFull);
+    for (int i = 0; i < nu; ++i)
+      for (int j = 0; j < nu; ++j)
+        M(i, j) = mFull(freeU[i], freeU[j]);
   }
 
   // Solves (I - g W) d = rhs for W = [[0, I, 0], [M^-1 K, M^-1 C, 0], [0, 0, 0]] with the
@@ -328,6 +343,7 @@ struct LinearlyImplicitStepper::Impl {
     }
     hNext = shrink * h;
     lastFailure = what;
+    freshJacobianNext = true;
     return false;
   }
 
@@ -375,12 +391,20 @@ struct LinearlyImplicitStepper::Impl {
       trial = *currentPtr;
       unpack(y, t1, trial);
       std::string reason;
-      if (!evaluate(trial, reason)) {
+      // Jacobian reuse (options.jacobianReuseSteps): the first evaluation of a step keeps the
+      // elements' K and C while they are young enough and nothing failed since; a second
+      // Newton iteration always gets them fresh.
+      const bool withJacobian = options.jacobianReuseSteps == 0 || it > 1 || freshJacobianNext ||
+                                jacobianAge >= options.jacobianReuseSteps;
+      if (!evaluate(trial, reason, withJacobian)) {
         ++stats.failedEvaluations;
         return retry(t1, h, 0.25, "the force evaluation failed (" + reason + ")");
       }
       derivatives(trial, ft);
-      updateJacobian(trial);
+      if (withJacobian)
+        updateJacobian(trial);
+      else
+        updateMass(trial);
       A = M - g * C - g * g * K;
       lu.compute(A);
       r = base + g * ft - y;
@@ -413,6 +437,7 @@ struct LinearlyImplicitStepper::Impl {
     // Accept the evaluated iterate with the history of this step installed.
     failuresInRow = 0;
     ++stats.steps;
+    ++jacobianAge;
     trial.autoUpdateDiscreteVariables();
     if (nz > 0)
       setZ(y, trial);
@@ -500,6 +525,8 @@ LinearlyImplicitStepper::LinearlyImplicitStepper(const PistonAssemblyModel& mode
     bad("maxNewtonIterations must be at least 1");
   if (o.maxOrder != 2 && o.maxOrder != 3)
     bad("maxOrder must be 2 or 3");
+  if (o.jacobianReuseSteps < 0)
+    bad("jacobianReuseSteps must be 0 or positive");
 }
 
 LinearlyImplicitStepper::~LinearlyImplicitStepper() = default;

@@ -201,6 +201,9 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
   // concurrently with parallelSides: they share nothing but read-only data), then the
   // history and the sums (main thread, thrust first, so the results do not depend on it).
   std::array<skirt::SkirtSideInputs, 2> inputs;
+  // The squeeze derivatives serve only the stepper's Jacobian, except in the elastic coupling.
+  const bool withJacobian = jacobianWanted_ || parameters_.elasticSkirt.enabled;
+  r.hasForceJacobian = withJacobian;
   std::array<double, 2> dts{0.0, 0.0};
   std::array<const FillHistory*, 2> histories{nullptr, nullptr};  // read here, not in a worker
   for (int k : {kThrust, kAntiThrust}) {
@@ -213,7 +216,7 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
         k == kThrust ? -pose.transverseRate_mps : pose.transverseRate_mps;
     in.viscosity_Pas = viscosity_Pas_;
     in.supplyFilm_m = r.supplyFilm_m;
-    in.squeezeColumns = parameters_.tertiaryMotion ? 3 : 2;
+    in.squeezeColumns = withJacobian ? (parameters_.tertiaryMotion ? 3 : 2) : 0;
     if (massConserving) {
       const FillHistory& history = fill.getValue(s);
       histories[k] = &history;
@@ -544,6 +547,10 @@ void LubricatedSkirtElement::realizeAcceleration(const SimTK::State& s) const {
 bool LubricatedSkirtElement::addForceJacobian(const SimTK::State& s,
                                               ForceJacobian& jacobian) const {
   const LubricatedSkirtResults& r = getResults(s);
+  if (!r.hasForceJacobian)
+    throw std::logic_error(
+        "LubricatedSkirtElement::addForceJacobian: the state was realized with "
+        "setForceJacobianWanted(false), so its film squeeze derivatives were not computed");
   addPoseForceJacobian(*crankTrain_, s, r.dQ_dPose, r.dQ_dPoseRate, jacobian);
   return true;
 }

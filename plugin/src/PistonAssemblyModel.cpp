@@ -209,4 +209,9 @@ bool PistonAssemblyModel::calcElementForceJacobian(const SimTK::State& s,
   return any;
 }
 
+void PistonAssemblyModel::setForceJacobianWanted(bool wanted) const {
+  for (const auto& e : elements_)
+    e->setForceJacobianWanted(wanted);
+}
+
 }  // namespace pistondyn::plugin

@@ -172,6 +172,8 @@ TEST_F(ScratchDeck, EveryNumberInSummaryJsonIsTheComputedDouble) {
       {"/inputs/simulation/pose_tolerance_m", d.simulation.poseTolerance_m},
       {"/inputs/simulation/max_step_deg", d.simulation.maxStep_deg},
       {"/inputs/simulation/stepper_order", static_cast<double>(d.simulation.stepperOrder)},
+      {"/inputs/simulation/jacobian_reuse_steps",
+       static_cast<double>(d.simulation.jacobianReuseSteps)},
       {"/inputs/simulation/max_steps", static_cast<double>(d.simulation.maxSteps)},
       {"/inputs/simulation/periodic_fmep_tolerance", d.simulation.periodicFmepTolerance},
       {"/inputs/simulation/periodic_pose_tolerance_m", d.simulation.periodicPoseTolerance_m},

@@ -10,6 +10,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 
 #include "WearingSpringLiner.h"
 #include "pistondyn/plugin/CycleSimulation.h"
@@ -79,9 +80,13 @@ class SqueezeDamperGuide final : public plugin::LinerElement {
   }
   bool addForceJacobian(const SimTK::State& s, plugin::ForceJacobian& j) const override {
     const Results& r = getResults(s);
+    if (!r.hasJacobian)  // the contract of ForceElement::setForceJacobianWanted
+      throw std::logic_error("SqueezeDamperGuide: Jacobian asked of a state realized without");
     plugin::addPoseForceJacobian(*ct_, s, r.dQ_dp, r.dQ_dpdot, j);
     return true;
   }
+  // Like the lubricated skirt: an evaluation that is told no leaves the Jacobian out.
+  void setForceJacobianWanted(bool wanted) const override { wanted_ = wanted; }
   double getSideForce_N(const SimTK::State& s) const override { return -getResults(s).Q[0]; }
   // Smallest gap of the four squeeze gaps [m] (to see how close the skirt comes).
   double getMinGap_m(const SimTK::State& s) const { return getResults(s).minGap_m; }
@@ -91,6 +96,7 @@ class SqueezeDamperGuide final : public plugin::LinerElement {
     Eigen::Vector3d Q = Eigen::Vector3d::Zero();
     Eigen::Matrix3d dQ_dp = Eigen::Matrix3d::Zero(), dQ_dpdot = Eigen::Matrix3d::Zero();
     double minGap_m = 0.0;
+    bool hasJacobian = true;
   };
   double floorGap(double h) const {  // smooth, >= gapFloor
     const double f = p_.gapFloor_m;
@@ -122,9 +128,15 @@ class SqueezeDamperGuide final : public plugin::LinerElement {
                p_.tertiaryDamping_Nspm * pose.transverseRate_mps;
       r.dQ_dp(2, 2) = -p_.tertiaryStiffness_Npm;
       r.dQ_dpdot(2, 2) = -p_.tertiaryDamping_Nspm;
+      if (!wanted_) {
+        r.dQ_dp.setZero();
+        r.dQ_dpdot.setZero();
+        r.hasJacobian = false;
+      }
     });
   }
   Parameters p_;
+  mutable bool wanted_ = true;
   const mbd::CrankTrain* ct_ = nullptr;
   std::array<double, 2> heights_{};
   plugin::ElementCache<Results> cache_;
@@ -218,6 +230,44 @@ TEST(LinearlyImplicitStepper, AgreesWithCpodesOnAStiffSqueezeDamper) {
   }
   EXPECT_LT(diffs[1], diffs[0] / 3.0);
   EXPECT_LT(diffs[1], 1e-8);
+}
+
+// Jacobian reuse (jacobianReuseSteps): most evaluations realize the damper without its
+// Jacobian (which it then leaves out, and refuses to give), and the trajectory still converges
+// to CPodes' like the stepper that evaluates the Jacobian every time: the Newton iteration, not
+// the Jacobian, decides the step's solution. The damping grows like (c/h)^3 as the skirt
+// nears the wall, so a Jacobian kept over steps is visibly stale there.
+TEST(LinearlyImplicitStepper, ReusedJacobianKeepsTheTrajectory) {
+  Model reference;
+  const auto ref = runCpodes(reference, 1e-11);
+  for (int reuse : {0, 10}) {
+    std::vector<double> diffs;
+    for (double tol : {1e-11, 1e-12}) {
+      Model ours;
+      plugin::LinearlyImplicitStepperOptions o;
+      o.positionTolerance_m = tol;
+      o.velocityTolerance_mps = tol * 209.4;
+      o.maxStep_s = 0.5 * kDegree_s;
+      o.jacobianReuseSteps = reuse;
+      plugin::LinearlyImplicitStepperStats st;
+      diffs.push_back(poseDifference_m(runStepper(ours, o, &st), ref));
+      std::printf("  reuse %d, tolerance %.0e m: %ld steps (%ld rejected), %ld evaluations, %ld "
+                  "with the Jacobian; difference to CPodes %.3e um\n",
+                  reuse, tol, st.steps, st.rejectedSteps, st.forceEvaluations,
+                  st.jacobianEvaluations, diffs.back() * 1e6);
+      if (reuse == 0) {
+        EXPECT_EQ(st.jacobianEvaluations, st.forceEvaluations);
+      } else {
+        EXPECT_LT(st.jacobianEvaluations, st.forceEvaluations / 2);
+      }
+    }
+    EXPECT_LT(diffs[1], diffs[0] / 3.0) << "reuse " << reuse;
+    EXPECT_LT(diffs[1], 1e-8) << "reuse " << reuse;
+  }
+  plugin::PistonAssemblyModel model(testEngine());
+  plugin::LinearlyImplicitStepperOptions o;
+  o.jacobianReuseSteps = -1;
+  EXPECT_THROW(plugin::LinearlyImplicitStepper(model, o), std::invalid_argument);
 }
 
 // With the step size held by maxStep_s (tolerances loose), halving the step quarters the

@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <memory>
+#include <stdexcept>
+#include <tuple>
 
 #include "SkirtTestDeck.h"
 #include "SliderCrankClosedForm.h"
@@ -228,4 +230,43 @@ TEST(LubricatedSkirt, FilmSolvesThatFailAreCountedWithTheirFallbacks) {
   ASSERT_TRUE(m.skirt().getFilmSolveCount().has_value());
   EXPECT_EQ(*m.skirt().getFilmSolveCount(), 2);     // both sides are always solved
   EXPECT_EQ(*m.skirt().getFilmFallbackCount(), 2);  // and both fell back
+}
+
+// setForceJacobianWanted(false) (the stepper's Jacobian reuse): the rigid skirt then solves its
+// films without the squeeze derivatives - the same forces to the last bit (the derivative
+// solves come after the film's own and change nothing in it) - and refuses to give a
+// Jacobian it did not compute.
+TEST(LubricatedSkirt, EvaluationWithoutJacobianGivesTheSameForces) {
+  auto evaluate = [](bool wanted, bool& threw) {
+    const ts::SkirtModel m = ts::makeGasolineSkirtModel(16, 12);
+    m.model->buildSystem();
+    const auto& ct = m.model->getCrankTrain();
+    SimTK::State st = m.model->getDefaultState();
+    ct.setPose(st, 20.0 * M_PI / 180.0, 5e-6);
+    ct.setRates(st, m.engine.drive.speed_radps);
+    m.model->setForceJacobianWanted(wanted);
+    m.model->getSystem().realize(st, SimTK::Stage::Acceleration);
+    m.model->setForceJacobianWanted(true);
+    plugin::ForceJacobian jacobian;
+    threw = false;
+    try {
+      m.model->calcElementForceJacobian(st, jacobian);
+    } catch (const std::logic_error&) {
+      threw = true;
+    }
+    const auto& r = m.skirt().getResults(st);
+    return std::make_tuple(r.forceOnPiston_N, r.momentOnPiston_Nm, r.dQ_dPoseRate,
+                           *m.skirt().getFilmSolveCount());
+  };
+  bool threwWith = true, threwWithout = false;
+  const auto [fWith, mWith, dWith, solvesWith] = evaluate(true, threwWith);
+  const auto [fWithout, mWithout, dWithout, solvesWithout] = evaluate(false, threwWithout);
+  EXPECT_FALSE(threwWith);
+  EXPECT_TRUE(threwWithout);
+  EXPECT_EQ(solvesWith, solvesWithout);
+  ASSERT_GT(fWith.norm(), 1.0);        // the film carries a load here
+  ASSERT_GT(dWith.norm(), 0.0);        // and has squeeze damping
+  EXPECT_EQ(dWithout.norm(), 0.0);     // left out
+  EXPECT_EQ((fWith - fWithout).norm(), 0.0);
+  EXPECT_EQ((mWith - mWithout).norm(), 0.0);
 }

@@ -68,6 +68,9 @@ struct SimulationSettings {
   // LinearlyImplicitBDF2: order of the BDF formula, 2 (default) or 3 (LinearlyImplicitStepper
   // Options::maxOrder: the third order for the global error of the slow secondary motion).
   int stepperOrder = 2;
+  // LinearlyImplicitBDF2: steps over which the elements' Jacobian may be kept (Linearly
+  // ImplicitStepperOptions::jacobianReuseSteps), 0 (default: evaluated every time) or more.
+  int jacobianReuseSteps = 0;
   // Step budget of the whole run (every integrator): a run that needs more steps stops with
   // an error naming the crank angle reached, never hangs. Default 2e7.
   long maxSteps = 20000000;

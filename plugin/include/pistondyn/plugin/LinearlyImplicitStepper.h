@@ -95,6 +95,14 @@ struct LinearlyImplicitStepperOptions {
   // the global error on the piston's slow motion, which accumulates over the film's slow
   // relaxation and which the per-step tolerance does not bound (BENCHMARKS.md, 2026-12-05).
   int maxOrder = 2;
+  // Jacobian reuse: 0 (the default) evaluates the elements' Jacobian (K, C) at every force
+  // evaluation. N > 0 keeps it for up to N accepted steps: a step's first evaluation then
+  // realizes the elements without their Jacobian (ForceElement::setForceJacobianWanted; the
+  // lubricated skirt skips its squeeze derivatives) and the Newton correction uses the kept
+  // K and C with the current M and g. A second Newton iteration, a failed or rejected step,
+  // or N steps always evaluate it afresh. The Newton iteration still converges the step to
+  // newtonTolerance; only its rate depends on how well K and C describe the forces.
+  int jacobianReuseSteps = 0;
 };
 
 struct LinearlyImplicitStepperStats {
@@ -103,6 +111,7 @@ struct LinearlyImplicitStepperStats {
   long failedEvaluations = 0;  // steps retried because an element threw
   long forceEvaluations = 0;   // realizations to Stage::Acceleration done by the stepper
   long newtonFailures = 0;     // steps retried because the Newton iteration did not converge
+  long jacobianEvaluations = 0;  // the evaluations that also evaluated the elements' Jacobian
 };
 
 class LinearlyImplicitStepper {

@@ -181,6 +181,9 @@ struct LubricatedSkirtResults {
   Eigen::Vector3d momentOnPiston_Nm = Eigen::Vector3d::Zero();  // ground, about the origin
   Eigen::Matrix3d dQ_dPose = Eigen::Matrix3d::Zero();           // PistonPose.h generalised forces
   Eigen::Matrix3d dQ_dPoseRate = Eigen::Matrix3d::Zero();
+  // False when the evaluation left the film's squeeze derivatives out
+  // (setForceJacobianWanted(false)): dQ_dPoseRate then lacks the film's part.
+  bool hasForceJacobian = true;
   double frictionPower_W = 0;  // both sides, >= 0 typical
   double hydrodynamicFrictionPower_W = 0, asperityFrictionPower_W = 0;
   double secondaryKineticEnergy_J = 0;
@@ -202,6 +205,10 @@ class LubricatedSkirtElement final : public LinerElement {
   void calcForces(const SimTK::State& s, AppliedForces& forces) const override;
   void realizeAcceleration(const SimTK::State& s) const override;
   bool addForceJacobian(const SimTK::State& s, ForceJacobian& jacobian) const override;
+  // Not wanted: a rigid skirt's evaluations solve the film without its squeeze derivatives
+  // (about 40 % of a solve on the 64 x 48 grid). The elastic skirt keeps them (its coupling
+  // reads the lateral column).
+  void setForceJacobianWanted(bool wanted) const override { jacobianWanted_ = wanted; }
   ElementOutputs getOutputs() const override;
 
   // ---- LinerElement role ------------------------------------------------------------
@@ -258,6 +265,7 @@ class LubricatedSkirtElement final : public LinerElement {
   double viscosity_Pas_ = 0.0;
   std::unique_ptr<Workspace> workspace_;
   mutable long filmSolves_ = 0, filmFallbacks_ = 0, filmDerivativeFailures_ = 0;
+  mutable bool jacobianWanted_ = true;  // a request of the stepper (setForceJacobianWanted)
   mutable Timings timings_;
   ElementCache<LubricatedSkirtResults> cache_;
   ElementZ work_;  // [0] friction work, [1] hydrodynamic, [2] asperity, [3..4] wear volume

@@ -80,6 +80,9 @@ class PistonAssemblyModel {
   // (nu x nq and nu x nu, zero where no element adds anything). Returns false if no
   // element adds anything.
   bool calcElementForceJacobian(const SimTK::State& s, ForceJacobian& jacobian) const;
+  // Forwards ForceElement::setForceJacobianWanted to every element: whether the next
+  // realizations will be asked for calcElementForceJacobian (default: yes).
+  void setForceJacobianWanted(bool wanted) const;
 
  private:
   void requireNotBuilt(const char* what) const;

@@ -508,6 +508,8 @@ void readElasticSkirt(DeckSection& liner, plugin::LubricatedSkirtParameters& p,
        {"newton", skirt::ElasticCouplingScheme::Newton},
        {"modal", skirt::ElasticCouplingScheme::Modal}});
   el.coupling.modes = static_cast<int>(e.getInteger(skirtKey("liner.elastic_skirt.modes")));
+  el.coupling.modalJacobianReuse =
+      static_cast<int>(e.getInteger(skirtKey("liner.elastic_skirt.modal_jacobian_reuse")));
   el.squeezeRate = e.getBool(skirtKey("liner.elastic_skirt.squeeze_rate"));
   el.exactStaticDerivative = e.getBool(skirtKey("liner.elastic_skirt.exact_static_derivative"));
   gasDeformation = e.getBool(skirtKey("liner.elastic_skirt.gas_deformation"));

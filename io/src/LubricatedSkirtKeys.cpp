@@ -295,6 +295,12 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
               .means("scheme modal: modes of each side's compliance that carry the "
                      "deformation (the run's summary reports the share of the compliance "
                      "kept)"),
+          K::wholeNumber("liner.elastic_skirt.modal_jacobian_reuse", 0, 1000)
+              .byDefault(0.0)
+              .means("scheme modal: solves over which the coupling may keep its Newton "
+                     "Jacobian while it converges in at most two film evaluations; the first "
+                     "evaluation of a solve then skips the modes' derivative solves (0: "
+                     "sensitivities at every evaluation; BENCHMARKS.md)"),
           K::onOff("liner.elastic_skirt.gas_deformation")
               .byDefault(1.0)
               .means("the skirt also deforms under the cylinder pressure: the node table's "

@@ -439,12 +439,14 @@ bool ActiveSetSolver::gmres(const FilmSystem& s, double* b, double target, int m
     return true;
   }
   int its = 0;
+  bool missed = false;
   while (true) {
     // GMRES minimises the residual's 2-norm, the target is on its max norm, which is up to
     // sqrt(n) times smaller. Stop when the 2-norm, scaled by the max/2-norm ratio of this
     // cycle's starting residual, reaches the target: the true residual is then checked below
-    // and, should its shape have changed so that it misses, a restart carries on.
-    const double normRatio = r_.lpNorm<Eigen::Infinity>() / beta;
+    // and, should its shape have changed so that it misses, a restart carries on, stopping on
+    // the 2-norm itself (at most one such restart per solve near the iteration cap).
+    const double normRatio = missed ? 1.0 : r_.lpNorm<Eigen::Infinity>() / beta;
     V_.col(0) = r_ / beta;
     g_.setZero();
     g_[0] = beta;
@@ -494,6 +496,7 @@ bool ActiveSetSolver::gmres(const FilmSystem& s, double* b, double target, int m
     }
     if (its >= maxIt || !r_.allFinite())
       return false;
+    missed = true;
     beta = r_.norm();
   }
 }

@@ -202,7 +202,10 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
   // history and the sums (main thread, thrust first, so the results do not depend on it).
   std::array<skirt::SkirtSideInputs, 2> inputs;
   // The squeeze derivatives serve only the stepper's Jacobian, except in the elastic coupling.
-  const bool withJacobian = jacobianWanted_ || parameters_.elasticSkirt.enabled;
+  // (the Newton scheme's elastic rate reads the lateral column; the modal scheme its own ones).
+  const bool withJacobian =
+      jacobianWanted_ || (parameters_.elasticSkirt.enabled &&
+                          parameters_.elasticSkirt.coupling.scheme != skirt::ElasticCouplingScheme::Modal);
   r.hasForceJacobian = withJacobian;
   std::array<double, 2> dts{0.0, 0.0};
   std::array<const FillHistory*, 2> histories{nullptr, nullptr};  // read here, not in a worker
@@ -308,20 +311,23 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     Eigen::MatrixXd& modalBasis = workspace_->modalRateBasis[k];
     if (modalRate)
       modalBasis = (-1.0 / dt) * coupling->modalShapes();
-    inputs[k].extraSqueezeBasis = modalRate && !modalGap ? &modalBasis : nullptr;
-    inputs[k].extraGapRateBasis = modalRate && modalGap ? &modalBasis : nullptr;
-    if (modalGap) {
-      Eigen::MatrixXd& gapBasis = workspace_->modalGapBasis[k];
-      if (gapBasis.cols() != coupling->modeCount() || coupling->hasLiner())
-        gapBasis = -coupling->modalShapes();  // the liner moves the shapes with the piston
-      inputs[k].extraGapBasis = &gapBasis;
-    } else {
-      inputs[k].extraGapBasis = nullptr;
-    }
+    Eigen::MatrixXd& gapBasis = workspace_->modalGapBasis[k];
+    if (modalGap && (gapBasis.cols() != coupling->modeCount() || coupling->hasLiner()))
+      gapBasis = -coupling->modalShapes();  // the liner moves the shapes with the piston
+    // Per evaluation: the modal sensitivities only when the coupling will read them
+    // (FilmPressureEvaluation::sensitivitiesWanted; ElasticCouplingParameters::
+    // modalJacobianReuse).
+    const auto setSensitivityBases = [&](bool wanted) {
+      inputs[k].extraSqueezeBasis = wanted && modalRate && !modalGap ? &modalBasis : nullptr;
+      inputs[k].extraGapRateBasis = wanted && modalRate && modalGap ? &modalBasis : nullptr;
+      inputs[k].extraGapBasis = wanted && modalGap ? &gapBasis : nullptr;
+    };
     // The coupling's last film evaluation is the one of its returned deformation, so the
     // results left in the workspace belong to the converged gap.
     const skirt::ElasticCouplingReport report = coupling->solve(
         [&](const Eigen::ArrayXd& elastic_m, skirt::FilmPressureEvaluation& out) {
+          const bool sensitivities = out.sensitivitiesWanted;
+          setSensitivityBases(sensitivities);
           fields.pistonElastic_m = elastic_m;
           if (elasticRate)
             fields.pistonElasticRate_mps = (elastic_m - history->elastic_m) / dt;
@@ -340,16 +346,21 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
               // The film's part is exact (below; with the rate's squeeze part when modalRate);
               // the asperities' own slope is what it lacks.
               out.pressureStiffness_Pa_per_m = (-slope).max(0.0);
-              out.pressureGapSensitivity_Pa_per_m = res.film.dPressure_dGap;
+              if (sensitivities)
+                out.pressureGapSensitivity_Pa_per_m = res.film.dPressure_dGap;
+              else
+                out.pressureGapSensitivity_Pa_per_m.resize(0, 0);
             } else {
               skirt::localPressureStiffness(res.normalPressure_Pa, pc, res.filmGap_m, slope,
                                             workspace_->lubrication[k]->getCompositeSigma_m(),
                                             out.pressureStiffness_Pa_per_m);
               out.pressureGapSensitivity_Pa_per_m.resize(0, 0);
             }
-            if (modalRate && !modalGap) {
+            if (modalRate && !modalGap && sensitivities) {
               out.pressureRateSensitivity_Pa_per_m =
                   res.film.dPressure_dVelocity.rightCols(modalBasis.cols());
+            } else if (modalRate && !modalGap) {
+              out.pressureRateSensitivity_Pa_per_m.resize(0, 0);
             } else if (scheme == skirt::ElasticCouplingScheme::Modal) {
               out.pressureRateSensitivity_Pa_per_m.resize(0, 0);
             } else if (elasticRate) {
@@ -498,6 +509,8 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
     r.dQ_dPose.col(c) = poseForces(dPose.col(c));
   }
   r.dQ_dPose(2, 2) -= retainerStiffness;
+  if (!withJacobian)  // left out (setForceJacobianWanted): never read as zero damping
+    r.dQ_dPoseRate.setConstant(std::numeric_limits<double>::quiet_NaN());
 
   // Secondary kinetic energy (slap tracking).
   const double mass = engine.mass.piston.mass_kg + engine.mass.pin.mass_kg;
@@ -547,10 +560,6 @@ void LubricatedSkirtElement::realizeAcceleration(const SimTK::State& s) const {
 bool LubricatedSkirtElement::addForceJacobian(const SimTK::State& s,
                                               ForceJacobian& jacobian) const {
   const LubricatedSkirtResults& r = getResults(s);
-  if (!r.hasForceJacobian)
-    throw std::logic_error(
-        "LubricatedSkirtElement::addForceJacobian: the state was realized with "
-        "setForceJacobianWanted(false), so its film squeeze derivatives were not computed");
   addPoseForceJacobian(*crankTrain_, s, r.dQ_dPose, r.dQ_dPoseRate, jacobian);
   return true;
 }

@@ -9,6 +9,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -80,13 +81,13 @@ class SqueezeDamperGuide final : public plugin::LinerElement {
   }
   bool addForceJacobian(const SimTK::State& s, plugin::ForceJacobian& j) const override {
     const Results& r = getResults(s);
-    if (!r.hasJacobian)  // the contract of ForceElement::setForceJacobianWanted
-      throw std::logic_error("SqueezeDamperGuide: Jacobian asked of a state realized without");
     plugin::addPoseForceJacobian(*ct_, s, r.dQ_dp, r.dQ_dpdot, j);
     return true;
   }
-  // Like the lubricated skirt: an evaluation that is told no leaves the Jacobian out.
+  // Like the lubricated skirt: an evaluation that is told no leaves the damping part out
+  // (NaN: should the stepper read it, its steps turn NaN and the test fails).
   void setForceJacobianWanted(bool wanted) const override { wanted_ = wanted; }
+  long getEvaluationsWithoutJacobian() const { return withoutJacobian_; }
   double getSideForce_N(const SimTK::State& s) const override { return -getResults(s).Q[0]; }
   // Smallest gap of the four squeeze gaps [m] (to see how close the skirt comes).
   double getMinGap_m(const SimTK::State& s) const { return getResults(s).minGap_m; }
@@ -96,7 +97,6 @@ class SqueezeDamperGuide final : public plugin::LinerElement {
     Eigen::Vector3d Q = Eigen::Vector3d::Zero();
     Eigen::Matrix3d dQ_dp = Eigen::Matrix3d::Zero(), dQ_dpdot = Eigen::Matrix3d::Zero();
     double minGap_m = 0.0;
-    bool hasJacobian = true;
   };
   double floorGap(double h) const {  // smooth, >= gapFloor
     const double f = p_.gapFloor_m;
@@ -129,14 +129,14 @@ class SqueezeDamperGuide final : public plugin::LinerElement {
       r.dQ_dp(2, 2) = -p_.tertiaryStiffness_Npm;
       r.dQ_dpdot(2, 2) = -p_.tertiaryDamping_Nspm;
       if (!wanted_) {
-        r.dQ_dp.setZero();
-        r.dQ_dpdot.setZero();
-        r.hasJacobian = false;
+        r.dQ_dpdot.setConstant(std::numeric_limits<double>::quiet_NaN());
+        ++withoutJacobian_;
       }
     });
   }
   Parameters p_;
   mutable bool wanted_ = true;
+  mutable long withoutJacobian_ = 0;
   const mbd::CrankTrain* ct_ = nullptr;
   std::array<double, 2> heights_{};
   plugin::ElementCache<Results> cache_;
@@ -251,6 +251,10 @@ TEST(LinearlyImplicitStepper, ReusedJacobianKeepsTheTrajectory) {
       o.jacobianReuseSteps = reuse;
       plugin::LinearlyImplicitStepperStats st;
       diffs.push_back(poseDifference_m(runStepper(ours, o, &st), ref));
+      // The stepper told the element each time it did not want the Jacobian.
+      EXPECT_EQ(ours.model.getElementAs<SqueezeDamperGuide>("squeeze_damper_guide")
+                    .getEvaluationsWithoutJacobian(),
+                st.forceEvaluations - st.jacobianEvaluations);
       std::printf("  reuse %d, tolerance %.0e m: %ld steps (%ld rejected), %ld evaluations, %ld "
                   "with the Jacobian; difference to CPodes %.3e um\n",
                   reuse, tol, st.steps, st.rejectedSteps, st.forceEvaluations,

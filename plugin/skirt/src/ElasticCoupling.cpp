@@ -43,6 +43,9 @@ void checkParameters(const ElasticCouplingParameters& p) {
                  detail::named("krylovTolerance", p.krylovTolerance, "") + " must be in (0, 1)");
   if (p.modes < 1)
     detail::fail(kParams, "modes = " + std::to_string(p.modes) + " must be at least 1");
+  if (p.modalJacobianReuse < 0)
+    detail::fail(kParams, "modalJacobianReuse = " + std::to_string(p.modalJacobianReuse) +
+                              " must be 0 or positive");
   if (p.minRelaxation > p.maxRelaxation)
     detail::fail(kParams, detail::named("minRelaxation", p.minRelaxation, "") +
                               " must not exceed " +

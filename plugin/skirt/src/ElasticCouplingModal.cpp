@@ -19,6 +19,11 @@ constexpr const char* kWhere = "ElasticCoupling (modal)";
 // Backtracking trials per Newton step (1, 1/4, ..., 1/4^5): near a slap the local stiffness
 // underestimates the asperities' growth by up to ~100x and the full step overshoots.
 constexpr int kLineSearchTrials = 6;
+// Jacobian reuse: a kept Jacobian serves only after a solve of at most this many film
+// evaluations. On a film where the Newton iteration itself needs many (a thin, closing film:
+// 8-9 from a converged start 20 nm away), a kept Jacobian's first step was poor enough to
+// triple the evaluations (tests/skirt, SensitivitiesOnDemandReachTheSameDeformations' history).
+constexpr int kEasySolve = 2;
 }  // namespace
 
 void ElasticCoupling::setUpModal() {
@@ -152,10 +157,30 @@ ElasticCouplingReport ElasticCoupling::solveModal(const FilmPressureFunction& fi
     modalJacobian_.diagonal().array() += 1.0;
   };
 
-  evaluateAt(modal_m_);
-  while (!report.converged && report.iterations < parameters_.maxIterations) {
+  // Jacobian reuse (modalJacobianReuse): while the coupling is easy (the last solve needed at
+  // most kEasySolve evaluations) the first evaluation goes without the sensitivities, and
+  // should it not converge, the first Newton step takes the Jacobian kept from the last
+  // evaluation that had them (at most N solves old). Every later evaluation has them.
+  const bool reuse = parameters_.modalJacobianReuse > 0 && !hasLiner();
+  const bool useKept = reuse && modalLuKept_ && modalLuAge_ < parameters_.modalJacobianReuse &&
+                       lastSolveEvaluations_ <= kEasySolve;
+  ++modalLuAge_;
+  // After an evaluation with the sensitivities: its Jacobian (m ForceMap applications and an
+  // m x m LU, small beside a film solve), for the next step or the next solves.
+  const auto refreshJacobian = [&] {
     formJacobian();
     modalLu_.compute(modalJacobian_);
+    modalLuKept_ = true;
+    modalLuAge_ = 0;
+  };
+  film_.sensitivitiesWanted = !useKept;
+  evaluateAt(modal_m_);
+  if (reuse && !useKept)
+    refreshJacobian();
+  film_.sensitivitiesWanted = true;
+  while (!report.converged && report.iterations < parameters_.maxIterations) {
+    if (!reuse)
+      refreshJacobian();
     modalStep_m_ = modalLu_.solve(modalResidual_m_);
     if (!modalStep_m_.allFinite())
       break;
@@ -165,7 +190,10 @@ ElasticCouplingReport ElasticCoupling::solveModal(const FilmPressureFunction& fi
     double lambda = 1.0;
     for (int ls = 0; ls < kLineSearchTrials && report.iterations < parameters_.maxIterations; ++ls) {
       modal_m_ = modalBase_m_ + lambda * modalStep_m_;
-      if (evaluateAt(modal_m_) || modalResidual_m_.norm() <= (1.0 - 1e-4 * lambda) * baseNorm) {
+      const bool converged = evaluateAt(modal_m_);
+      if (reuse)
+        refreshJacobian();  // at this trial: the next step's, or the next solves'
+      if (converged || modalResidual_m_.norm() <= (1.0 - 1e-4 * lambda) * baseNorm) {
         accepted = true;
         break;
       }
@@ -177,6 +205,7 @@ ElasticCouplingReport ElasticCoupling::solveModal(const FilmPressureFunction& fi
     // Not accepted: go on from the last (shortest) trial, the evaluated state.
   }
   report.relaxation = 1.0;
+  lastSolveEvaluations_ = report.iterations;
   if (report.converged)
     start_m_ = u_m_;
   return report;

@@ -116,13 +116,15 @@ class ForceElement {
   virtual bool addForceJacobian(const SimTK::State& /*state*/, ForceJacobian& /*jacobian*/) const {
     return false;
   }
-  // Whether the next realizations will be asked for addForceJacobian (default: yes). An
-  // implicit stepper that reuses its Jacobian over several steps says no before it realizes
-  // a state whose Jacobian it will not read; an element whose Jacobian is costly (the
-  // lubricated skirt: one film back-substitution per pose velocity and side) may then leave it
-  // out, and its addForceJacobian must refuse (std::logic_error) a state realized so. Forces
-  // and outputs must not depend on it. A request, not state: read when a realization computes
-  // the element's cache entry (a state already realized keeps what it has).
+  // Whether the next realizations will be asked for the velocity part of addForceJacobian
+  // (dfdu; default: yes). An implicit stepper that keeps its damping Jacobian over several
+  // steps says no before it realizes a state whose dfdu it will not read; an element whose
+  // dfdu is costly (the lubricated skirt: one film back-substitution per pose velocity and
+  // side) may then leave it out - NaN, so that a misuse cannot pass unnoticed - but must still
+  // add the position part (dfdq), which the stepper reads at every evaluation (contact
+  // stiffness switches within a step). Forces and outputs must not depend on it. A request,
+  // not state: read when a realization computes the element's cache entry (a state already
+  // realized keeps what it has).
   virtual void setForceJacobianWanted(bool /*wanted*/) const {}
 
   // ---- outputs -----------------------------------------------------------------------

@@ -95,13 +95,16 @@ struct LinearlyImplicitStepperOptions {
   // the global error on the piston's slow motion, which accumulates over the film's slow
   // relaxation and which the per-step tolerance does not bound (BENCHMARKS.md, 2026-12-05).
   int maxOrder = 2;
-  // Jacobian reuse: 0 (the default) evaluates the elements' Jacobian (K, C) at every force
-  // evaluation. N > 0 keeps it for up to N accepted steps: a step's first evaluation then
-  // realizes the elements without their Jacobian (ForceElement::setForceJacobianWanted; the
-  // lubricated skirt skips its squeeze derivatives) and the Newton correction uses the kept
-  // K and C with the current M and g. A second Newton iteration, a failed or rejected step,
-  // or N steps always evaluate it afresh. The Newton iteration still converges the step to
-  // newtonTolerance; only its rate depends on how well K and C describe the forces.
+  // Jacobian reuse: 0 (the default) evaluates the elements' whole Jacobian (K, C) at every
+  // force evaluation. N > 0 keeps the damping part C for up to N accepted steps: a step's
+  // first evaluation then realizes the elements without it (ForceElement::
+  // setForceJacobianWanted; the lubricated skirt skips its squeeze derivatives) and the
+  // Newton correction uses the kept C with the current M, K and g (the C of step s serves
+  // steps s+1 ... s+N). A second Newton iteration and the step after a failed or rejected one
+  // always evaluate C afresh. The Newton iteration still converges the step: an iterate
+  // corrected with a kept C is accepted below half of newtonTolerance (a kept C may overstate
+  // the damping, which shrinks the correction), and the contraction test compares
+  // corrections of fresh Jacobians only.
   int jacobianReuseSteps = 0;
 };
 

@@ -182,7 +182,7 @@ struct LubricatedSkirtResults {
   Eigen::Matrix3d dQ_dPose = Eigen::Matrix3d::Zero();           // PistonPose.h generalised forces
   Eigen::Matrix3d dQ_dPoseRate = Eigen::Matrix3d::Zero();
   // False when the evaluation left the film's squeeze derivatives out
-  // (setForceJacobianWanted(false)): dQ_dPoseRate then lacks the film's part.
+  // (setForceJacobianWanted(false)): dQ_dPoseRate is then NaN (dQ_dPose stays exact).
   bool hasForceJacobian = true;
   double frictionPower_W = 0;  // both sides, >= 0 typical
   double hydrodynamicFrictionPower_W = 0, asperityFrictionPower_W = 0;
@@ -205,9 +205,10 @@ class LubricatedSkirtElement final : public LinerElement {
   void calcForces(const SimTK::State& s, AppliedForces& forces) const override;
   void realizeAcceleration(const SimTK::State& s) const override;
   bool addForceJacobian(const SimTK::State& s, ForceJacobian& jacobian) const override;
-  // Not wanted: a rigid skirt's evaluations solve the film without its squeeze derivatives
-  // (about 40 % of a solve on the 64 x 48 grid). The elastic skirt keeps them (its coupling
-  // reads the lateral column).
+  // Not wanted: the evaluations solve the film without the pose's squeeze derivatives (about
+  // 40 % of a rigid skirt's solve on the 64 x 48 grid; the damping part of the Jacobian is
+  // then NaN, the stiffness part - asperity contact, pin retainer - stays). The elastic skirt's Newton scheme
+  // keeps them (its elastic rate reads the lateral column); the modal scheme has its own.
   void setForceJacobianWanted(bool wanted) const override { jacobianWanted_ = wanted; }
   ElementOutputs getOutputs() const override;
 

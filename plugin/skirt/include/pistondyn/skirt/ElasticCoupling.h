@@ -175,6 +175,16 @@ struct ElasticCouplingParameters {
   // Modal: how many modes of the side's compliance carry the deformation, >= 1 (at most the
   // structural nodes that take the side's forces or move its gap; fewer are used then).
   int modes = 20;
+  // Modal: solves over which a Newton Jacobian may be kept, >= 0 (default 0: none). With N > 0,
+  // while the coupling is easy (the last solve took at most two film evaluations), the first
+  // evaluation of a solve asks for no sensitivities (FilmPressureEvaluation::
+  // sensitivitiesWanted = false); should it not converge, the first Newton step uses the
+  // Jacobian of the last evaluation that had them (at most N solves old), and every later
+  // evaluation asks for them again. In a time-stepped cycle the warm start (the deformation
+  // moved on at its rate) is close, so most solves end at their first evaluation or after one
+  // step: they save the m derivative columns. Not with a liner (its modes move with the
+  // piston).
+  int modalJacobianReuse = 0;
 };
 
 // What the caller's film evaluation returns for one elastic gap term.
@@ -200,6 +210,10 @@ struct FilmPressureEvaluation {
   // Jacobian adds it to pressureRateSensitivity_Pa_per_m, so a caller may put the rate's part
   // in here instead (FilmProblem::gapRateBasis) and leave that one empty.
   Eigen::MatrixXd pressureGapSensitivity_Pa_per_m;
+  // Input, set by the coupling before each call: false when it will not read the two
+  // sensitivities above (ElasticCouplingParameters::modalJacobianReuse), which the caller may
+  // then leave out (empty) to save their derivative solves.
+  bool sensitivitiesWanted = true;
 };
 
 // The local estimate of -dp/dh the Newton scheme's preconditioner uses [Pa/m], per film node:
@@ -385,6 +399,9 @@ class ElasticCoupling {
   Eigen::VectorXd modal_m_, modalResidual_m_, modalStep_m_, modalBase_m_, gasU_m_;
   Eigen::MatrixXd modalForce_N_, modalJacobian_;  // structural x m; m x m
   Eigen::PartialPivLU<Eigen::MatrixXd> modalLu_;
+  bool modalLuKept_ = false;      // modalLu_ holds the Jacobian of an earlier evaluation
+  int modalLuAge_ = 0;            // solves since it was formed
+  int lastSolveEvaluations_ = 0;  // film evaluations of the last solve
   Eigen::VectorXd filmColumn_;
   double modalTraceShare_ = 0.0;
 };

@@ -381,10 +381,10 @@ const DeckKeyTable& getEngineDeckKeys() {
           K::wholeNumber("simulation.jacobian_reuse_steps", 0, 1000)
               .byDefault(0)
               .means("`linearly_implicit_bdf2`: 0 evaluates the film's squeeze derivatives "
-                     "(the stepper's Jacobian) at every force evaluation; N keeps them for up "
-                     "to N steps while the Newton iteration converges at its first "
-                     "evaluation (a rigid skirt's evaluation then skips ~40 % of its film "
-                     "work; BENCHMARKS.md)"),
+                     "(the stepper's damping Jacobian) at every force evaluation; N keeps "
+                     "them for up to N steps (an evaluation then skips ~40 % of a rigid "
+                     "skirt's film work). For film-borne skirts: on a starved film it moved "
+                     "fmep by up to 6 % (BENCHMARKS.md)"),
           K::wholeNumber("simulation.max_steps", 1, 2000000000)
               .byDefault(2e7)
               .means("step budget of the run (a run never hangs: it stops with the crank angle "

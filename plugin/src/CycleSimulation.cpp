@@ -130,6 +130,8 @@ class Advancer {
   virtual long getRealizations() const = 0;
   virtual long getRejectedSteps() const { return 0; }
   virtual long getFailedEvaluations() const { return 0; }
+  // Wall time in force evaluations [s] where the advancer can tell (0: it cannot).
+  virtual double getRealizeTime_s() const { return 0.0; }
 };
 
 class SimbodyAdvancer final : public Advancer {
@@ -229,6 +231,9 @@ class StepperAdvancer final : public Advancer {
   long getFailedEvaluations() const override {
     return before_.failedEvaluations + stepper_->getStats().failedEvaluations;
   }
+  double getRealizeTime_s() const override {
+    return before_.realizeTime_s + stepper_->getStats().realizeTime_s;
+  }
 
  private:
   void accumulate() {
@@ -237,6 +242,7 @@ class StepperAdvancer final : public Advancer {
     before_.forceEvaluations += s.forceEvaluations;
     before_.rejectedSteps += s.rejectedSteps;
     before_.failedEvaluations += s.failedEvaluations;
+    before_.realizeTime_s += s.realizeTime_s;
   }
   const PistonAssemblyModel& model_;
   LinearlyImplicitStepperOptions options_;
@@ -457,6 +463,7 @@ void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& pr
   stats_.realizations = integ->getRealizations();
   stats_.rejectedSteps = integ->getRejectedSteps();
   stats_.failedEvaluations = integ->getFailedEvaluations();
+  stats_.realizeTime_s = integ->getRealizeTime_s();
   stats_.wallTime_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
   for (RowSink* sink : sinks)

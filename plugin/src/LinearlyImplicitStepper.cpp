@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <chrono>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -155,12 +156,15 @@ struct LinearlyImplicitStepper::Impl {
       ++stats.jacobianEvaluations;
     model.setForceJacobianWanted(withJacobian);
     bool ok = true;
+    const auto start = std::chrono::steady_clock::now();
     try {
       system.realize(s, SimTK::Stage::Acceleration);
     } catch (const std::exception& e) {
       reason = e.what();
       ok = false;
     }
+    stats.realizeTime_s +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     model.setForceJacobianWanted(true);  // anyone else realizing gets the default
     return ok;
   }

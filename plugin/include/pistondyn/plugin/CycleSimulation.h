@@ -129,6 +129,9 @@ struct SimulationStats {
   long realizations = 0;       // number of Stage::Dynamics realizations taken by the integrator
   long rejectedSteps = 0;      // LinearlyImplicitBDF2: steps rejected by the error test
   long failedEvaluations = 0;  // LinearlyImplicitBDF2: steps retried after an element threw
+  // LinearlyImplicitBDF2: wall time in its force evaluations (realize through Acceleration:
+  // Simbody and the elements) [s]; 0 for Simbody's integrators (not separable there).
+  double realizeTime_s = 0.0;
   int cyclesRun = 0;           // whole cycles simulated
   bool converged = false;      // untilPeriodic: the last two cycles agreed
   int cyclesToConverge = 0;    // untilPeriodic: cycles run when they did (0 if not)

@@ -115,6 +115,7 @@ struct LinearlyImplicitStepperStats {
   long forceEvaluations = 0;   // realizations to Stage::Acceleration done by the stepper
   long newtonFailures = 0;     // steps retried because the Newton iteration did not converge
   long jacobianEvaluations = 0;  // the evaluations that also evaluated the elements' Jacobian
+  double realizeTime_s = 0.0;    // wall time in the evaluations' realizations (Simbody + elements)
 };
 
 class LinearlyImplicitStepper {

@@ -288,9 +288,13 @@ TEST(LubricatedSkirt, JacobianReuseFollowsTheFloodedCycle) {
     plugin::ResultTable table = sim.run();
     return std::make_pair(table, sim.getStats());
   };
-  const auto [fine, fineStats] = run(0, 0.125, 5e-9);
-  const auto [fresh, freshStats] = run(0, 0.25, 1e-8);
-  const auto [kept, keptStats] = run(20, 0.25, 1e-8);
+  // (Named references, not structured bindings: those cannot be captured by the lambdas
+  // below in C++17.)
+  const auto fineRun = run(0, 0.125, 5e-9);
+  const auto freshRun = run(0, 0.25, 1e-8);
+  const auto keptRun = run(20, 0.25, 1e-8);
+  const plugin::ResultTable &fine = fineRun.first, &fresh = freshRun.first, &kept = keptRun.first;
+  const plugin::SimulationStats &freshStats = freshRun.second, &keptStats = keptRun.second;
   ASSERT_EQ(fresh.columns, kept.columns);
   ASSERT_EQ(fresh.rows.size(), kept.rows.size());
   ASSERT_EQ(fresh.rows.size(), fine.rows.size());

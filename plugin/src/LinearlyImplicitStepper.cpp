@@ -3,8 +3,8 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
-#include <chrono>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>

@@ -205,8 +205,8 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
   // (the Newton scheme's elastic rate reads the lateral column; the modal scheme its own ones).
   const bool withJacobian =
       jacobianWanted_ || (parameters_.elasticSkirt.enabled &&
-                          parameters_.elasticSkirt.coupling.scheme != skirt::ElasticCouplingScheme::Modal);
-  r.hasForceJacobian = withJacobian;
+                          parameters_.elasticSkirt.coupling.scheme !=
+                              skirt::ElasticCouplingScheme::Modal);
   std::array<double, 2> dts{0.0, 0.0};
   std::array<const FillHistory*, 2> histories{nullptr, nullptr};  // read here, not in a worker
   for (int k : {kThrust, kAntiThrust}) {
@@ -362,9 +362,7 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
             if (modalRate && !modalGap && sensitivities) {
               out.pressureRateSensitivity_Pa_per_m =
                   res.film.dPressure_dVelocity.rightCols(modalBasis.cols());
-            } else if (modalRate && !modalGap) {
-              out.pressureRateSensitivity_Pa_per_m.resize(0, 0);
-            } else if (scheme == skirt::ElasticCouplingScheme::Modal) {
+            } else if (scheme == skirt::ElasticCouplingScheme::Modal) {  // modalRate is modal
               out.pressureRateSensitivity_Pa_per_m.resize(0, 0);
             } else if (elasticRate) {
               // The squeeze part: d p / d(dh/dt) / dt, estimated node by node from the film's

@@ -200,6 +200,16 @@ double poseDifference_m(const std::vector<Eigen::Vector2d>& a,
   return worst;
 }
 
+// Our stepper as compared with CPodes: per-step tolerance tol [m] on the pose, steps of at
+// most 0.5 deg.
+plugin::LinearlyImplicitStepperOptions cpodesComparisonOptions(double tol) {
+  plugin::LinearlyImplicitStepperOptions o;
+  o.positionTolerance_m = tol;
+  o.velocityTolerance_mps = tol * 209.4;
+  o.maxStep_s = 0.5 * kDegree_s;
+  return o;
+}
+
 // The tolerances are per step, so the global error is about the number of steps times the
 // tolerance; the test therefore checks that our trajectory converges to CPodes' as the
 // tolerance falls, and that at 1e-12 m per step it is within 1e-8 m (5e-4 of the
@@ -214,12 +224,9 @@ TEST(LinearlyImplicitStepper, AgreesWithCpodesOnAStiffSqueezeDamper) {
   std::vector<double> diffs;
   for (double tol : {1e-11, 1e-12}) {
     Model ours;
-    plugin::LinearlyImplicitStepperOptions o;
-    o.positionTolerance_m = tol;
-    o.velocityTolerance_mps = tol * 209.4;
-    o.maxStep_s = 0.5 * kDegree_s;
     plugin::LinearlyImplicitStepperStats stats;
-    diffs.push_back(poseDifference_m(runStepper(ours, o, &stats), ref));
+    diffs.push_back(
+        poseDifference_m(runStepper(ours, cpodesComparisonOptions(tol), &stats), ref));
     // The stiffness: near the wall the damping reaches c0 (c/h)^3 at both heights; the
     // piston's time constant m/c there is far below the steps taken.
     std::printf(
@@ -233,7 +240,7 @@ TEST(LinearlyImplicitStepper, AgreesWithCpodesOnAStiffSqueezeDamper) {
 }
 
 // Jacobian reuse (jacobianReuseSteps): most evaluations realize the damper without its
-// Jacobian (which it then leaves out, and refuses to give), and the trajectory still converges
+// damping Jacobian (which it then leaves NaN), and the trajectory still converges
 // to CPodes' like the stepper that evaluates the Jacobian every time: the Newton iteration, not
 // the Jacobian, decides the step's solution. The damping grows like (c/h)^3 as the skirt
 // nears the wall, so a Jacobian kept over steps is visibly stale there.
@@ -244,10 +251,7 @@ TEST(LinearlyImplicitStepper, ReusedJacobianKeepsTheTrajectory) {
     std::vector<double> diffs;
     for (double tol : {1e-11, 1e-12}) {
       Model ours;
-      plugin::LinearlyImplicitStepperOptions o;
-      o.positionTolerance_m = tol;
-      o.velocityTolerance_mps = tol * 209.4;
-      o.maxStep_s = 0.5 * kDegree_s;
+      plugin::LinearlyImplicitStepperOptions o = cpodesComparisonOptions(tol);
       o.jacobianReuseSteps = reuse;
       plugin::LinearlyImplicitStepperStats st;
       diffs.push_back(poseDifference_m(runStepper(ours, o, &st), ref));

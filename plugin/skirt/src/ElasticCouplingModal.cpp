@@ -22,7 +22,8 @@ constexpr int kLineSearchTrials = 6;
 // Jacobian reuse: a kept Jacobian serves only after a solve of at most this many film
 // evaluations. On a film where the Newton iteration itself needs many (a thin, closing film:
 // 8-9 from a converged start 20 nm away), a kept Jacobian's first step was poor enough to
-// triple the evaluations (tests/skirt, SensitivitiesOnDemandReachTheSameDeformations' history).
+// triple the evaluations (seen without this rule on KeptModalJacobianReachesTheSameDeformations'
+// 2 um film: 191 against 60 evaluations over eight steps).
 constexpr int kEasySolve = 2;
 }  // namespace
 

@@ -180,10 +180,9 @@ struct LubricatedSkirtResults {
   Eigen::Vector3d forceOnPiston_N = Eigen::Vector3d::Zero();    // ground, at the origin
   Eigen::Vector3d momentOnPiston_Nm = Eigen::Vector3d::Zero();  // ground, about the origin
   Eigen::Matrix3d dQ_dPose = Eigen::Matrix3d::Zero();           // PistonPose.h generalised forces
+  // NaN when the evaluation left the film's squeeze derivatives out
+  // (setForceJacobianWanted(false)); dQ_dPose stays exact.
   Eigen::Matrix3d dQ_dPoseRate = Eigen::Matrix3d::Zero();
-  // False when the evaluation left the film's squeeze derivatives out
-  // (setForceJacobianWanted(false)): dQ_dPoseRate is then NaN (dQ_dPose stays exact).
-  bool hasForceJacobian = true;
   double frictionPower_W = 0;  // both sides, >= 0 typical
   double hydrodynamicFrictionPower_W = 0, asperityFrictionPower_W = 0;
   double secondaryKineticEnergy_J = 0;
@@ -207,8 +206,9 @@ class LubricatedSkirtElement final : public LinerElement {
   bool addForceJacobian(const SimTK::State& s, ForceJacobian& jacobian) const override;
   // Not wanted: the evaluations solve the film without the pose's squeeze derivatives (about
   // 40 % of a rigid skirt's solve on the 64 x 48 grid; the damping part of the Jacobian is
-  // then NaN, the stiffness part - asperity contact, pin retainer - stays). The elastic skirt's Newton scheme
-  // keeps them (its elastic rate reads the lateral column); the modal scheme has its own.
+  // then NaN, the stiffness part - asperity contact, pin retainer - stays). The elastic
+  // skirt's Newton scheme keeps them (its elastic rate reads the lateral column); the modal
+  // scheme has its own.
   void setForceJacobianWanted(bool wanted) const override { jacobianWanted_ = wanted; }
   ElementOutputs getOutputs() const override;
 

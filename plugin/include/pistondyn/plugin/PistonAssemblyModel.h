@@ -80,8 +80,8 @@ class PistonAssemblyModel {
   // (nu x nq and nu x nu, zero where no element adds anything). Returns false if no
   // element adds anything.
   bool calcElementForceJacobian(const SimTK::State& s, ForceJacobian& jacobian) const;
-  // Forwards ForceElement::setForceJacobianWanted to every element: whether the next
-  // realizations will be asked for calcElementForceJacobian (default: yes).
+  // Forwards ForceElement::setForceJacobianWanted to every element: whether the velocity part
+  // (dfdu) of calcElementForceJacobian will be read at the next realizations (default: yes).
   void setForceJacobianWanted(bool wanted) const;
 
  private:

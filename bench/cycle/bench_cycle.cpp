@@ -36,28 +36,26 @@
 
 #include "pistondyn/io/EngineDeck.h"
 #include "pistondyn/io/RunDeck.h"
-#include "pistondyn/plugin/LubricatedSkirtElement.h"
+#include "pistondyn/plugin/LinerElement.h"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-using pistondyn::plugin::LubricatedSkirtElement;
+using pistondyn::plugin::LinerElement;
+using pistondyn::plugin::SolverCounters;
 
 // What the element and the clock say at one instant; a cycle is the difference of two.
 struct Snapshot {
   double wall_s = 0.0;
   double cpu_s = 0.0;  // this thread's CPU time: the figure that survives a loaded machine
   double processCpu_s = 0.0;  // all threads (with --parallel-sides the helper's too)
-  LubricatedSkirtElement::Timings timings;
-  long filmSolves = 0;
-  long fallbacks = 0;
-  long derivativeFailures = 0;
+  SolverCounters timings;
 };
 
 // Takes a snapshot at the start of every cycle and at the end of the run.
 class CycleClock final : public pistondyn::plugin::RowSink {
  public:
-  explicit CycleClock(const LubricatedSkirtElement& element) : element_(element) {}
+  explicit CycleClock(const LinerElement& element) : element_(element) {}
   void beginCycle(int /*cycle*/) override { snapshots_.push_back(take()); }
   void consumeRow(const SimTK::State&, const std::vector<double>&) override {}
   void discardRows() override {}
@@ -74,13 +72,10 @@ class CycleClock final : public pistondyn::plugin::RowSink {
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu);
     s.processCpu_s =
         static_cast<double>(cpu.tv_sec) + 1e-9 * static_cast<double>(cpu.tv_nsec);
-    s.timings = element_.getTimings();
-    s.filmSolves = element_.getFilmSolveCount().value_or(0);
-    s.fallbacks = element_.getFilmFallbackCount().value_or(0);
-    s.derivativeFailures = element_.getFilmDerivativeFailureCount().value_or(0);
+    s.timings = element_.getSolverCounters().value_or(SolverCounters());
     return s;
   }
-  const LubricatedSkirtElement& element_;
+  const LinerElement& element_;
   Clock::time_point start_ = Clock::now();
   std::vector<Snapshot> snapshots_;
 };
@@ -91,12 +86,10 @@ double peakRss_MB() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux: kilobytes
 }
 
-const LubricatedSkirtElement* findSkirt(const pistondyn::plugin::PistonAssemblyModel& model) {
-  for (const std::string& name : model.getElementNames()) {
-    if (const auto* e = dynamic_cast<const LubricatedSkirtElement*>(&model.getElement(name)))
-      return e;
-  }
-  return nullptr;
+// The model's liner when it counts film solves (the lubricated skirt, or a user's film model).
+const LinerElement* findFilmLiner(const pistondyn::plugin::PistonAssemblyModel& model) {
+  const LinerElement* liner = model.findLinerElement();
+  return liner && liner->getSolverCounters() ? liner : nullptr;
 }
 
 std::vector<std::string> splitCommas(const std::string& s) {
@@ -127,9 +120,9 @@ double runConfiguration(const std::string& deckPath, std::vector<std::string> ov
   overrides.push_back("liner.film.solver=" + solver);
   const auto deck = pistondyn::io::loadEngineDeck(deckPath, overrides);
   auto model = pistondyn::io::buildModel(deck);
-  const LubricatedSkirtElement* skirt = findSkirt(*model);
+  const LinerElement* skirt = findFilmLiner(*model);
   if (!skirt) {
-    std::fprintf(stderr, "bench_cycle: %s has no lubricated skirt (liner.model)\n",
+    std::fprintf(stderr, "bench_cycle: %s has no film liner (liner.model: lubricated_skirt)\n",
                  deckPath.c_str());
     return 0.0;
   }
@@ -149,7 +142,7 @@ double runConfiguration(const std::string& deckPath, std::vector<std::string> ov
   const double loads = b.timings.loads_s - a.timings.loads_s;
   const double coupling = b.timings.coupling_s - a.timings.coupling_s;
   const double element = b.timings.total_s - a.timings.total_s;
-  const long solves = b.filmSolves - a.filmSolves;
+  const long solves = b.timings.filmSolves - a.timings.filmSolves;
   const long evaluations = b.timings.evaluations - a.timings.evaluations;
   const double meanSolve = solves > 0 ? film / static_cast<double>(solves) : 0.0;
   // The element's own rest (inputs, history, sums) and what lies outside it.
@@ -163,7 +156,8 @@ double runConfiguration(const std::string& deckPath, std::vector<std::string> ov
   std::printf("  wall %.3f s (CPU %.3f s this thread, %.3f s process)   fmep %.4f kPa   film solves %ld (fallbacks %ld, "
               "without derivatives %ld)   force evaluations %ld\n",
               wall, b.cpu_s - a.cpu_s, b.processCpu_s - a.processCpu_s, s.cycleFmep_Pa.empty() ? 0.0 : s.cycleFmep_Pa.back() / 1e3, solves,
-              b.fallbacks - a.fallbacks, b.derivativeFailures - a.derivativeFailures, evaluations);
+              b.timings.filmFallbacks - a.timings.filmFallbacks,
+              b.timings.derivativeFailures - a.timings.derivativeFailures, evaluations);
   std::printf("  shares: film %.1f %%  contact %.1f %%  gap %.1f %%  loads %.1f %%  elastic "
               "coupling (mapping, modal algebra) %.1f %%  element other %.1f %%  outside the "
               "element (Simbody, integrator, output) %.1f %%\n",
@@ -183,7 +177,10 @@ double runConfiguration(const std::string& deckPath, std::vector<std::string> ov
                 100.0 * simbody / s.wallTime_s,
                 100.0 * std::max(0.0, s.wallTime_s - s.realizeTime_s) / s.wallTime_s);
   }
-  const bool elastic = skirt->getParameters().elasticSkirt.enabled;
+  // The elastic skirt: the deck names a compliance.
+  const bool elastic = std::any_of(deck.inputs.begin(), deck.inputs.end(), [](const auto& in) {
+    return in.path == "liner.elastic_skirt.compliance_file";
+  });
   std::printf("  issue 12's targets (%s skirt; on its setting: 64 x 48, one core):\n",
               elastic ? "elastic" : "rigid");
   printTarget(elastic ? "wall per cycle (elastic)" : "wall per cycle (rigid)", wall,

@@ -138,7 +138,7 @@ void runWarmStroke(benchmark::State& state, const Scenario& sc, const FilmSolver
     for (int s = 1; s <= Scenario::kSteps; ++s) {
       sc.setStep(pr, s);
       if (pr.cavitation == CavitationModel::MassConserving)
-        pr.previousFillFraction = warm.fillFraction;
+        pr.history.last.fillFraction = warm.fillFraction;
       solver.solve(sc.grid, pr, &warm, r);
       warm = r.state;
       perSolve(r);

@@ -47,13 +47,11 @@ double relative(double a, double b) {
   return std::abs(a - b) / std::max({std::abs(a), std::abs(b), 1e-300});
 }
 
-// The deck's skirt parameters (as its factory read them from the deck).
+// The deck's skirt parameters (as its factory read them from the deck); throws
+// std::invalid_argument when the deck's liner is not the lubricated skirt.
 plugin::LubricatedSkirtParameters skirtParameters(const io::EngineDeck& deck) {
-  const std::unique_ptr<plugin::LinerElement> liner = deck.makeLinerElement();
-  const auto* skirt = dynamic_cast<const plugin::LubricatedSkirtElement*>(liner.get());
-  if (skirt == nullptr)
-    throw std::runtime_error("the deck does not select liner.model: lubricated_skirt");
-  return skirt->getParameters();
+  const auto model = io::buildModel(deck);
+  return model->getElementAs<plugin::LubricatedSkirtElement>("lubricated_skirt").getParameters();
 }
 
 // Runs the deck with the skirt of parameters `p` (no files written).

@@ -65,9 +65,13 @@ class SpringLinerGuide final : public plugin::LinerElement {
     const double vx = crankTrain_->getPiston().getBodyOriginVelocity(s)[0];
     return p_.lateralStiffness_Npm * x + p_.lateralDamping_Nspm * vx;
   }
+  // The liner outputs the summary and the figures know (LinerElement.h) that this liner has:
+  // the side force and the lateral motion at the skirt's ends (the secondary-motion figure).
   plugin::ElementOutputs getOutputs() const override {
-    return {{"side_force", "N", "lateral force the piston exerts on the springs, + towards thrust",
-             [this](const SimTK::State& s) { return getSideForce_N(s); }}};
+    using plugin::LinerOutput;
+    return {plugin::makeLinerOutput(LinerOutput::SideForce, *this, *crankTrain_),
+            plugin::makeLinerOutput(LinerOutput::LateralAtSkirtTop, *this, *crankTrain_),
+            plugin::makeLinerOutput(LinerOutput::LateralAtSkirtBottom, *this, *crankTrain_)};
   }
   const Parameters& getParameters() const { return p_; }
 

@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "pistondyn/common/CrankAngle.h"
-#include "pistondyn/plugin/LubricatedSkirtElement.h"
 
 namespace pistondyn::io {
 namespace {
@@ -42,11 +41,8 @@ void addDeckFigures(const EngineDeck& deck, CycleSummary& s) {
 
 CycleSummarySink::CycleSummarySink(const EngineDeck& deck, const plugin::PistonAssemblyModel& model)
     : deck_(deck), model_(model), perCycle_(deck.simulation.stepsPerCycle()) {
-  if (const plugin::LinerElement* liner = model_.findLinerElement()) {
-    solvesAtStart_ = liner->getFilmSolveCount();
-    fallbacksAtStart_ = liner->getFilmFallbackCount();
-    derivativeFailuresAtStart_ = liner->getFilmDerivativeFailureCount();
-  }
+  if (const plugin::LinerElement* liner = model_.findLinerElement())
+    countersAtStart_ = liner->getSolverCounters();
 }
 
 void CycleSummarySink::beginRun(const std::vector<std::string>& columns) {
@@ -95,11 +91,9 @@ void CycleSummarySink::consumeRow(const SimTK::State& state, const std::vector<d
     (k == 0 ? timeAtCycleStart_s_ : timeAtCycleEnd_s_) = state.getTime();
     if (liner_ != nullptr)
       (k == 0 ? workAtCycleStart_J_ : workAtCycleEnd_J_) = liner_->getFrictionWork_J(state);
-    // The skirt integrates its asperity friction work too (not part of the liner role).
-    if (const auto* skirt = dynamic_cast<const plugin::LubricatedSkirtElement*>(liner_)) {
+    if (liner_ != nullptr)
       (k == 0 ? asperityWorkAtCycleStart_J_ : asperityWorkAtCycleEnd_J_) =
-          skirt->getAsperityFrictionWork_J(state);
-    }
+          liner_->getAsperityFrictionWork_J(state);
   }
   // Slap events: a change of the last completed event's energy since the previous row is
   // an event completed in between (the closing row's change belongs to this cycle).
@@ -201,14 +195,12 @@ void CycleSummarySink::endRun() {
     if (slap_.valid)
       f.slapEnergyMax_J = slap_.max_J;
     f.hotRunningClearance_m = liner_->getHotRunningClearance_m();
-    const std::optional<long> solves = liner_->getFilmSolveCount();
-    const std::optional<long> fallbacks = liner_->getFilmFallbackCount();
-    if (solves)
-      f.filmSolves = *solves - solvesAtStart_.value_or(0);
-    if (fallbacks)
-      f.filmFallbacks = *fallbacks - fallbacksAtStart_.value_or(0);
-    if (const std::optional<long> failures = liner_->getFilmDerivativeFailureCount())
-      f.filmDerivativeFailures = *failures - derivativeFailuresAtStart_.value_or(0);
+    if (const std::optional<plugin::SolverCounters> c = liner_->getSolverCounters()) {
+      const plugin::SolverCounters start = countersAtStart_.value_or(plugin::SolverCounters());
+      f.filmSolves = c->filmSolves - start.filmSolves;
+      f.filmFallbacks = c->filmFallbacks - start.filmFallbacks;
+      f.filmDerivativeFailures = c->derivativeFailures - start.derivativeFailures;
+    }
     s.liner = f;
   }
 }

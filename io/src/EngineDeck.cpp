@@ -56,8 +56,8 @@ void readDrive(DeckSection& root, mbd::CrankDrive& drive) {
 // An unknown model is one problem; its section's keys are then not reported as unknown.
 // When --set liner.model chose another model than the file names, the file's liner keys
 // are that other model's data: not reported as unknown (keys given by --set still are).
-void readLiner(YamlDeck& d, const LinerRegistry& registry, EngineDeck& deck,
-               LinerDeckContext& context) {
+LinerModelNeeds readLiner(YamlDeck& d, const LinerRegistry& registry, EngineDeck& deck,
+                          LinerDeckContext& context) {
   DeckSection liner = d.getSection("liner");
   const std::string kModelKey = "liner.model";
   const bool given = d.has(kModelKey);
@@ -71,7 +71,7 @@ void readLiner(YamlDeck& d, const LinerRegistry& registry, EngineDeck& deck,
                                   " (the liner models registered in this program)");
     }
     d.ignoreSection("liner");
-    return;
+    return {};
   }
   deck.linerModel = requested.value_or(key(kModelKey).defaultText);
   d.recordInput({kModelKey, kModelKey, deck.linerModel});
@@ -80,8 +80,11 @@ void readLiner(YamlDeck& d, const LinerRegistry& registry, EngineDeck& deck,
     d.ignoreFileKeys("liner");
   context.engine = &deck.engine;
   context.engineIsValid = !d.hasProblems();
+  LinerModelNeeds needs;
   try {
-    deck.makeLinerElement = registry.getFactory(deck.linerModel)(liner, context);
+    LinerModel model = registry.getFactory(deck.linerModel)(liner, context);
+    deck.makeLinerElement = std::move(model.maker);
+    needs = std::move(model.needs);
     if (!deck.makeLinerElement)
       d.addProblem(kModelKey,
                    "the liner model '" + deck.linerModel + "' returned no element maker");
@@ -93,9 +96,10 @@ void readLiner(YamlDeck& d, const LinerRegistry& registry, EngineDeck& deck,
     if (in.path.rfind("liner.", 0) == 0 && in.path != kModelKey)
       deck.linerInputs.push_back(in);
   }
-  if (context.tertiaryMotion)
-    deck.engine.tertiaryMotion = *context.tertiaryMotion;
-  deck.fieldDumpAngles_deg = context.fieldDumpAngles_deg;
+  if (needs.tertiaryMotion)
+    deck.engine.tertiaryMotion = *needs.tertiaryMotion;
+  deck.fieldDumpAngles_deg = needs.fieldDumpAngles_deg;
+  return needs;
 }
 
 // The cylinder-pressure table, with its problems under the key that names it, and the
@@ -145,7 +149,7 @@ mbd::CylinderPressureCurve readCylinderPressure(const YamlDeck& d, const std::st
 using Settings = plugin::SimulationSettings;
 
 // The simulation section, and its checks against the liner model's needs.
-void readSimulation(YamlDeck& d, const LinerDeckContext& liner, const std::string& linerModel,
+void readSimulation(YamlDeck& d, const LinerModelNeeds& liner, const std::string& linerModel,
                     EngineDeck& deck) {
   Settings& s = deck.simulation;
   DeckSection root = d.getSection("");
@@ -302,8 +306,8 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
   LinerDeckContext liner;
   liner.cylinderPressure = std::make_shared<std::shared_ptr<const mbd::CylinderPressureCurve>>();
   liner.crankcasePressure_Pa = deck.crankcasePressure_Pa;
-  readLiner(d, registry, deck, liner);
-  readSimulation(d, liner, deck.linerModel, deck);
+  const LinerModelNeeds needs = readLiner(d, registry, deck, liner);
+  readSimulation(d, needs, deck.linerModel, deck);
   deck.inputs = d.getResolvedInputs();
 
   // Every key is read; report unknown keys and all problems together.

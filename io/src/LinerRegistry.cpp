@@ -24,9 +24,11 @@ bool isModelName(const std::string& name) {
 LinerRegistry::LinerRegistry() {
   add("ideal_guide",
       "rigid, frictionless, zero-clearance guide (three Simbody constraints); no keys",
-      [](DeckSection&, LinerDeckContext& context) -> LinerElementMaker {
-        context.usesConstraints = true;
-        return [] { return std::make_unique<plugin::IdealLinerGuide>(); };
+      [](DeckSection&, const LinerDeckContext&) -> LinerModel {
+        LinerModel model;
+        model.maker = [] { return std::make_unique<plugin::IdealLinerGuide>(); };
+        model.needs.usesConstraints = true;
+        return model;
       });
   add("lubricated_skirt",
       "oil film (average Reynolds, cavitation) and asperity contact on both skirt sides; "
@@ -58,7 +60,9 @@ void LinerRegistry::add(const std::string& name, const std::string& description,
   if (!factory)
     throw std::invalid_argument("LinerRegistry::add: '" + name + "': empty factory");
   add(name, description,
-      [f = std::move(factory)](DeckSection& liner, LinerDeckContext&) { return f(liner); });
+      [f = std::move(factory)](DeckSection& liner, const LinerDeckContext&) {
+        return LinerModel{f(liner), {}};
+      });
 }
 
 void LinerRegistry::add(const std::string& name, const std::string&, std::nullptr_t) {

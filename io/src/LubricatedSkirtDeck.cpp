@@ -511,7 +511,8 @@ void readElasticSkirt(DeckSection& liner, plugin::LubricatedSkirtParameters& p,
   el.coupling.modalJacobianReuse =
       static_cast<int>(e.getInteger(skirtKey("liner.elastic_skirt.modal_jacobian_reuse")));
   el.squeezeRate = e.getBool(skirtKey("liner.elastic_skirt.squeeze_rate"));
-  el.exactStaticDerivative = e.getBool(skirtKey("liner.elastic_skirt.exact_static_derivative"));
+  el.coupling.exactStaticDerivative =
+      e.getBool(skirtKey("liner.elastic_skirt.exact_static_derivative"));
   gasDeformation = e.getBool(skirtKey("liner.elastic_skirt.gas_deformation"));
   const auto matrix = e.getOptionalFilePath("compliance_file");
   const auto nodes = e.getOptionalFilePath("nodes_file");
@@ -537,7 +538,7 @@ void readElasticSkirt(DeckSection& liner, plugin::LubricatedSkirtParameters& p,
                                   "liner_nodes_file", "rigid liner");
 }
 
-void readFieldDumps(DeckSection& liner, LinerDeckContext& context) {
+void readFieldDumps(DeckSection& liner, LinerModelNeeds& needs) {
   DeckSection dumps = liner.getSection("field_dumps");
   const std::string key = "crank_angles_deg";
   if (!dumps.has(key))
@@ -554,8 +555,8 @@ void readFieldDumps(DeckSection& liner, LinerDeckContext& context) {
       return;
     }
   }
-  context.fieldDumpAngles_deg = angles;
-  context.fieldDumpKey = dumps.getKeyPath(key);
+  needs.fieldDumpAngles_deg = angles;
+  needs.fieldDumpKey = dumps.getKeyPath(key);
 }
 
 // ---- checks against the engine ---------------------------------------------------------
@@ -629,8 +630,8 @@ void checkAgainstEngine(DeckSection& liner, const mbd::EngineDescription& e,
     for (const skirt::SkirtSide side : {skirt::SkirtSide::Thrust, skirt::SkirtSide::AntiThrust}) {
       g.side = side;
       try {
-        const skirt::ElasticCoupling check(skirt::SkirtSideGrid(g), p.elasticSkirt.compliance,
-                                           p.elasticSkirt.coupling);
+        (void)skirt::makeElasticCoupling(skirt::SkirtSideGrid(g), p.elasticSkirt.compliance,
+                                         p.elasticSkirt.coupling);
       } catch (const std::exception& ex) {
         liner.getSection("elastic_skirt")
             .addProblem("nodes_file",
@@ -642,10 +643,11 @@ void checkAgainstEngine(DeckSection& liner, const mbd::EngineDescription& e,
       if (!p.elasticSkirt.liner)
         continue;
       try {
-        skirt::ElasticCoupling check(skirt::SkirtSideGrid(g), p.elasticSkirt.compliance,
-                                     p.elasticSkirt.coupling, &*p.elasticSkirt.liner);
-        check.setLinerPosition(kinematics.pinHeightAtBdc_m());
-        check.setLinerPosition(kinematics.pinHeightAtTdc_m());
+        const auto check =
+            skirt::makeElasticCoupling(skirt::SkirtSideGrid(g), p.elasticSkirt.compliance,
+                                       p.elasticSkirt.coupling, &*p.elasticSkirt.liner);
+        check->setLinerPosition(kinematics.pinHeightAtBdc_m());
+        check->setLinerPosition(kinematics.pinHeightAtTdc_m());
       } catch (const std::exception& ex) {
         liner.getSection("elastic_skirt")
             .addProblem("liner_nodes_file",
@@ -659,7 +661,7 @@ void checkAgainstEngine(DeckSection& liner, const mbd::EngineDescription& e,
 
 }  // namespace
 
-LinerElementMaker readLubricatedSkirt(DeckSection& liner, LinerDeckContext& context) {
+LinerModel readLubricatedSkirt(DeckSection& liner, const LinerDeckContext& context) {
   plugin::LubricatedSkirtParameters p;
   skirt::GapAssemblyParameters& gap = p.gap;
   // 1 .. 500 um: a clearance given in mm (0.04) or nm (40000) is rejected.
@@ -690,10 +692,11 @@ LinerElementMaker readLubricatedSkirt(DeckSection& liner, LinerDeckContext& cont
   bool gasDeformation = false;
   readElasticSkirt(liner, p, gasDeformation);
   p.elasticSkirt.crankcasePressure_Pa = context.crankcasePressure_Pa;
-  readFieldDumps(liner, context);
+  LinerModel model;
+  readFieldDumps(liner, model.needs);
 
-  context.tertiaryMotion = p.tertiaryMotion;
-  context.stiffReason =
+  model.needs.tertiaryMotion = p.tertiaryMotion;
+  model.needs.stiffReason =
       "the squeeze film's damping of the piston's lateral and tilt motion grows like 1/h^3, so "
       "explicit steps collapse to nanoseconds where the film is thin";
   if (context.engineIsValid && context.engine != nullptr && !liner.hasProblems())
@@ -703,11 +706,12 @@ LinerElementMaker readLubricatedSkirt(DeckSection& liner, LinerDeckContext& cont
   const auto pressure = gasDeformation && p.elasticSkirt.compliance.hasGasDisplacement()
                             ? context.cylinderPressure
                             : nullptr;
-  return [p, pressure]() mutable {
+  model.maker = [p, pressure]() mutable {
     if (pressure)
       p.elasticSkirt.cylinderPressure = *pressure;
     return std::make_unique<plugin::LubricatedSkirtElement>(p);
   };
+  return model;
 }
 
 }  // namespace pistondyn::io

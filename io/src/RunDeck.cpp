@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "SkirtFieldDumps.h"
+#include "FieldDumps.h"
 #include "pistondyn/common/Validation.h"
 #include "pistondyn/io/ResultWriters.h"
 #include "pistondyn/io/Version.h"
@@ -172,16 +172,17 @@ RunOutcome runModel(const EngineDeck& deck, plugin::PistonAssemblyModel& model,
     csv.emplace(files->stage("cycle.csv"), makeCycleCsvComments(deck));
     sinks.push_back(&*csv);
   }
-  // The lubricated skirt's field dumps, staged with cycle.csv (all-or-nothing).
-  std::optional<detail::SkirtFieldDumpSink> dumps;
+  // The liner's field dumps, staged with cycle.csv (all-or-nothing).
+  std::optional<detail::FieldDumpSink> dumps;
   if (files && !deck.fieldDumpAngles_deg.empty()) {
-    const auto* skirt = dynamic_cast<const plugin::LubricatedSkirtElement*>(
-        static_cast<const plugin::PistonAssemblyModel&>(model).findLinerElement());
-    if (skirt == nullptr) {
+    const plugin::LinerElement* liner =
+        static_cast<const plugin::PistonAssemblyModel&>(model).findLinerElement();
+    const plugin::NodalFieldSource* fields = liner ? liner->getNodalFields() : nullptr;
+    if (fields == nullptr) {
       throw std::runtime_error(
-          "liner.field_dumps: the model's liner is not a lubricated skirt; nothing to dump");
+          "liner.field_dumps: the model's liner element has no nodal fields; nothing to dump");
     }
-    dumps.emplace(*skirt, deck.fieldDumpAngles_deg, deck.simulation.stepsPerCycle(),
+    dumps.emplace(*fields, deck.fieldDumpAngles_deg, deck.simulation.stepsPerCycle(),
                   makeCycleCsvComments(deck), *files);
     sinks.push_back(&*dumps);
   }

@@ -103,10 +103,10 @@ void injectProblem(const FilmProblem& pr, CoarseLevel& l, int nx) {
   l.problem.gap_m = inject(pr.gap_m, l, nx);
   l.problem.gapRate_mps = inject(pr.gapRate_mps, l, nx);
   l.problem.viscosityPerNode_Pas = inject(pr.viscosityPerNode_Pas, l, nx);
-  l.problem.previousFillFraction = inject(pr.previousFillFraction, l, nx);
-  l.problem.previousFillFraction2 = inject(pr.previousFillFraction2, l, nx);
-  l.problem.previousExpectedGap_m = inject(pr.previousExpectedGap_m, l, nx);
-  l.problem.previousExpectedGap2_m = inject(pr.previousExpectedGap2_m, l, nx);
+  l.problem.history.last.fillFraction = inject(pr.history.last.fillFraction, l, nx);
+  l.problem.history.earlier.fillFraction = inject(pr.history.earlier.fillFraction, l, nx);
+  l.problem.history.last.expectedGap_m = inject(pr.history.last.expectedGap_m, l, nx);
+  l.problem.history.earlier.expectedGap_m = inject(pr.history.earlier.expectedGap_m, l, nx);
   l.problem.squeezeBasis.resize(0, 0);  // the start needs no derivatives
   l.problem.gapBasis.resize(0, 0);
   l.problem.gapRateBasis.resize(0, 0);

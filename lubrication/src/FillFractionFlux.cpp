@@ -28,11 +28,11 @@ void FilmSystem::assembleFillFractionCorrection(const FilmGrid& grid, const Film
   fillCorrE.setZero();
   fillCorrN.setZero();
   fillCorrOut.setZero();
-  const bool use = jfo && std::isfinite(pr.timeStep_s) && pr.previousFillFraction.size() == n &&
+  const bool use = jfo && std::isfinite(pr.timeStep_s) && pr.history.last.fillFraction.size() == n &&
                    pr.fillFractionFlux == FillFractionFlux::LimitedSecondOrder;
   if (!use)
     return;
-  const Eigen::ArrayXd& th = pr.previousFillFraction;
+  const Eigen::ArrayXd& th = pr.history.last.fillFraction;
 
   // Raw correction of one face with signed full-film Couette flux F from node `lo` to node
   // `hi` (+x or +y): with u the upwind node, d the downwind one and uu the node upwind of u,

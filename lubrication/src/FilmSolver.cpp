@@ -40,6 +40,41 @@ void checkFinite(const Eigen::ArrayXd& a, const char* name, const char* unit) {
       common::throwNotFinite(a[k], kWhere, common::message(name, "[", k, "]"), unit);
 }
 
+// The film history (FilmHistory.h): sizes, fill fractions in [0, 1], positive expected gaps,
+// and an earlier point only with a last one and its step. Names are literals: a passing check
+// allocates nothing.
+void checkHistoryPoint(const FilmHistoryPoint& point, Eigen::Index n, const char* fillName,
+                       const char* gapName) {
+  checkSize(point.fillFraction.size(), n, fillName, true);
+  for (Eigen::Index k = 0; k < point.fillFraction.size(); ++k) {
+    const double t = point.fillFraction[k];
+    if (!(t >= 0.0 && t <= 1.0))
+      fail(fillName, "[", k, "] = ", t, " must lie in [0, 1]");
+  }
+  checkSize(point.expectedGap_m.size(), n, gapName, true);
+  if (point.expectedGap_m.size() > 0 && point.fillFraction.size() != n)
+    fail(gapName, " needs ", fillName);
+  for (Eigen::Index k = 0; k < point.expectedGap_m.size(); ++k)
+    if (!(std::isfinite(point.expectedGap_m[k]) && point.expectedGap_m[k] > 0.0))
+      fail(gapName, "[", k, "] = ", point.expectedGap_m[k], " m must be positive and finite");
+}
+
+void checkHistory(const FilmHistory& h, Eigen::Index n) {
+  checkHistoryPoint(h.last, n, "problem.history.last.fillFraction",
+                    "problem.history.last.expectedGap_m");
+  checkHistoryPoint(h.earlier, n, "problem.history.earlier.fillFraction",
+                    "problem.history.earlier.expectedGap_m");
+  if (h.earlier.empty())
+    return;
+  if (h.last.fillFraction.size() != n)
+    fail("problem.history.earlier.fillFraction needs problem.history.last.fillFraction");
+  if (!(h.earlierStep_s > 0.0) || !std::isfinite(h.earlierStep_s))
+    fail("problem.history.earlierStep_s = ", h.earlierStep_s,
+         " s must be > 0 and finite with problem.history.earlier.fillFraction");
+  if (h.earlier.expectedGap_m.size() > 0 && h.last.expectedGap_m.size() != n)
+    fail("problem.history.earlier.expectedGap_m needs problem.history.last.expectedGap_m");
+}
+
 // minPressure_Pa: the lowest admissible edge pressure (-inf where any finite one will do).
 void checkEdge(const FilmEdge& e, const char* name, Eigen::Index along, double minPressure_Pa) {
   if (!std::isfinite(e.pressure_Pa))
@@ -116,39 +151,7 @@ void validate(const FilmGrid& grid, const FilmProblem& pr, const FilmState* warm
   checkEdge(pr.boundary.xMax, "xMax", grid.ny(), minEdgeX);
   if (std::isnan(pr.timeStep_s) || !(pr.timeStep_s > 0.0))
     fail("problem.timeStep_s = ", pr.timeStep_s, " s must be > 0 (+inf: steady)");
-  checkSize(pr.previousFillFraction.size(), n, "problem.previousFillFraction", true);
-  for (Eigen::Index k = 0; k < pr.previousFillFraction.size(); ++k) {
-    const double t = pr.previousFillFraction[k];
-    if (!(t >= 0.0 && t <= 1.0))
-      fail("problem.previousFillFraction[", k, "] = ", t, " must lie in [0, 1]");
-  }
-  checkSize(pr.previousFillFraction2.size(), n, "problem.previousFillFraction2", true);
-  if (pr.previousFillFraction2.size() > 0) {
-    if (pr.previousFillFraction.size() != n)
-      fail("problem.previousFillFraction2 needs problem.previousFillFraction");
-    if (!(pr.previousTimeStep_s > 0.0) || !std::isfinite(pr.previousTimeStep_s))
-      fail("problem.previousTimeStep_s = ", pr.previousTimeStep_s,
-           " s must be > 0 and finite with problem.previousFillFraction2");
-    for (Eigen::Index k = 0; k < pr.previousFillFraction2.size(); ++k) {
-      const double t = pr.previousFillFraction2[k];
-      if (!(t >= 0.0 && t <= 1.0))
-        fail("problem.previousFillFraction2[", k, "] = ", t, " must lie in [0, 1]");
-    }
-  }
-  checkSize(pr.previousExpectedGap_m.size(), n, "problem.previousExpectedGap_m", true);
-  checkSize(pr.previousExpectedGap2_m.size(), n, "problem.previousExpectedGap2_m", true);
-  if (pr.previousExpectedGap_m.size() > 0 && pr.previousFillFraction.size() != n)
-    fail("problem.previousExpectedGap_m needs problem.previousFillFraction");
-  if (pr.previousExpectedGap2_m.size() > 0 && (pr.previousFillFraction2.size() != n ||
-                                                pr.previousExpectedGap_m.size() != n))
-    fail("problem.previousExpectedGap2_m needs problem.previousFillFraction2 and "
-         "problem.previousExpectedGap_m");
-  for (const Eigen::ArrayXd* a : {&pr.previousExpectedGap_m, &pr.previousExpectedGap2_m})
-    for (Eigen::Index k = 0; k < a->size(); ++k)
-      if (!(std::isfinite((*a)[k]) && (*a)[k] > 0.0))
-        fail(a == &pr.previousExpectedGap_m ? "problem.previousExpectedGap_m["
-                                            : "problem.previousExpectedGap2_m[",
-             k, "] = ", (*a)[k], " m must be positive and finite");
+  checkHistory(pr.history, n);
   if (pr.squeezeBasis.cols() > 0) {
     if (pr.squeezeBasis.rows() != n)
       fail("problem.squeezeBasis has ", pr.squeezeBasis.rows(), " rows, expected ", n,
@@ -279,7 +282,7 @@ void FilmSolver::Impl::initialiseIterate(const FilmProblem& pr, const FilmState*
   const bool warmP = warm && warm->pressure_Pa.size() == s.n;
   const bool warmT = warm && warm->fillFraction.size() == s.n;
   const bool warmC = warm && static_cast<int>(warm->cavitated.size()) == s.n;
-  const bool prevT = pr.previousFillFraction.size() == s.n;
+  const bool prevT = pr.history.last.fillFraction.size() == s.n;
   for (int k = 0; k < s.n; ++k) {
     if (s.status[k] == detail::kFixed) {
       s.p[k] = s.fixedPressure[k];
@@ -296,7 +299,7 @@ void FilmSolver::Impl::initialiseIterate(const FilmProblem& pr, const FilmState*
         cav = warmC ? warm->cavitated[k] != 0 : s.p[k] <= s.pCav;
         break;
       case CavitationModel::MassConserving: {
-        const double t = warmT ? warm->fillFraction[k] : (prevT ? pr.previousFillFraction[k] : 1.0);
+        const double t = warmT ? warm->fillFraction[k] : (prevT ? pr.history.last.fillFraction[k] : 1.0);
         cav = warmC ? warm->cavitated[k] != 0 : t < 1.0;
         if (cav)
           s.theta[k] = std::clamp(t, 0.0, 1.0);

@@ -277,41 +277,41 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
   }
 
   const bool transient = jfo && std::isfinite(pr.timeStep_s);
-  const bool hasPrev = pr.previousFillFraction.size() > 0;
+  const bool hasPrev = pr.history.last.fillFraction.size() > 0;
   // Backward Euler: capacity = A hT / h, reference theta_n. Variable-step BDF2
-  // (FilmProblem::previousFillFraction2): capacity = c0 A hT / h and the reference
+  // (FilmProblem::history.earlier.fillFraction): capacity = c0 A hT / h and the reference
   // [(1 + w) theta_n - w^2/(1 + w) theta_{n-1}] / c0, so that capacity (theta - reference) is
   // A hT times the BDF2 derivative. The reference may leave [0, 1]; it only enters here.
-  const bool bdf2 = transient && hasPrev && pr.previousFillFraction2.size() == n;
-  const double w = bdf2 ? pr.timeStep_s / pr.previousTimeStep_s : 0.0;
+  const bool bdf2 = transient && hasPrev && pr.history.earlier.fillFraction.size() == n;
+  const double w = bdf2 ? pr.timeStep_s / pr.history.earlierStep_s : 0.0;
   const double c0 = bdf2 ? (1.0 + 2.0 * w) / (1.0 + w) : 1.0;
   const double cn = bdf2 ? (1.0 + w) / c0 : 1.0, cn1 = bdf2 ? -w * w / (1.0 + w) / c0 : 0.0;
-  // With the previous expected gaps (FilmProblem::previousExpectedGap_m) the capacity and the
+  // With the previous expected gaps (FilmProblem::history.last.expectedGap_m) the capacity and the
   // reference take hT_n (and hT_{n-1}) instead of this step's hT, which keeps the oil content
   // of a cavitated node whose gap moves linearly over the step (FilmProblem.h).
-  const bool prevGap = transient && hasPrev && pr.previousExpectedGap_m.size() == n;
-  const bool prevGap2 = bdf2 && prevGap && pr.previousExpectedGap2_m.size() == n;
+  const bool prevGap = transient && hasPrev && pr.history.last.expectedGap_m.size() == n;
+  const bool prevGap2 = bdf2 && prevGap && pr.history.earlier.expectedGap_m.size() == n;
   const double wn = 1.0 + w, wn1 = w * w / (1.0 + w);
   for (int k = 0; k < n; ++k) {
     const double rate = hasRate ? pr.gapRate_mps[k] : 0.0;
     squeeze[k] = area[k] * dhTdh[k] * rate;
     capacity[k] = transient ? c0 * area[k] * hT[k] / pr.timeStep_s : 0.0;
-    thetaPrev[k] = (jfo && hasPrev) ? pr.previousFillFraction[k] : 1.0;
+    thetaPrev[k] = (jfo && hasPrev) ? pr.history.last.fillFraction[k] : 1.0;
     if (bdf2)
-      thetaPrev[k] = cn * pr.previousFillFraction[k] + cn1 * pr.previousFillFraction2[k];
+      thetaPrev[k] = cn * pr.history.last.fillFraction[k] + cn1 * pr.history.earlier.fillFraction[k];
     if (prevGap) {
-      const double hn = pr.previousExpectedGap_m[k];
+      const double hn = pr.history.last.expectedGap_m[k];
       const double scale = area[k] / pr.timeStep_s;
-      const double hn1 = prevGap2 ? pr.previousExpectedGap2_m[k] : hn;
+      const double hn1 = prevGap2 ? pr.history.earlier.expectedGap_m[k] : hn;
       const double cap = bdf2 ? wn * hn - wn1 * hn1 : 0.0;
       if (bdf2 && cap >= 0.5 * c0 * hn) {
         capacity[k] = scale * cap;
-        thetaPrev[k] = (wn * hn * pr.previousFillFraction[k] -
-                        wn1 * hn1 * pr.previousFillFraction2[k]) / cap;
+        thetaPrev[k] = (wn * hn * pr.history.last.fillFraction[k] -
+                        wn1 * hn1 * pr.history.earlier.fillFraction[k]) / cap;
       } else {
         // Backward Euler (also a BDF2 node whose gap shrank too fast for a positive capacity).
         capacity[k] = scale * hn;
-        thetaPrev[k] = pr.previousFillFraction[k];
+        thetaPrev[k] = pr.history.last.fillFraction[k];
       }
     }
     thetaCoef[k] = aOut[k] + squeeze[k] + capacity[k];

@@ -19,7 +19,7 @@ long allocationsOfWarmCalls(FilmSolverOptions options, CavitationModel model,
   FilmProblem pr = sp.problem(g, model);
   pr.flowFactors = &rough;
   pr.timeStep_s = 1e-4;
-  pr.previousFillFraction.setOnes(g.nodeCount());
+  pr.history.last.fillFraction.setOnes(g.nodeCount());
   pr.squeezeBasis = sp.squeezeBasis(g);
   if (gapColumns) {  // the elastic skirt's columns (FilmProblem::gapBasis, gapRateBasis)
     pr.gapBasis = Eigen::MatrixXd::Ones(g.nodeCount(), 3);

@@ -125,8 +125,8 @@ TEST(FilmBadInput, InconsistentArraySizes) {
   {
     BadInputCase s;
     s.problem.cavitation = CavitationModel::MassConserving;
-    s.problem.previousFillFraction.setOnes(5);
-    expectInvalidArgument([&] { s.solve(); }, {"problem.previousFillFraction"});
+    s.problem.history.last.fillFraction.setOnes(5);
+    expectInvalidArgument([&] { s.solve(); }, {"problem.history.last.fillFraction"});
   }
   {
     BadInputCase s;
@@ -165,8 +165,8 @@ TEST(FilmBadInput, OtherInvalidArguments) {
   {
     BadInputCase s;
     s.problem.cavitation = CavitationModel::MassConserving;
-    s.problem.previousFillFraction.setConstant(s.grid.nodeCount(), 1.2);
-    expectInvalidArgument([&] { s.solve(); }, {"previousFillFraction[0]", "[0, 1]"});
+    s.problem.history.last.fillFraction.setConstant(s.grid.nodeCount(), 1.2);
+    expectInvalidArgument([&] { s.solve(); }, {"history.last.fillFraction[0]", "[0, 1]"});
   }
   {
     BadInputCase s;

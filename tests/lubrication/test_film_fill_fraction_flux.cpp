@@ -57,20 +57,20 @@ struct CavitatedTransport {
     auto along = [&](int j) { return reverse ? length_m - g.y_m()[j] : g.y_m()[j]; };
     pr.timeStep_s = dt;
     pr.fillFractionFlux = flux;
-    pr.previousFillFraction.resize(g.nodeCount());
+    pr.history.last.fillFraction.resize(g.nodeCount());
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < 3; ++i)
-        pr.previousFillFraction[g.nodeIndex(i, j)] = initial(along(j));
+        pr.history.last.fillFraction[g.nodeIndex(i, j)] = initial(along(j));
     if (start)
-      pr.previousFillFraction = *start;
+      pr.history.last.fillFraction = *start;
     FilmSolver solver(test::tightOptions(solverType, 1e-12));
     FilmResult r;
     Outcome o;
     Eigen::ArrayXd older;
     for (int n = 0; n < steps; ++n) {
       if (bdf2 && n > 0) {
-        pr.previousFillFraction2 = older;
-        pr.previousTimeStep_s = dt;
+        pr.history.earlier.fillFraction = older;
+        pr.history.earlierStep_s = dt;
       }
       solver.solve(g, pr, n ? &r.state : nullptr, r);
       EXPECT_TRUE(r.converged) << "step " << n;
@@ -80,8 +80,8 @@ struct CavitatedTransport {
           std::max(o.worstBalance, std::abs(test::oilBalanceDefect_m3ps(r)) / throughput);
       o.minTheta = std::min(o.minTheta, r.fillFraction().minCoeff());
       o.maxTheta = std::max(o.maxTheta, r.fillFraction().maxCoeff());
-      older = pr.previousFillFraction;
-      pr.previousFillFraction = r.fillFraction();
+      older = pr.history.last.fillFraction;
+      pr.history.last.fillFraction = r.fillFraction();
     }
     for (int j = 0; j < ny; ++j)
       o.l1Error += std::abs(r.fillFraction()[g.nodeIndex(1, j)] - exact(along(j))) / ny;
@@ -153,25 +153,25 @@ TEST(FillFractionFlux, TransportAgainstYAndAlongAPeriodicGradedXConverges) {
     pr.cavitation = CavitationModel::MassConserving;
     pr.timeStep_s = travel / (0.5 * speed) / steps;
     pr.fillFractionFlux = flux;
-    pr.previousFillFraction.resize(g.nodeCount());
+    pr.history.last.fillFraction.resize(g.nodeCount());
     for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < nx; ++i) pr.previousFillFraction[g.nodeIndex(i, j)] = bump(x[i]);
+      for (int i = 0; i < nx; ++i) pr.history.last.fillFraction[g.nodeIndex(i, j)] = bump(x[i]);
     FilmSolver solver(test::tightOptions(FilmSolverType::FastActiveSet, 1e-12));
     FilmResult r;
     Eigen::ArrayXd older;
     double worstBalance = 0.0;
     for (int n = 0; n < steps; ++n) {
       if (n > 0) {
-        pr.previousFillFraction2 = older;
-        pr.previousTimeStep_s = pr.timeStep_s;
+        pr.history.earlier.fillFraction = older;
+        pr.history.earlierStep_s = pr.timeStep_s;
       }
       solver.solve(g, pr, n ? &r.state : nullptr, r);
       EXPECT_TRUE(r.converged);
       const double throughput =
           std::max({r.boundaryInflow_m3ps, r.boundaryOutflow_m3ps, 1e-30});
       worstBalance = std::max(worstBalance, std::abs(test::oilBalanceDefect_m3ps(r)) / throughput);
-      older = pr.previousFillFraction;
-      pr.previousFillFraction = r.fillFraction();
+      older = pr.history.last.fillFraction;
+      pr.history.last.fillFraction = r.fillFraction();
     }
     double l1 = 0.0;
     for (int i = 0; i < nx; ++i)
@@ -251,7 +251,7 @@ TEST(FillFractionFlux, SteadyAndReynoldsSolvesIgnoreTheOption) {
       test::SkirtPatch::setPartlyFilledHistory(g, 0.5, pr);
       for (int j = 0; j < g.ny() / 2; ++j)  // a ramp: non-zero minmod slopes
         for (int i = 0; i < g.nx(); ++i)
-          pr.previousFillFraction[g.nodeIndex(i, j)] = 0.3 + 0.05 * j;
+          pr.history.last.fillFraction[g.nodeIndex(i, j)] = 0.3 + 0.05 * j;
     }
     // Separate solver objects: a solver keeps its lagged factorisation between calls.
     FilmSolver solverA(test::tightOptions(FilmSolverType::FastActiveSet, 1e-10));

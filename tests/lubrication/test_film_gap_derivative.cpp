@@ -136,7 +136,7 @@ void checkAgainstCompleteSolves(CavitationModel model, const std::string& tag,
     const int half = g.ny() / 2;
     for (int j = 0; j < g.ny(); ++j)
       for (int i = 0; i < g.nx(); ++i)
-        pr.previousFillFraction[g.nodeIndex(i, j)] = j >= half ? 1.0 : 0.4 + 0.6 * j / half;
+        pr.history.last.fillFraction[g.nodeIndex(i, j)] = j >= half ? 1.0 : 0.4 + 0.6 * j / half;
     detail::FilmSystem assembled;
     assembled.assemble(g, pr);
     ASSERT_GT(assembled.fillCorrOut.abs().maxCoeff(), 0.0) << tag;
@@ -187,7 +187,7 @@ TEST(FilmGapDerivative, WithTheRateMatchesCompleteSolves) {
   FilmProblem pr = sp.problem(g, CavitationModel::MassConserving);
   pr.flowFactors = &rough;
   pr.timeStep_s = 1e-4;
-  pr.previousFillFraction.setOnes(g.nodeCount());
+  pr.history.last.fillFraction.setOnes(g.nodeCount());
   const double dt_s = 1e-4;
   pr.gapBasis = gapShapes(sp, g);
   pr.gapRateBasis = pr.gapBasis / dt_s;

@@ -269,9 +269,9 @@ TEST(FilmHardInputs, FillFractionCarriedAcrossSlidingReversal) {
     pr.boundary.yMin.supplyFilm_m = pr.boundary.yMax.supplyFilm_m = 2e-6;
     pr.timeStep_s = dt;
     const FilmState warmR = rr.state, warmF = rf.state;
-    pr.previousFillFraction = thR;
+    pr.history.last.fillFraction = thR;
     ref.solve(g, pr, step ? &warmR : nullptr, rr);
-    pr.previousFillFraction = thF;
+    pr.history.last.fillFraction = thF;
     fast.solve(g, pr, step ? &warmF : nullptr, rf);
     SCOPED_TRACE("step " + std::to_string(step));
     expectContract(rr, pr, ro, "reference");

@@ -38,7 +38,7 @@ Balance oilBalance(const FilmGrid& g, const FilmProblem& pr, const FilmResult& r
         continue;
       const int k = g.nodeIndex(i, j);
       const double rate = pr.gapRate_mps.size() ? pr.gapRate_mps[k] : 0.0;
-      const double prev = pr.previousFillFraction.size() ? pr.previousFillFraction[k] : 1.0;
+      const double prev = pr.history.last.fillFraction.size() ? pr.history.last.fillFraction[k] : 1.0;
       b.storage +=
           g.areaWeights_m2()[k] *
           (th[k] * rate +
@@ -128,10 +128,10 @@ TEST(FilmMassConserving, OilBalanceClosesSteadyAndTransient) {
     // a state with a different fill fraction.
     FilmProblem transient = gb.problem(g, -0.02);
     transient.timeStep_s = 5e-5;
-    transient.previousFillFraction = rs.fillFraction();
+    transient.history.last.fillFraction = rs.fillFraction();
     for (int k = 0; k < g.nodeCount(); ++k)
-      transient.previousFillFraction[k] =
-          std::min(1.0, 0.8 * transient.previousFillFraction[k] + 0.1);
+      transient.history.last.fillFraction[k] =
+          std::min(1.0, 0.8 * transient.history.last.fillFraction[k] + 0.1);
     const FilmResult rt = solver.solve(g, transient, &rs.state);
     ASSERT_TRUE(rt.converged);
     const Balance bt = oilBalance(g, transient, rt);
@@ -152,7 +152,7 @@ TEST(FilmMassConserving, StoredOilChangeEqualsAccumulatedNetInflow) {
   const FilmGrid g = gb.grid();
   FilmProblem pr = gb.problem(g, 0.0);
   pr.timeStep_s = 2e-4;
-  pr.previousFillFraction.setConstant(g.nodeCount(), 0.2);
+  pr.history.last.fillFraction.setConstant(g.nodeCount(), 0.2);
   auto storedOil = [&](const Eigen::ArrayXd& theta) {
     double v = 0.0;
     for (int j = 1; j < g.ny() - 1; ++j)
@@ -163,7 +163,7 @@ TEST(FilmMassConserving, StoredOilChangeEqualsAccumulatedNetInflow) {
     return v;
   };
   FilmSolver solver(test::tightOptions(FilmSolverType::FastActiveSet, 1e-12));
-  const double v0 = storedOil(pr.previousFillFraction);
+  const double v0 = storedOil(pr.history.last.fillFraction);
   double netInflow = 0.0, throughput = 0.0;
   FilmResult r;
   for (int step = 0; step < 40; ++step) {
@@ -173,7 +173,7 @@ TEST(FilmMassConserving, StoredOilChangeEqualsAccumulatedNetInflow) {
     const Balance b = oilBalance(g, pr, r);
     netInflow += pr.timeStep_s * (b.in - b.out);
     throughput += pr.timeStep_s * b.in;
-    pr.previousFillFraction = r.fillFraction();
+    pr.history.last.fillFraction = r.fillFraction();
   }
   const double gained = storedOil(r.fillFraction()) - v0;
   EXPECT_GT(gained, 0.1 * throughput);  // the film really filled up
@@ -185,8 +185,8 @@ TEST(FilmMassConserving, StoredOilChangeEqualsAccumulatedNetInflow) {
 // Time accuracy of the fill fraction's history. A cavitated film (p = p_cav everywhere, no
 // sliding) whose gap opens uniformly, h(t) = h0 (1 + a t), holds its oil: theta h = const, so
 // theta(t) = theta0 / (1 + a t) exactly. Stepping to T = 1 / a with N and 2N steps, backward
-// Euler (previousFillFraction alone) must converge at first order and the variable-step BDF2
-// of previousFillFraction2 / previousTimeStep_s at second order, also with unequal steps.
+// Euler (history.last.fillFraction alone) must converge at first order and the variable-step BDF2
+// of history.earlier.fillFraction / history.earlierStep_s at second order, also with unequal steps.
 TEST(FilmMassConserving, FillFractionHistoryIsFirstOrderByDefaultAndSecondOrderWithBdf2) {
   const FilmGrid g = FilmGrid::uniform(5, 0.01, 5, 0.01);
   const double h0 = 20e-6, a = 50.0, theta0 = 0.6, T = 1.0 / a;
@@ -196,7 +196,7 @@ TEST(FilmMassConserving, FillFractionHistoryIsFirstOrderByDefaultAndSecondOrderW
     pr.gapRate_mps.setConstant(g.nodeCount(), h0 * a);
     pr.viscosity_Pas = 0.01;
     pr.cavitation = CavitationModel::MassConserving;
-    pr.previousFillFraction.setConstant(g.nodeCount(), theta0);
+    pr.history.last.fillFraction.setConstant(g.nodeCount(), theta0);
     FilmSolver solver(test::tightOptions(FilmSolverType::FastActiveSet, 1e-12));
     FilmResult r;
     double t = 0.0, hPrev = 0.0;
@@ -208,15 +208,15 @@ TEST(FilmMassConserving, FillFractionHistoryIsFirstOrderByDefaultAndSecondOrderW
       pr.gap_m.setConstant(g.nodeCount(), h0 * (1.0 + a * t));
       pr.timeStep_s = h;
       if (bdf2 && n > 0) {
-        pr.previousFillFraction2 = older;
-        pr.previousTimeStep_s = hPrev;
+        pr.history.earlier.fillFraction = older;
+        pr.history.earlierStep_s = hPrev;
       } else {
-        pr.previousFillFraction2.resize(0);
+        pr.history.earlier.fillFraction.resize(0);
       }
       solver.solve(g, pr, n ? &r.state : nullptr, r);
       EXPECT_TRUE(r.converged);
-      older = pr.previousFillFraction;
-      pr.previousFillFraction = r.fillFraction();
+      older = pr.history.last.fillFraction;
+      pr.history.last.fillFraction = r.fillFraction();
       hPrev = h;
     }
     const int centre = g.nodeIndex(2, 2);
@@ -238,7 +238,7 @@ TEST(FilmMassConserving, FillFractionHistoryIsFirstOrderByDefaultAndSecondOrderW
 
 // The oil a cavitated node holds when its gap moves within a step. A cavitated film (no
 // sliding, every node at p_cav) holds its oil, theta hT = const, whatever its gap does. With
-// the expected gap of the previous steps (FilmProblem::previousExpectedGap_m) the storage term
+// the expected gap of the previous steps (FilmProblem::history.last.expectedGap_m) the storage term
 // keeps that content exactly over a step in which the gap moves linearly, for backward Euler
 // and BDF2, also in steps that close the gap by 40 %; for a gap that moves nonlinearly the
 // error converges at first / second order. Without them (this step's hT standing for the
@@ -255,7 +255,7 @@ TEST(FilmMassConserving, PreviousExpectedGapKeepsTheOilOfACavitatedFilmWhoseGapM
     pr.gap_m.setConstant(g.nodeCount(), h0);
     pr.viscosity_Pas = 0.01;
     pr.cavitation = CavitationModel::MassConserving;
-    pr.previousFillFraction.setConstant(g.nodeCount(), theta0);
+    pr.history.last.fillFraction.setConstant(g.nodeCount(), theta0);
     FilmSolver solver(test::tightOptions(FilmSolverType::FastActiveSet, 1e-13));
     FilmResult r;
     Eigen::ArrayXd olderTheta, olderGap, lastGap = pr.gap_m;
@@ -266,19 +266,19 @@ TEST(FilmMassConserving, PreviousExpectedGapKeepsTheOilOfACavitatedFilmWhoseGapM
       pr.gap_m.setConstant(g.nodeCount(), gapAt(t));
       pr.gapRate_mps.setConstant(g.nodeCount(), rateAt(t));
       pr.timeStep_s = h;
-      pr.previousExpectedGap_m = keepGap ? lastGap : Eigen::ArrayXd();
+      pr.history.last.expectedGap_m = keepGap ? lastGap : Eigen::ArrayXd();
       const bool second = bdf2 && n > 0;
-      pr.previousFillFraction2 = second ? olderTheta : Eigen::ArrayXd();
-      pr.previousExpectedGap2_m = second && keepGap ? olderGap : Eigen::ArrayXd();
-      pr.previousTimeStep_s = hPrev;
+      pr.history.earlier.fillFraction = second ? olderTheta : Eigen::ArrayXd();
+      pr.history.earlier.expectedGap_m = second && keepGap ? olderGap : Eigen::ArrayXd();
+      pr.history.earlierStep_s = hPrev;
       solver.solve(g, pr, n ? &r.state : nullptr, r);
       EXPECT_TRUE(r.converged);
       if (keepGap) {
         EXPECT_EQ(r.cavitatedNodes, 9);  // every interior node stays cavitated (theta < 1)
       }
-      olderTheta = pr.previousFillFraction;
+      olderTheta = pr.history.last.fillFraction;
       olderGap = lastGap;
-      pr.previousFillFraction = r.fillFraction();
+      pr.history.last.fillFraction = r.fillFraction();
       lastGap = r.expectedGap_m;
       hPrev = h;
     }
@@ -333,7 +333,7 @@ TEST(FilmMassConserving, FullFilmReproducesReynoldsCondition) {
   pr.cavitation = CavitationModel::MassConserving;
   const FilmResult jfo = solver.solve(g, pr);
   pr.timeStep_s = 1e-4;
-  pr.previousFillFraction.setOnes(g.nodeCount());
+  pr.history.last.fillFraction.setOnes(g.nodeCount());
   const FilmResult jfoTransient = solver.solve(g, pr);
   const double peak = rey.pressure_Pa().maxCoeff();
   for (const FilmResult* r : {&jfo, &jfoTransient}) {

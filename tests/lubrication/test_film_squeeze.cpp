@@ -153,7 +153,7 @@ void checkManyColumnsFromWarmStart(CavitationModel model, const std::string& tag
     pr.momentPoint_m = {0.0, sp.pinHeight_m};
     if (model == CavitationModel::MassConserving) {
       pr.timeStep_s = 1e-4;
-      pr.previousFillFraction.setOnes(g.nodeCount());
+      pr.history.last.fillFraction.setOnes(g.nodeCount());
     }
     const Eigen::MatrixXd pose = sp.squeezeBasis(g);
     pr.squeezeBasis.resize(g.nodeCount(), columns);

@@ -252,10 +252,10 @@ struct SkirtPatch {
   // The step of 0.1 ms and its history: fill `fill` in the lower half of the grid, 1 above.
   static void setPartlyFilledHistory(const FilmGrid& g, double fill, FilmProblem& pr) {
     pr.timeStep_s = 1e-4;
-    pr.previousFillFraction.setOnes(g.nodeCount());
+    pr.history.last.fillFraction.setOnes(g.nodeCount());
     for (int j = 0; j < g.ny() / 2; ++j)
       for (int i = 0; i < g.nx(); ++i)
-        pr.previousFillFraction[g.nodeIndex(i, j)] = fill;
+        pr.history.last.fillFraction[g.nodeIndex(i, j)] = fill;
   }
 };
 

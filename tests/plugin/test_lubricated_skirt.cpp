@@ -16,7 +16,11 @@
 #include "SliderCrankClosedForm.h"
 #include "pistondyn/plugin/CycleSimulation.h"
 #include "pistondyn/plugin/GasForceElement.h"
+#include "pistondyn/contact_forces/GreenwoodTrippLaw.h"
+#include "pistondyn/lubrication/PatirChengFlowFactors.h"
 #include "pistondyn/plugin/LubricatedSkirtElement.h"
+#include "pistondyn/plugin/PistonPose.h"
+#include "pistondyn/skirt/SkirtSideSolver.h"
 
 namespace {
 
@@ -228,9 +232,9 @@ TEST(LubricatedSkirt, FilmSolvesThatFailAreCountedWithTheirFallbacks) {
   ct.setPose(st, 20.0 * M_PI / 180.0, 38e-6);
   ct.setRates(st, m.engine.drive.speed_radps);
   EXPECT_THROW(m.model->getSystem().realize(st, SimTK::Stage::Dynamics), std::runtime_error);
-  ASSERT_TRUE(m.skirt().getFilmSolveCount().has_value());
-  EXPECT_EQ(*m.skirt().getFilmSolveCount(), 2);     // both sides are always solved
-  EXPECT_EQ(*m.skirt().getFilmFallbackCount(), 2);  // and both fell back
+  ASSERT_TRUE(m.skirt().getSolverCounters().has_value());
+  EXPECT_EQ(m.skirt().getSolverCounters()->filmSolves, 2);     // both sides are always solved
+  EXPECT_EQ(m.skirt().getSolverCounters()->filmFallbacks, 2);  // and both fell back
 }
 
 // setForceJacobianWanted(false) (the stepper's Jacobian reuse): the rigid skirt then solves its
@@ -252,7 +256,7 @@ TEST(LubricatedSkirt, EvaluationWithoutJacobianGivesTheSameForces) {
     m.model->calcElementForceJacobian(st, jacobian);
     const auto& r = m.skirt().getResults(st);
     return std::make_tuple(r.forceOnPiston_N, r.momentOnPiston_Nm, r.dQ_dPoseRate, r.dQ_dPose,
-                           *m.skirt().getFilmSolveCount());
+                           m.skirt().getSolverCounters()->filmSolves);
   };
   const auto [fWith, mWith, dWith, kWith, solvesWith] = evaluate(true);
   const auto [fWithout, mWithout, dWithout, kWithout, solvesWithout] = evaluate(false);
@@ -326,4 +330,68 @@ TEST(LubricatedSkirt, JacobianReuseFollowsTheFloodedCycle) {
   ASSERT_GT(stepError_um, 0.05);  // the reference is distinguishable at all
   EXPECT_LT(reuseEffect_um, 0.25 * stepError_um);
   EXPECT_LT(std::abs(fmepChange), 5e-4);
+}
+
+// The skirt side without Simbody (skirt::SkirtSideSolver): a solver built here from the
+// element's parameters and the engine, given the pose the State holds and the element's
+// conditions, returns the element's side results bit for bit. Whatever the element adds
+// between the State and a side (reading the pose, the sliding velocities, the viscosity, the
+// supply) is thereby checked against a second wiring of the same parts.
+TEST(LubricatedSkirt, SideSolvedWithoutSimbodyEqualsTheElementsSide) {
+  ts::SkirtModel m = ts::makeGasolineSkirtModel(16, 12);
+  m.model->buildSystem();
+  const auto& ct = m.model->getCrankTrain();
+  SimTK::State st = m.model->getDefaultState();
+  ct.setPose(st, 40.0 * M_PI / 180.0, 12e-6, 2e-4);
+  ct.setRates(st, m.engine.drive.speed_radps, 0.02, -0.5);
+  m.model->getSystem().realize(st, SimTK::Stage::Acceleration);
+  const plugin::LubricatedSkirtElement& element = m.skirt();
+  const plugin::LubricatedSkirtParameters& p = element.getParameters();  // filled by the engine
+  const plugin::PistonPose pose = plugin::calcPistonPose(ct, st);
+
+  auto flowFactors = std::make_shared<const lubrication::PatirChengFlowFactors>(p.roughness);
+  auto law = std::make_shared<const contact_forces::GreenwoodTrippLaw>(p.asperity);
+  skirt::SkirtSideSettings settings;
+  settings.lubrication = p.lubrication;
+  settings.fillFractionHistoryOrder = p.fillFractionHistoryOrder;
+  for (const plugin::SkirtSide side : {plugin::SkirtSide::Thrust, plugin::SkirtSide::AntiThrust}) {
+    skirt::SkirtSideGridParameters g = p.grid;
+    g.side = side == plugin::SkirtSide::Thrust ? skirt::SkirtSide::Thrust
+                                               : skirt::SkirtSide::AntiThrust;
+    g.radius_m = 0.5 * m.engine.piston.bore_m;
+    g.skirtTopHeight_m = m.engine.piston.skirtTopAbovePin_m;
+    g.skirtLength_m = m.engine.piston.skirtLength_m;
+    skirt::SkirtSideSolver solver(skirt::SkirtSideGrid(g), p.gap, flowFactors, law,
+                                  contact_forces::BoundaryFriction(p.boundaryFriction), settings);
+    const skirt::SkirtSideMotion motion{{pose.lateral_m, pose.tilt_rad, pose.transverse_m},
+                                        {pose.lateralRate_mps, pose.tiltRate_radps,
+                                         pose.transverseRate_mps},
+                                        pose.pinHeight_m,
+                                        pose.axialVelocity_mps};
+    skirt::SkirtSideConditions conditions;
+    conditions.viscosity_Pas = element.getViscosity_Pas();
+    conditions.supplyFilm_m = p.supplyFilm.calcThickness_m(ct.getCrankAngle_rad(st) * 180 / M_PI);
+    skirt::SkirtSideSolution solution;
+    solver.solve(motion, conditions, skirt::SkirtSideHistory{}, solution);
+
+    const skirt::SkirtSideResults& alone = solver.getResults();
+    const skirt::SkirtSideResults& inElement = element.getLastSideResults(side);
+    const auto& cached = element.getResults(st).sides[side == plugin::SkirtSide::Thrust ? 0 : 1];
+    if (side == plugin::SkirtSide::Thrust)  // moving towards thrust: a loaded film there
+      ASSERT_GT(alone.hydrodynamicNormalForce_N, 100.0);
+    EXPECT_TRUE((alone.film.pressure_Pa() == inElement.film.pressure_Pa()).all());
+    EXPECT_TRUE((alone.film.fillFraction() == inElement.film.fillFraction()).all());
+    EXPECT_TRUE((alone.contact.pressure_Pa == inElement.contact.pressure_Pa).all());
+    EXPECT_EQ(alone.totalLoads.force_N, inElement.totalLoads.force_N);
+    EXPECT_EQ(alone.totalLoads.moment_Nm, inElement.totalLoads.moment_Nm);
+    EXPECT_EQ(alone.dLoads_dPoseRate, inElement.dLoads_dPoseRate);
+    EXPECT_EQ(alone.dLoads_dPose, inElement.dLoads_dPose);
+    EXPECT_EQ(alone.frictionPower_W, cached.frictionPower_W);
+    EXPECT_EQ(alone.minFilmThickness_m, cached.minFilmThickness_m);
+    EXPECT_EQ(alone.hydrodynamicFrictionAxial_N, cached.hydrodynamicFrictionAxial_N);
+    EXPECT_EQ(alone.asperityNormalForce_N, cached.asperityNormalForce_N);
+    // A mass-conserving film's history comes with the solution: this step's fill fraction.
+    ASSERT_TRUE(solution.historyAdvanced);
+    EXPECT_TRUE((solution.next.film.last.fillFraction == alone.film.fillFraction()).all());
+  }
 }

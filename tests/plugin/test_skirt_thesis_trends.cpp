@@ -53,7 +53,7 @@ Outcome run(const plugin::LubricatedSkirtParameters& p, int maxCycles) {
     void discardRows() override { onDiscard(); }
   } sink;
   sink.onRow = [&](const SimTK::State& st) {
-    asperityNow = skirt.getAsperityFrictionWork_J(st);
+    asperityNow = *skirt.getAsperityFrictionWork_J(st);
     totalNow = *skirt.getFrictionWork_J(st);
     if (first) {
       asperityAtStart = asperityNow;

@@ -17,7 +17,9 @@
 #include "ExpectInvalidArgument.h"
 #include "SkirtTestSupport.h"
 #include "pistondyn/mapping/CylinderGrid.h"
+#include "pistondyn/skirt/AitkenCoupling.h"
 #include "pistondyn/skirt/ElasticCoupling.h"
+#include "pistondyn/skirt/NewtonCoupling.h"
 
 namespace ps = pistondyn::skirt;
 namespace pm = pistondyn::mapping;
@@ -65,7 +67,7 @@ TEST(ElasticCoupling, HertzPressureOnAHalfSpaceMatchesBoussinesq) {
     const double r2 = s * s + y * y;
     pressure[k] = r2 < a * a ? p0 * std::sqrt(1.0 - r2 / (a * a)) : 0.0;
   }
-  ps::ElasticCoupling coupling(side, compliance);
+  ps::AitkenCoupling coupling(side, compliance);
   int calls = 0;
   const ps::ElasticCouplingReport rep =
       coupling.solve([&](const Eigen::ArrayXd&, ps::FilmPressureEvaluation& out) {
@@ -156,7 +158,7 @@ TEST(ElasticCoupling, SymmetricLoadGivesASymmetricDeformation) {
   ps::ElasticCouplingParameters p;
   p.absoluteTolerance_m = 1e-11;  // tight: symmetry is checked far below the tolerance anyway
   p.relativeTolerance = 0.0;
-  ps::ElasticCoupling coupling(c.side, c.compliance, p);
+  ps::AitkenCoupling coupling(c.side, c.compliance, p);
   const ps::ElasticCouplingReport rep = coupling.solve(c.film);
   ASSERT_TRUE(rep.converged) << rep.iterations << " iterations, residual " << rep.residual_m;
   const Eigen::ArrayXd& d = coupling.pistonElastic_m();
@@ -194,7 +196,7 @@ TEST(ElasticCoupling, GasFieldAloneGivesMinusItsScaledInterpolant) {
   for (int k = 0; k < ns; ++k)
     c.compliance.gasDisplacement_m_per_Pa[k] =
         poly(c.compliance.phi_rad[k % np], c.compliance.y_m[k / np]);
-  ps::ElasticCoupling coupling(c.side, c.compliance);
+  ps::AitkenCoupling coupling(c.side, c.compliance);
   const double pCyl = 5e6;
   const ps::ElasticCouplingReport rep = coupling.solve(
       [&](const Eigen::ArrayXd&, ps::FilmPressureEvaluation& out) {
@@ -225,60 +227,60 @@ TEST(ElasticCouplingBadInput, NamesTheMember) {
   {
     auto bad = c.compliance;
     bad.compliance_m_per_N.conservativeResize(bad.nodeCount() - 1, bad.nodeCount() - 1);
-    expectInvalidArgument([&] { ps::ElasticCoupling(c.side, bad); },
+    expectInvalidArgument([&] { (void)ps::makeElasticCoupling(c.side, bad, {}); },
                           {"compliance_m_per_N is 116 x 116", "117 nodes"});
   }
   {
     auto bad = c.compliance;
     bad.compliance_m_per_N(3, 5) = std::numeric_limits<double>::quiet_NaN();
-    expectInvalidArgument([&] { ps::ElasticCoupling(c.side, bad); },
+    expectInvalidArgument([&] { (void)ps::makeElasticCoupling(c.side, bad, {}); },
                           {"compliance_m_per_N(3, 5)", "finite"});
   }
   {
     auto bad = c.compliance;
     bad.gasDisplacement_m_per_Pa = Eigen::VectorXd::Zero(5);
-    expectInvalidArgument([&] { ps::ElasticCoupling(c.side, bad); },
+    expectInvalidArgument([&] { (void)ps::makeElasticCoupling(c.side, bad, {}); },
                           {"gasDisplacement_m_per_Pa", "expected 117"});
   }
   {
     auto bad = c.compliance;
     bad.y_m = pm::uniformNodes(-0.020, 0.015, 9);  // the side reaches down to -0.025 m
-    expectInvalidArgument([&] { ps::ElasticCoupling(c.side, bad); },
+    expectInvalidArgument([&] { (void)ps::makeElasticCoupling(c.side, bad, {}); },
                           {"outside the structural grid's heights"});
   }
   {
     auto bad = c.compliance;
     bad.phi_rad = pm::uniformNodes(-0.4, 0.4, 13);  // the side spans +-0.5 rad
-    expectInvalidArgument([&] { ps::ElasticCoupling(c.side, bad); },
+    expectInvalidArgument([&] { (void)ps::makeElasticCoupling(c.side, bad, {}); },
                           {"outside the structural sector"});
   }
   {
     ps::ElasticCouplingParameters p;
     p.maxIterations = 0;
-    expectInvalidArgument([&] { ps::ElasticCoupling(c.side, c.compliance, p); },
+    expectInvalidArgument([&] { (void)ps::makeElasticCoupling(c.side, c.compliance, p); },
                           {"ElasticCouplingParameters", "maxIterations"});
     p = {};
     p.maxRelaxation = 1.5;
-    expectInvalidArgument([&] { ps::ElasticCoupling(c.side, c.compliance, p); },
+    expectInvalidArgument([&] { (void)ps::makeElasticCoupling(c.side, c.compliance, p); },
                           {"maxRelaxation", "(0, 1]"});
     p = {};
     p.absoluteTolerance_m = 0.0;
     p.relativeTolerance = 0.0;
-    expectInvalidArgument([&] { ps::ElasticCoupling(c.side, c.compliance, p); }, {"both 0"});
+    expectInvalidArgument([&] { (void)ps::makeElasticCoupling(c.side, c.compliance, p); }, {"both 0"});
     p = {};
     p.maxKrylovIterations = 0;
-    expectInvalidArgument([&] { ps::ElasticCoupling(c.side, c.compliance, p); },
+    expectInvalidArgument([&] { (void)ps::makeElasticCoupling(c.side, c.compliance, p); },
                           {"maxKrylovIterations = 0", "1 ... 50"});
     p = {};
     p.krylovTolerance = 1.0;
-    expectInvalidArgument([&] { ps::ElasticCoupling(c.side, c.compliance, p); },
+    expectInvalidArgument([&] { (void)ps::makeElasticCoupling(c.side, c.compliance, p); },
                           {"krylovTolerance", "(0, 1)"});
   }
   {
     // The Newton scheme needs the film's local stiffness with every evaluation.
     ps::ElasticCouplingParameters p;
     p.scheme = ps::ElasticCouplingScheme::Newton;
-    ps::ElasticCoupling newton(c.side, c.compliance, p);
+    ps::NewtonCoupling newton(c.side, c.compliance, p);
     const int n = c.side.nodeCount();
     expectInvalidArgument(
         [&] {
@@ -288,7 +290,7 @@ TEST(ElasticCouplingBadInput, NamesTheMember) {
         },
         {"Newton scheme needs", "pressureStiffness_Pa_per_m"});
   }
-  ps::ElasticCoupling coupling(c.side, c.compliance);
+  ps::AitkenCoupling coupling(c.side, c.compliance);
   expectInvalidArgument(
       [&] {
         (void)coupling.solve([](const Eigen::ArrayXd&, ps::FilmPressureEvaluation& out) {

@@ -27,7 +27,10 @@
 #include "pistondyn/contact_forces/BoundaryFriction.h"
 #include "pistondyn/contact_forces/GreenwoodTrippLaw.h"
 #include "pistondyn/lubrication/PatirChengFlowFactors.h"
+#include "pistondyn/skirt/AitkenCoupling.h"
 #include "pistondyn/skirt/ElasticCoupling.h"
+#include "pistondyn/skirt/ModalCoupling.h"
+#include "pistondyn/skirt/NewtonCoupling.h"
 #include "pistondyn/skirt/SkirtSideLubrication.h"
 
 namespace ps = pistondyn::skirt;
@@ -120,8 +123,8 @@ class GasolineSide {
         modalBasis_ = (-1.0 / dt_s) * *modal;
       if (modal && exactStatic)
         gapBasis_ = -*modal;
-      inputs_.extraSqueezeBasis = modal && withRate ? &modalBasis_ : nullptr;
-      inputs_.extraGapBasis = modal && exactStatic ? &gapBasis_ : nullptr;
+      inputs_.extraBases.squeezeBasis = modal && withRate ? &modalBasis_ : nullptr;
+      inputs_.extraBases.gapBasis = modal && exactStatic ? &gapBasis_ : nullptr;
       filmAt(e_m)(elastic_m, out);
       if (modal && withRate)
         out.pressureRateSensitivity_Pa_per_m =
@@ -135,8 +138,8 @@ class GasolineSide {
         out.pressureStiffness_Pa_per_m = (-slope).max(0.0);
       }
       fields_.gapRate_mps.setZero();
-      inputs_.extraSqueezeBasis = nullptr;
-      inputs_.extraGapBasis = nullptr;
+      inputs_.extraBases.squeezeBasis = nullptr;
+      inputs_.extraBases.gapBasis = nullptr;
     };
   }
   // The film at lateral displacement e with a gap rate field and gap-basis columns that move
@@ -146,11 +149,11 @@ class GasolineSide {
                          const Eigen::ArrayXd& gapRate_mps, const Eigen::MatrixXd* gapBasis,
                          const Eigen::MatrixXd* rateBasis) {
     fields_.gapRate_mps = gapRate_mps;
-    inputs_.extraGapBasis = gapBasis;
-    inputs_.extraGapRateBasis = rateBasis;
+    inputs_.extraBases.gapBasis = gapBasis;
+    inputs_.extraBases.gapRateBasis = rateBasis;
     solve(e_m, gapShift_m);
-    inputs_.extraGapBasis = nullptr;
-    inputs_.extraGapRateBasis = nullptr;
+    inputs_.extraBases.gapBasis = nullptr;
+    inputs_.extraBases.gapRateBasis = nullptr;
     fields_.gapRate_mps.setZero();
   }
   // Side force the film and the contact put on the liner (+ towards thrust) [N].
@@ -198,7 +201,7 @@ constexpr double kThinFilmLateral_m = 38e-6;
 TEST(ElasticCouplingFilm, ConvergedDeformationDoesNotDependOnTheStart) {
   GasolineSide s;
   const auto compliance = gasolineSkirt();
-  ps::ElasticCoupling coupling(s.side(), compliance);
+  ps::AitkenCoupling coupling(s.side(), compliance);
   const auto film = s.filmAt(kThinFilmLateral_m);
 
   const ps::ElasticCouplingReport zero = coupling.solve(film);
@@ -241,7 +244,7 @@ TEST(ElasticCouplingFilm, ConvergedDeformationDoesNotDependOnTheStart) {
 TEST(ElasticCouplingFilm, PistonForceBalancesTheStructuralReaction) {
   GasolineSide s;
   const auto compliance = gasolineSkirt();
-  ps::ElasticCoupling coupling(s.side(), compliance);
+  ps::AitkenCoupling coupling(s.side(), compliance);
   const ps::ElasticCouplingReport rep = coupling.solve(s.filmAt(kThinFilmLateral_m));
   ASSERT_TRUE(rep.converged);
   // Independent integral of the pressure: the side's exact bilinear area weights.
@@ -269,9 +272,9 @@ TEST(ElasticCouplingFilm, PlainFixedPointFailsWhereAitkenConverges) {
   ps::ElasticCouplingParameters plain;
   plain.initialRelaxation = plain.minRelaxation = plain.maxRelaxation = 1.0;
   plain.maxIterations = 60;
-  ps::ElasticCoupling fixedPoint(s.side(), compliance, plain);
+  ps::AitkenCoupling fixedPoint(s.side(), compliance, plain);
   const ps::ElasticCouplingReport a = fixedPoint.solve(film);
-  ps::ElasticCoupling aitken(s.side(), compliance);
+  ps::AitkenCoupling aitken(s.side(), compliance);
   const ps::ElasticCouplingReport b = aitken.solve(film);
   std::printf(
       "[ElasticCouplingFilm] 1 um rigid gap: plain fixed point %s after %d iterations "
@@ -304,9 +307,9 @@ TEST(ElasticCouplingFilm, NewtonAndAitkenReachTheSameDeformation) {
   aitkenParameters.maxIterations = 200;
   for (const double e_m : {38e-6, 39e-6, 39.5e-6}) {
     const auto film = s.filmAt(e_m);
-    ps::ElasticCoupling aitken(s.side(), compliance, aitkenParameters);
+    ps::AitkenCoupling aitken(s.side(), compliance, aitkenParameters);
     const ps::ElasticCouplingReport a = aitken.solve(film);
-    ps::ElasticCoupling newton(s.side(), compliance, newtonParameters);
+    ps::NewtonCoupling newton(s.side(), compliance, newtonParameters);
     const ps::ElasticCouplingReport b = newton.solve(film);
     ASSERT_TRUE(a.converged) << "Aitken at e = " << e_m << ": residual " << a.residual_m;
     ASSERT_TRUE(b.converged) << "Newton at e = " << e_m << ": residual " << b.residual_m;
@@ -336,7 +339,7 @@ TEST(ElasticCouplingFilm, ModalSchemeConvergesToTheFullCouplingWithTheModes) {
   aitkenParameters.maxIterations = 200;
   for (const double e_m : {38e-6, 39.5e-6}) {
     const auto film = s.filmAt(e_m);
-    ps::ElasticCoupling aitken(s.side(), compliance, aitkenParameters);
+    ps::AitkenCoupling aitken(s.side(), compliance, aitkenParameters);
     const ps::ElasticCouplingReport a = aitken.solve(film);
     ASSERT_TRUE(a.converged);
     double previousError = 1.0;
@@ -344,7 +347,7 @@ TEST(ElasticCouplingFilm, ModalSchemeConvergesToTheFullCouplingWithTheModes) {
       ps::ElasticCouplingParameters modal = aitkenParameters;
       modal.scheme = ps::ElasticCouplingScheme::Modal;
       modal.modes = modes;
-      ps::ElasticCoupling coupling(s.side(), compliance, modal);
+      ps::ModalCoupling coupling(s.side(), compliance, modal);
       const ps::ElasticCouplingReport b = coupling.solve(film);
       ASSERT_TRUE(b.converged) << modes << " modes at e = " << e_m << ": residual "
                                << b.residual_m;
@@ -380,10 +383,10 @@ TEST(ElasticCouplingFilm, ModalSchemeWithTheElasticRateMatchesAitken) {
   const double e_m = 39e-6;
   const Eigen::ArrayXd previous = Eigen::ArrayXd::Zero(s.side().nodeCount());
   for (const double dt_s : {1e-4, 1e-5}) {
-    ps::ElasticCoupling aitken(s.side(), compliance, aitkenParameters);
+    ps::AitkenCoupling aitken(s.side(), compliance, aitkenParameters);
     const ps::ElasticCouplingReport a =
         aitken.solve(s.filmWithRateAt(e_m, previous, dt_s, nullptr));
-    ps::ElasticCoupling coupling(s.side(), compliance, modal);
+    ps::ModalCoupling coupling(s.side(), compliance, modal);
     const ps::ElasticCouplingReport b =
         coupling.solve(s.filmWithRateAt(e_m, previous, dt_s, &coupling.modalShapes()));
     ASSERT_TRUE(b.converged) << "dt " << dt_s << ": residual " << b.residual_m;
@@ -416,14 +419,14 @@ TEST(ElasticCouplingFilm, ExactStaticDerivativeSavesNewtonIterations) {
   int estimateTotal = 0, exactTotal = 0;
   for (const double e_m : {38e-6, 39e-6}) {
     for (const double dt_s : {0.0, 1e-4}) {
-      ps::ElasticCoupling aitken(s.side(), compliance, aitkenParameters);
+      ps::AitkenCoupling aitken(s.side(), compliance, aitkenParameters);
       const ps::ElasticCouplingReport a =
           aitken.solve(s.filmWithRateAt(e_m, previous, dt_s, nullptr));
       ASSERT_TRUE(a.converged);
-      ps::ElasticCoupling estimate(s.side(), compliance, modal);
+      ps::ModalCoupling estimate(s.side(), compliance, modal);
       const ps::ElasticCouplingReport b =
           estimate.solve(s.filmWithRateAt(e_m, previous, dt_s, &estimate.modalShapes()));
-      ps::ElasticCoupling exact(s.side(), compliance, modal);
+      ps::ModalCoupling exact(s.side(), compliance, modal);
       const ps::ElasticCouplingReport c =
           exact.solve(s.filmWithRateAt(e_m, previous, dt_s, &exact.modalShapes(), true));
       ASSERT_TRUE(b.converged);
@@ -474,8 +477,8 @@ TEST(ElasticCouplingFilm, KeptModalJacobianReachesTheSameDeformations) {
     };
   };
   for (const double gap0_m : {10e-6, 2e-6}) {
-    ps::ElasticCoupling aitken(s.side(), compliance, aitkenParameters);
-    ps::ElasticCoupling a(s.side(), compliance, fresh), b(s.side(), compliance, kept);
+    ps::AitkenCoupling aitken(s.side(), compliance, aitkenParameters);
+    ps::ModalCoupling a(s.side(), compliance, fresh), b(s.side(), compliance, kept);
     Eigen::ArrayXd previousA = Eigen::ArrayXd::Zero(s.side().nodeCount()), previousB = previousA,
                    previousAitken = previousA;
     int sensitivitiesA = 0, sensitivitiesB = 0, evaluationsA = 0, evaluationsB = 0;
@@ -522,7 +525,7 @@ TEST(ElasticCouplingFilm, KeptModalJacobianReachesTheSameDeformations) {
   }
   ps::ElasticCouplingParameters bad = kept;
   bad.modalJacobianReuse = -1;
-  EXPECT_THROW(ps::ElasticCoupling(s.side(), compliance, bad), std::invalid_argument);
+  EXPECT_THROW(ps::ModalCoupling(s.side(), compliance, bad), std::invalid_argument);
 }
 
 // The film's total pressure derivative for gap shapes that also move the gap rate
@@ -575,7 +578,7 @@ TEST(ElasticCouplingFilm, GapDerivativeMatchesCompleteSolvesOnAClosingGapAtTheCl
 // coupling's iterates, the force map, the Hermite surface and the film reuse their storage.
 TEST(ElasticCouplingFilm, SecondSolveAllocatesNothing) {
   GasolineSide s;
-  ps::ElasticCoupling coupling(s.side(), gasolineSkirt());
+  ps::AitkenCoupling coupling(s.side(), gasolineSkirt());
   const ps::FilmPressureFunction film = s.filmAt(kThinFilmLateral_m);
   ASSERT_TRUE(coupling.solve(film).converged);
   coupling.resetWarmStart();  // a full solve again, from zero
@@ -592,7 +595,7 @@ TEST(ElasticCouplingFilm, SecondSolveAllocatesNothing) {
   // The modal scheme likewise (its Jacobian, factorisation and force columns are sized once).
   ps::ElasticCouplingParameters modal;
   modal.scheme = ps::ElasticCouplingScheme::Modal;
-  ps::ElasticCoupling modalCoupling(s.side(), gasolineSkirt(), modal);
+  ps::ModalCoupling modalCoupling(s.side(), gasolineSkirt(), modal);
   ASSERT_TRUE(modalCoupling.solve(film).converged);
   modalCoupling.resetWarmStart();
   const long modalCount = pistondyn::test::allocationsDuring([&] {
@@ -666,7 +669,7 @@ TEST(ElasticCouplingFilm, ElasticSkirtRaisesTheMinimumFilmAtEqualSideForce) {
   const double hRigid = s.results().minFilmThickness_m;
   const double asperityRigid = s.results().asperityNormalForce_N;
 
-  ps::ElasticCoupling coupling(s.side(), compliance);
+  ps::AitkenCoupling coupling(s.side(), compliance);
   double eElastic = 0.0;
   const int iterations = solveForLoad(s, &coupling, load_N, eElastic);
   const double hElastic = s.results().minFilmThickness_m;

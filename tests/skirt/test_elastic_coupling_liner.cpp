@@ -21,6 +21,7 @@
 #include "pistondyn/mapping/ForceMap.h"
 #include "pistondyn/mapping/HermiteSurface.h"
 #include "pistondyn/skirt/ElasticCoupling.h"
+#include "pistondyn/skirt/ModalCoupling.h"
 
 namespace {
 
@@ -62,7 +63,8 @@ ps::ElasticCouplingParameters aitken() {
 Eigen::ArrayXd gapTerm(const ps::SkirtSideGrid& side, const pm::StructuralCompliance& skirt,
                        const pm::StructuralCompliance* liner, double pinHeight_m,
                        const ps::ElasticCouplingParameters& parameters) {
-  ps::ElasticCoupling coupling(side, skirt, parameters, liner);
+  const auto owned = ps::makeElasticCoupling(side, skirt, parameters, liner);
+  ps::ElasticCoupling& coupling = *owned;
   if (liner)
     coupling.setLinerPosition(pinHeight_m);
   const ps::ElasticCouplingReport r = coupling.solve(fixedFilm(bumpPressure(side)));
@@ -140,7 +142,7 @@ TEST(ElasticCouplingLiner, ModalWithEveryModeGivesTheAitkenAnswer) {
               a.abs().maxCoeff());
   EXPECT_LT(error, 1e-9 * a.abs().maxCoeff() + 1e-12);
   // The same coupling moved back and forth returns the same modes' answer.
-  ps::ElasticCoupling coupling(side, skirt, modal, &liner);
+  ps::ModalCoupling coupling(side, skirt, modal, &liner);
   coupling.setLinerPosition(0.100);
   (void)coupling.solve(fixedFilm(bumpPressure(side)));
   coupling.setLinerPosition(pinHeight_m);
@@ -156,30 +158,30 @@ TEST(ElasticCouplingLinerBadInput, NamesTheProblem) {
   using pistondyn::test::expectInvalidArgument;
   pm::StructuralCompliance sector = liner;
   sector.fullCircle = false;
-  expectInvalidArgument([&] { ps::ElasticCoupling c(side, skirt, aitken(), &sector); },
+  expectInvalidArgument([&] { const auto c = ps::makeElasticCoupling(side, skirt, aitken(), &sector); },
                         "full circle");
   ps::ElasticCouplingParameters newton = aitken();
   newton.scheme = ps::ElasticCouplingScheme::Newton;
-  expectInvalidArgument([&] { ps::ElasticCoupling c(side, skirt, newton, &liner); },
+  expectInvalidArgument([&] { const auto c = ps::makeElasticCoupling(side, skirt, newton, &liner); },
                         "modal or the Aitken");
   expectInvalidArgument(
       [&] {
-        ps::ElasticCoupling c(side, skirt, aitken(), &liner);
-        (void)c.solve(fixedFilm(bumpPressure(side)));
+        const auto c = ps::makeElasticCoupling(side, skirt, aitken(), &liner);
+        (void)c->solve(fixedFilm(bumpPressure(side)));
       },
       "setLinerPosition");
   // Liner rows from 82 to 192 mm, skirt rows -18 .. +12 mm about the pin: a pin at 185 mm puts
   // the skirt top at 197 mm.
   expectInvalidArgument(
       [&] {
-        ps::ElasticCoupling c(side, skirt, aitken(), &liner);
-        c.setLinerPosition(0.185);
+        const auto c = ps::makeElasticCoupling(side, skirt, aitken(), &liner);
+        c->setLinerPosition(0.185);
       },
       "outside the liner's heights");
   expectInvalidArgument(
       [&] {
-        ps::ElasticCoupling c(side, skirt, aitken());
-        c.setLinerPosition(0.1);
+        const auto c = ps::makeElasticCoupling(side, skirt, aitken());
+        c->setLinerPosition(0.1);
       },
       "no liner");
 }

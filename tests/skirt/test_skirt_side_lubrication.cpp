@@ -979,8 +979,10 @@ TEST(SkirtSideLubrication, SecondAndLaterCallsAllocateNothing) {
     ps::SkirtSideInputs in = inputs(rc.eta, rc.uy, 0.05);
     in.supplyFilm_m = 8e-6;
     Eigen::ArrayXd previousFill = Eigen::ArrayXd::Constant(g.nodeCount(), 0.8);
+    lub::FilmHistory history;
+    history.last.fillFraction = previousFill;
     if (model == lub::CavitationModel::MassConserving) {
-      in.previousFillFraction = &previousFill;
+      in.history = &history;
       in.timeStep_s = 2e-5;
     }
     ps::SkirtSideResults out;
@@ -1066,17 +1068,19 @@ TEST(SkirtSideLubrication, BadInputIsRejectedNamingTheInput) {
   rejects(noGap, [](ps::SkirtSideInputs& in) { in.squeezeColumns = 4; },
           {s, "inputs.squeezeColumns = 4", "0..3"});
 
-  // Mass-conserving: the previous fill fraction's size, and the step.
+  // Mass-conserving: the history's size (checked once, by the film solver), and the step.
   ps::SkirtSideLubrication jfo =
       makeLubrication(g, patirCheng(), tightSolver(lub::CavitationModel::MassConserving));
   const Eigen::ArrayXd wrongSize = Eigen::ArrayXd::Constant(n + 3, 1.0);
   ps::SkirtSideInputs in = inputs(0.01, 1.0);
-  in.previousFillFraction = &wrongSize;
+  lub::FilmHistory wrongHistory;
+  wrongHistory.last.fillFraction = wrongSize;
+  in.history = &wrongHistory;
   in.timeStep_s = 1e-5;
   ps::SkirtSideResults out;
   expectInvalidArgument([&] { jfo.solve(good, in, out); },
-                        {s, "inputs.previousFillFraction has 66 entries", "63"});
-  in.previousFillFraction = nullptr;
+                        {"problem.history.last.fillFraction has 66 entries", "63"});
+  in.history = nullptr;
   in.timeStep_s = NAN;
   expectInvalidArgument([&] { jfo.solve(good, in, out); }, {s, "inputs.timeStep_s = nan s"});
 
@@ -1168,7 +1172,9 @@ TEST(SkirtSideLubrication, MassConservingFilmClosesItsOilBalance) {
   const Eigen::ArrayXd previous = Eigen::ArrayXd::Constant(g.nodeCount(), 0.7);
   ps::SkirtSideInputs in = inputs(rc.eta, 5.0);
   in.supplyFilm_m = 8e-6;
-  in.previousFillFraction = &previous;
+  lub::FilmHistory history;
+  history.last.fillFraction = previous;
+  in.history = &history;
   in.timeStep_s = 2e-5;
   ps::SkirtSideResults out;
   lub.solve(rigidFields(g, 12e-6, q, barrel), in, out);

@@ -36,8 +36,7 @@ void ElasticCoupling::setLinerPosition(double pinHeight_m) {
     return;
   linerPinHeight_m_ = pinHeight_m;
   calcEffectiveCompliance();
-  if (parameters_.scheme == ElasticCouplingScheme::Modal)
-    calcModes();
+  onComplianceChanged();
 }
 
 void ElasticCoupling::calcEffectiveCompliance() {

@@ -95,15 +95,16 @@ void validateInputs(const GapFields& gap, const SkirtSideInputs& in, const Skirt
   requireFiniteEntries(gap.gapRate_mps, "gap.gapRate_mps", "m/s", side);
   requireFiniteEntries(gap.dGap_dPose, 3, "gap.dGap_dPose", side);
   requireFiniteEntries(gap.squeezeBasis, in.squeezeColumns, "gap.squeezeBasis", side);
-  requireOptionalBasis(in.extraSqueezeBasis, "inputs.extraSqueezeBasis", n, side);
-  requireOptionalBasis(in.extraGapBasis, "inputs.extraGapBasis", n, side);
-  if (in.extraGapRateBasis) {
-    if (!in.extraGapBasis || in.extraGapRateBasis->rows() != n ||
-        in.extraGapRateBasis->cols() != in.extraGapBasis->cols())
-      badInput("inputs.extraGapRateBasis needs inputs.extraGapBasis and its shape (", n,
-               " rows, the gap basis' columns; ", sideName(side), " side)");
-    requireFiniteEntries(*in.extraGapRateBasis, in.extraGapRateBasis->cols(),
-                         "inputs.extraGapRateBasis", side);
+  const FilmSensitivityRequest& extra = in.extraBases;
+  requireOptionalBasis(extra.squeezeBasis, "inputs.extraBases.squeezeBasis", n, side);
+  requireOptionalBasis(extra.gapBasis, "inputs.extraBases.gapBasis", n, side);
+  if (extra.gapRateBasis) {
+    if (!extra.gapBasis || extra.gapRateBasis->rows() != n ||
+        extra.gapRateBasis->cols() != extra.gapBasis->cols())
+      badInput("inputs.extraBases.gapRateBasis needs inputs.extraBases.gapBasis and its shape (",
+               n, " rows, the gap basis' columns; ", sideName(side), " side)");
+    requireFiniteEntries(*extra.gapRateBasis, extra.gapRateBasis->cols(),
+                         "inputs.extraBases.gapRateBasis", side);
   }
   common::requirePositiveFinite(in.viscosity_Pas, kSolve, "inputs.viscosity_Pas", "Pa s");
   common::requireFinite(in.slidingVelocityAxial_mps, kSolve, "inputs.slidingVelocityAxial_mps",
@@ -394,24 +395,25 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
     m.rateCurvature[k] = f.curvature_per_m * gap.gapRate_mps[k];
   }
   p.gapRate_mps = gap.gapRate_mps * m.clampSlope;
-  const Eigen::Index extra = in.extraSqueezeBasis ? in.extraSqueezeBasis->cols() : 0;
+  const FilmSensitivityRequest& bases = in.extraBases;
+  const Eigen::Index extra = bases.squeezeBasis ? bases.squeezeBasis->cols() : 0;
   p.squeezeBasis.resize(n, in.squeezeColumns + extra);
   for (int c = 0; c < in.squeezeColumns; ++c)
     p.squeezeBasis.col(c) = (gap.squeezeBasis.col(c).array() * m.clampSlope).matrix();
   for (Eigen::Index c = 0; c < extra; ++c)
     p.squeezeBasis.col(in.squeezeColumns + c) =
-        (in.extraSqueezeBasis->col(c).array() * m.clampSlope).matrix();
-  scaleRowsInto(in.extraGapBasis, m.clampSlope, p.gapBasis);
-  if (in.extraGapBasis) {
+        (bases.squeezeBasis->col(c).array() * m.clampSlope).matrix();
+  scaleRowsInto(bases.gapBasis, m.clampSlope, p.gapBasis);
+  if (bases.gapBasis) {
     // The film's rate is slope(h) dh/dt, so a gap column moves it also through the clamp's
     // curvature: d(rate_f)/du_g = slope d(dh/dt)/du_g + curvature dh/dt dh/du_g. Where the gap
     // closes fast near the floor this part is as large as the others (the elastic coupling's
-    // Newton steps overshot by 2-3.5x without it, 2026-12-05).
-    p.gapRateBasis.resize(n, in.extraGapBasis->cols());
-    for (Eigen::Index c = 0; c < in.extraGapBasis->cols(); ++c) {
-      p.gapRateBasis.col(c) = (in.extraGapBasis->col(c).array() * m.rateCurvature).matrix();
-      if (in.extraGapRateBasis)
-        p.gapRateBasis.col(c) += (in.extraGapRateBasis->col(c).array() * m.clampSlope).matrix();
+    // Newton steps overshoot by 2-3.5x without it).
+    p.gapRateBasis.resize(n, bases.gapBasis->cols());
+    for (Eigen::Index c = 0; c < bases.gapBasis->cols(); ++c) {
+      p.gapRateBasis.col(c) = (bases.gapBasis->col(c).array() * m.rateCurvature).matrix();
+      if (bases.gapRateBasis)
+        p.gapRateBasis.col(c) += (bases.gapRateBasis->col(c).array() * m.clampSlope).matrix();
     }
   } else if (p.gapRateBasis.size() > 0) {
     p.gapRateBasis.resize(0, 0);
@@ -422,45 +424,12 @@ void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in
   p.boundary.yMin.supplyFilm_m = in.supplyFilm_m;
   p.boundary.yMax.supplyFilm_m = in.supplyFilm_m;
   if (p.cavitation == lubrication::CavitationModel::MassConserving) {
-    if (in.previousFillFraction != nullptr && in.previousFillFraction->size() > 0) {
-      if (in.previousFillFraction->size() != n)
-        badInput("inputs.previousFillFraction has ", in.previousFillFraction->size(),
-                 " entries, expected ", n, " (nodes of the ", sideName(grid.getSide()),
-                 " side; empty: full film)");
-      p.previousFillFraction = *in.previousFillFraction;
-    } else {
-      p.previousFillFraction.resize(0);
-    }
+    // The history as it is: the film solver checks it and uses what the step allows.
+    if (in.history != nullptr)
+      p.history = *in.history;
+    else if (!p.history.empty())
+      p.history = lubrication::FilmHistory();
     p.timeStep_s = in.timeStep_s > 0.0 ? in.timeStep_s : std::numeric_limits<double>::infinity();
-    const bool second = in.previousFillFraction2 != nullptr &&
-                        in.previousFillFraction2->size() > 0 &&
-                        p.previousFillFraction.size() == n && std::isfinite(p.timeStep_s);
-    if (second) {
-      if (in.previousFillFraction2->size() != n)
-        badInput("inputs.previousFillFraction2 has ", in.previousFillFraction2->size(),
-                 " entries, expected ", n);
-      if (!(in.previousTimeStep_s > 0.0) || !std::isfinite(in.previousTimeStep_s))
-        badInput("inputs.previousTimeStep_s = ", in.previousTimeStep_s,
-                 " s must be positive and finite with a second history point");
-      p.previousFillFraction2 = *in.previousFillFraction2;
-      p.previousTimeStep_s = in.previousTimeStep_s;
-    } else {
-      p.previousFillFraction2.resize(0);
-    }
-    auto copyGap = [&](const Eigen::ArrayXd* from, bool wanted, Eigen::ArrayXd& to,
-                       const char* name) {
-      if (wanted && from != nullptr && from->size() > 0) {
-        if (from->size() != n)
-          badInput("inputs.", name, " has ", from->size(), " entries, expected ", n);
-        to = *from;
-      } else {
-        to.resize(0);
-      }
-    };
-    copyGap(in.previousExpectedGap, p.previousFillFraction.size() == n && std::isfinite(p.timeStep_s),
-            p.previousExpectedGap_m, "previousExpectedGap");
-    copyGap(in.previousExpectedGap2, second && p.previousExpectedGap_m.size() == n,
-            p.previousExpectedGap2_m, "previousExpectedGap2");
   }
 
   using Clock = std::chrono::steady_clock;

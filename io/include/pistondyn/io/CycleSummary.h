@@ -41,7 +41,7 @@ struct CycleSummary {
     std::optional<double> minGapOverSigmaAntiThrust, minGapOverSigmaAntiThrustAngle_deg;
     std::optional<double> frictionWork_J;  // dissipated over the cycle, >= 0
     // The part of it dissipated by asperity (boundary) friction, from the lubricated
-    // skirt's integrated state (plugin::LubricatedSkirtElement::getAsperityFrictionWork_J).
+    // liner's integrated state (plugin::LinerElement::getAsperityFrictionWork_J).
     std::optional<double> asperityFrictionWork_J;
     // Friction work over the cycle / the cycle's duration: the exact time average [W].
     std::optional<double> frictionPowerMean_W;
@@ -106,7 +106,7 @@ class CycleSummarySink final : public plugin::RowSink {
     double previous_J = 0.0, max_J = 0.0;
   };
   const plugin::LinerElement* liner_ = nullptr;
-  std::optional<long> solvesAtStart_, fallbacksAtStart_, derivativeFailuresAtStart_;
+  std::optional<plugin::SolverCounters> countersAtStart_;  // the liner's at the run's start
   long perCycle_;
   long rows_ = 0;
   long rowInCycle_ = -1;  // -1 before the first beginCycle()

@@ -18,8 +18,9 @@
 //   const auto deck = io::loadEngineDeck("engine.yaml", {"liner.model=spring_guide"});
 //
 // A factory may also take a LinerDeckContext (below): the engine the deck describes, for
-// cross-checks of the liner's data against it, and what the liner needs from the rest of
-// the model (the crank train's tertiary mobility, a stiff-capable integrator, field dumps).
+// cross-checks of the liner's data against it; it then returns, with the maker, what the liner
+// needs from the rest of the model (LinerModelNeeds: the crank train's tertiary mobility, a
+// stiff-capable integrator, field dumps).
 //
 // Factories run while the deck is read (so `pistondyn check` and every problem report see
 // them); the maker runs once at load (a trial construction whose std::exception becomes
@@ -50,7 +51,7 @@ namespace pistondyn::io {
 
 class DeckSection;
 
-// What a liner model's factory knows of the rest of the deck, and what it tells the deck.
+// What a liner model's factory knows of the rest of the deck (read only).
 struct LinerDeckContext {
   // The engine as read from the deck's other sections (SI), never null. Use it for
   // cross-checks only when engineIsValid: a key that failed to read leaves a placeholder
@@ -63,8 +64,10 @@ struct LinerDeckContext {
   // by then when the deck loaded).
   std::shared_ptr<std::shared_ptr<const mbd::CylinderPressureCurve>> cylinderPressure;
   double crankcasePressure_Pa = 1.0e5;
+};
 
-  // ---- set by the factory -------------------------------------------------------------
+// What a liner model needs from the rest of the model (its factory's answer to the deck).
+struct LinerModelNeeds {
   // The crank train's tertiary (pin-axis) mobility, EngineDescription::tertiaryMotion,
   // when the liner model decides it (it must agree with the element); unset keeps the
   // engine's default (on).
@@ -76,7 +79,7 @@ struct LinerDeckContext {
   // integrates models without constraints, is rejected.
   bool usesConstraints = false;
   // Crank angles [deg], each in [0, 720), at which the run writes the liner's nodal fields
-  // (the deck checks that they are output rows; the lubricated skirt's field dumps), and
+  // (plugin::LinerElement::getNodalFields(); the deck checks that they are output rows), and
   // the key that listed them (for that check's message).
   std::vector<double> fieldDumpAngles_deg;
   std::string fieldDumpKey;
@@ -84,11 +87,16 @@ struct LinerDeckContext {
 
 // Constructs one liner element with the parameters its factory read.
 using LinerElementMaker = std::function<std::unique_ptr<plugin::LinerElement>()>;
+// A factory's result: the maker and what the model needs for it.
+struct LinerModel {
+  LinerElementMaker maker;
+  LinerModelNeeds needs;
+};
 // Reads the liner section; problems go to the section (never thrown for bad input).
 using LinerFactory = std::function<LinerElementMaker(DeckSection& liner)>;
-// The same with the deck context.
+// The same with the deck context, and the model's needs with the maker.
 using LinerFactoryWithContext =
-    std::function<LinerElementMaker(DeckSection& liner, LinerDeckContext& context)>;
+    std::function<LinerModel(DeckSection& liner, const LinerDeckContext& context)>;
 
 class LinerRegistry {
  public:

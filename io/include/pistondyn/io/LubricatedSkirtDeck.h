@@ -47,9 +47,9 @@
 namespace pistondyn::io {
 
 // The factory registered as "lubricated_skirt": reads the section, reports every problem
-// to it (file:line: liner.key: ...), sets the context (tertiary motion, stiffness, field
-// dumps) and returns the maker of a plugin::LubricatedSkirtElement.
-LinerElementMaker readLubricatedSkirt(DeckSection& liner, LinerDeckContext& context);
+// to it (file:line: liner.key: ...), and returns the maker of a plugin::LubricatedSkirtElement
+// with the model's needs (tertiary motion, stiffness, field dumps).
+LinerModel readLubricatedSkirt(DeckSection& liner, const LinerDeckContext& context);
 
 // The keys of its section (liner.*, liner.model excepted: getEngineDeckKeys()).
 const DeckKeyTable& getLubricatedSkirtDeckKeys();

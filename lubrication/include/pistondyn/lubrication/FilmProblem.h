@@ -40,6 +40,7 @@
 
 #include <Eigen/Core>
 
+#include "pistondyn/lubrication/FilmHistory.h"
 #include "pistondyn/lubrication/FlowFactorModel.h"
 
 namespace pistondyn::lubrication {
@@ -71,7 +72,7 @@ enum class FaceValues {
 };
 
 // How the Couette flux through a face takes the fill fraction theta_up (the "Discrete
-// equation" above). Only the mass-conserving model with a time step and previousFillFraction
+// equation" above). Only the mass-conserving model with a time step and history.last
 // uses it; everywhere else theta_up is the upwind node's (a full film has theta = 1).
 enum class FillFractionFlux {
   // theta_up = the upwind node's fill fraction, implicit: monotone, first order where theta
@@ -80,12 +81,12 @@ enum class FillFractionFlux {
   Upwind,
   // theta_up + (1/2) minmod(theta_up - theta_upup (scaled to the face's spacing),
   // theta_down - theta_up), the limited second-order (MUSCL) face value, with the correction
-  // to the upwind value taken from previousFillFraction: the upwind part stays implicit, the
+  // to the upwind value taken from history.last: the upwind part stays implicit, the
   // second-order part is an explicit face flux (deferred correction lagged by one step; it
   // adds a known term to the net outflow of the "Discrete equation" above). A face whose
   // upwind node has no upwind neighbour stays first order. The correction fluxes are scaled
   // down (Zalesak's flux limiter) so that alone they would move no unknown node's storage
-  // reference outside the range of previousFillFraction over the node and its four
+  // reference outside the range of history.last's fill fraction over the node and its four
   // neighbours (within [0, 1]); they cancel between the two nodes of every face, so the
   // scheme conserves mass exactly. The face value may exceed 1 for one step where its
   // upwind node fills during the step (still conservative). Second order in space (a cavitated
@@ -157,30 +158,23 @@ struct FilmProblem {
   double cavitationPressure_Pa = 0.0;  // p_cav, [Pa], default 0 (gauge ambient)
   FilmBoundary boundary;
 
-  // Mass-conserving model only: time step since the state thetaPrev, [s] (> 0; +inf = steady
-  // state, the default) and the fill fraction at the start of the step (empty = 1, full film).
+  // Mass-conserving model only: time step since the state of history.last, [s] (> 0; +inf =
+  // steady state, the default), and the film's history (FilmHistory.h: the fill fraction and
+  // expected gap at the last one or two accepted steps; empty = a full film at rest).
   // A steady problem needs an oil supply (an edge above p_cav or a flooded inflow edge): on an
   // x-periodic region whose open edges all sit at p_cav, any pure Couette circulation with
   // theta * hT = const solves the steady equations, so the answer is not unique (the fast
   // solver then reports non-convergence and falls back). Use a time step there.
-  double timeStep_s = std::numeric_limits<double>::infinity();
-  Eigen::ArrayXd previousFillFraction;
-  // How Couette faces take the fill fraction (FillFractionFlux above), default Upwind.
-  FillFractionFlux fillFractionFlux = FillFractionFlux::Upwind;
-  // Optional second history point for a second-order step: the fill fraction one step
-  // earlier (theta_{n-1}, same size) and that step's length h_prev [s] (> 0). With both, the
-  // fill fraction's time derivative in the storage term is variable-step BDF2,
+  //
+  // Storage term. With history.last alone the fill fraction's time derivative is backward
+  // Euler, (theta - theta_n)/h; with history.earlier (theta_{n-1}) and earlierStep_s = h_prev
+  // it is variable-step BDF2,
   //   dtheta/dt ~ [c0 theta - (1 + w) theta_n + w^2/(1 + w) theta_{n-1}] / h,
-  //   w = h / h_prev, c0 = (1 + 2w)/(1 + w),
-  // instead of backward Euler (theta - theta_n)/h; the storage diagnostics follow the same
-  // formula. Empty / NaN (the default): backward Euler. Use it when the caller's own time
+  //   w = h / h_prev, c0 = (1 + 2w)/(1 + w);
+  // the storage diagnostics follow the same formula. Use BDF2 when the caller's own time
   // integration is second order, so that the film's history does not limit it to first.
-  Eigen::ArrayXd previousFillFraction2;
-  double previousTimeStep_s = std::numeric_limits<double>::quiet_NaN();
-  // Optional, recommended whenever the gap moves: the expected gap hT at the start of the
-  // step, per node [m] (FilmResult::expectedGap_m of the solve that gave previousFillFraction),
-  // and for the BDF2 history the one a step earlier (previousExpectedGap2_m, with
-  // previousFillFraction2). The storage term d(theta hT)/dt is then split as
+  // With the expected gaps of the history points (recommended whenever the gap moves) the
+  // storage term d(theta hT)/dt is split as
   //   theta dhT/dt  +  [hT_n (theta - theta_n)] / h                        (backward Euler)
   //   theta dhT/dt  +  [(1 + w) hT_n (theta - theta_n)
   //                     - w^2/(1 + w) hT_{n-1} (theta - theta_{n-1})] / h   (BDF2)
@@ -191,9 +185,11 @@ struct FilmProblem {
   // step, creates oil, without bound as the closure approaches the gap (theta_{n+1} =
   // theta_n hT / (hT + dhT/dt h)). A BDF2 node whose capacity (1 + w) hT_n - w^2/(1 + w)
   // hT_{n-1} is not at least half of c0 hT_n (a gap that shrank by more than ~2x in one step)
-  // takes the backward-Euler form for that step. Empty (default): hT of this step.
-  Eigen::ArrayXd previousExpectedGap_m;
-  Eigen::ArrayXd previousExpectedGap2_m;
+  // takes the backward-Euler form for that step.
+  double timeStep_s = std::numeric_limits<double>::infinity();
+  FilmHistory history;
+  // How Couette faces take the fill fraction (FillFractionFlux above), default Upwind.
+  FillFractionFlux fillFractionFlux = FillFractionFlux::Upwind;
 
   // Optional squeeze basis: column m is d(gapRate)/d(v_m) per node ([m/s per unit v_m]) for a
   // generalised velocity v_m. The result then holds d(p)/d(v_m) and the derivatives of load and
@@ -314,7 +310,7 @@ struct FilmResult {
 
   Eigen::ArrayXd areaWeights_m2;  // nodal area weights (copy of the grid's), [m^2]
   // Expected gap hT per node, [m] (the nominal gap h without a flow-factor model): the oil
-  // content of a node is theta hT per area. Pass it as FilmProblem::previousExpectedGap_m of
+  // content of a node is theta hT per area. Pass it as FilmProblem::history.last.expectedGap_m of
   // the next transient step.
   Eigen::ArrayXd expectedGap_m;
 

@@ -35,6 +35,7 @@
 #include "pistondyn/plugin/ElementOutput.h"
 #include "pistondyn/plugin/ElementState.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -86,6 +87,21 @@ struct ForceJacobian {
   SimTK::Matrix dfdu;
 };
 
+// Work and time of an element's numerical solvers since its construction (diagnostics for
+// summaries and benchmarks; results never depend on them). Apart from the physics figures an
+// element's role interface (LinerElement.h) gives.
+struct SolverCounters {
+  long filmSolves = 0;          // film solves (an elastic coupling does several per evaluation)
+  long filmFallbacks = 0;       // of them finished by the film solver's reference fallback
+  long derivativeFailures = 0;  // of them that returned no derivatives
+  long evaluations = 0;         // force evaluations that returned
+  // Wall time [s]: gap, film, contact and loads include every film solve (each coupling
+  // iteration, and the evaluations that threw); coupling_s the elastic coupling's own work;
+  // total_s the evaluations that returned.
+  double gap_s = 0.0, film_s = 0.0, contact_s = 0.0, loads_s = 0.0, coupling_s = 0.0,
+         total_s = 0.0;
+};
+
 class ForceElement {
  public:
   virtual ~ForceElement() = default;
@@ -130,6 +146,8 @@ class ForceElement {
   // ---- outputs -----------------------------------------------------------------------
   // Declared once; the model records them when it builds the system.
   virtual ElementOutputs getOutputs() const { return {}; }
+  // The work of the element's solvers so far (SolverCounters), if it counts any.
+  virtual std::optional<SolverCounters> getSolverCounters() const { return std::nullopt; }
 };
 
 }  // namespace pistondyn::plugin

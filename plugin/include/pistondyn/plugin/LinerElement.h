@@ -1,14 +1,16 @@
 #pragma once
 // Role interface of the element that holds the piston in the bore (the ideal liner
 // guide, the lubricated skirt, a user's own liner model). Summaries, convergence checks
-// and plots ask the model's liner element for these figures through this interface, so
-// they work with whatever liner a deck selects and never look up columns by name.
+// and plots ask the model's liner element for these physics figures through this interface,
+// so they work with whatever liner a deck selects and never look up columns by name or cast
+// to a concrete element. Solver counters are not figures: ForceElement::getSolverCounters().
 //
 // Every getter needs a state realized through Stage::Acceleration.
 
 #include <optional>
 
 #include "pistondyn/plugin/ForceElement.h"
+#include "pistondyn/plugin/NodalFields.h"
 
 namespace pistondyn::plugin {
 
@@ -44,13 +46,34 @@ class LinerElement : public ForceElement {
   }
   // Radial clearance between skirt and liner at operating temperature [m].
   virtual std::optional<double> getHotRunningClearance_m() const { return std::nullopt; }
-  // Film solves done by the element so far, how many of them needed the film solver's
-  // fallback to the reference solver, and how many returned no squeeze derivatives (their
-  // linear solve failed; FilmResult::derivativesFailed) (diagnostics; counted over the
-  // element's life).
-  virtual std::optional<long> getFilmSolveCount() const { return std::nullopt; }
-  virtual std::optional<long> getFilmFallbackCount() const { return std::nullopt; }
-  virtual std::optional<long> getFilmDerivativeFailureCount() const { return std::nullopt; }
+  // The part of getFrictionWork_J dissipated by asperity (boundary) friction [J], if the
+  // element integrates it.
+  virtual std::optional<double> getAsperityFrictionWork_J(const SimTK::State& /*s*/) const {
+    return std::nullopt;
+  }
+  // Nodal fields over the liner's contact regions (NodalFields.h), for field dumps and maps;
+  // null for a liner without them.
+  virtual const NodalFieldSource* getNodalFields() const { return nullptr; }
 };
+
+// The outputs the summary, the figures and the report know, computed from the liner role's
+// getters (and the crank train's kinematics): a liner declares in its getOutputs() those it
+// provides, so that every liner, built in or a user's, gets the same columns and figures for
+// the same figures. The optional getters of a declared output must have values.
+enum class LinerOutput {
+  SideForce,                // side_force [N]
+  LateralAtSkirtTop,        // u_lat_skirt_top [um] (kinematic: lateral displacement and tilt)
+  LateralAtSkirtBottom,     // u_lat_skirt_bottom [um]
+  FrictionForce,            // friction_force [N]
+  FrictionPower,            // friction_power [W]
+  FrictionWork,             // friction_work [J]
+  MinFilmThrust,            // min_film_thickness_thrust [um]
+  MinFilmAntiThrust,        // min_film_thickness_antithrust [um]
+  MinGapOverSigmaThrust,    // min_h_over_sigma_thrust [1]
+  MinGapOverSigmaAntiThrust,  // min_h_over_sigma_antithrust [1]
+};
+// The output `which` of `liner` (which must outlive it) in a model of `crankTrain`.
+ElementOutput makeLinerOutput(LinerOutput which, const LinerElement& liner,
+                              const mbd::CrankTrain& crankTrain);
 
 }  // namespace pistondyn::plugin

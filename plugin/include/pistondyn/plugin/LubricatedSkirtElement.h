@@ -55,9 +55,10 @@
 #include "pistondyn/mbd_models/CylinderPressureCurve.h"
 #include "pistondyn/plugin/ElementCache.h"
 #include "pistondyn/plugin/LinerElement.h"
+#include "pistondyn/plugin/PistonPose.h"
 #include "pistondyn/skirt/ElasticCoupling.h"
 #include "pistondyn/skirt/GapAssembly.h"
-#include "pistondyn/skirt/SkirtSideLubrication.h"
+#include "pistondyn/skirt/SkirtSideSolver.h"
 
 namespace pistondyn::plugin {
 
@@ -113,11 +114,6 @@ struct ElasticSkirtParameters {
   // Default on, as the deck's liner.elastic_skirt.squeeze_rate: the modal scheme needs the
   // rate's exact squeeze derivatives to carry a cycle.
   bool squeezeRate = true;
-  // Modal scheme: the film's exact static pressure-gap derivative of each mode shape
-  // (lubrication::FilmProblem::gapBasis) in the coupling's Jacobian instead of the local
-  // estimate 3p/h (skirt::localPressureStiffness); the asperities keep their own slope.
-  // Default on, as the deck's liner.elastic_skirt.exact_static_derivative.
-  bool exactStaticDerivative = true;
 };
 
 struct LubricatedSkirtParameters {
@@ -160,15 +156,8 @@ struct LubricatedSkirtParameters {
 
 // The per-state results the element caches (small: no nodal fields).
 struct LubricatedSkirtResults {
-  struct Side {
-    skirt::PistonLoads hydrodynamic, asperity;  // piston frame, about the piston origin
-    double hydrodynamicNormalForce_N = 0, asperityNormalForce_N = 0;
-    double hydrodynamicFrictionAxial_N = 0, asperityFrictionAxial_N = 0;
-    double frictionPower_W = 0;
-    double minFilmThickness_m = 0, minGapOverSigma = 0;
-    double hydrodynamicShare = 0, mixedShare = 0, boundaryShare = 0, wettedShare = 0;
-    double wearRate_m3ps = 0;
-    double filmOilVolume_m3 = 0;
+  // A side's figures (skirt::SkirtSideFigures) and what its solve did.
+  struct Side : skirt::SkirtSideFigures {
     int filmIterations = 0;
     bool filmUsedFallback = false;
     // Elastic skirt only: film evaluations of the coupling and the largest elastic gap term
@@ -177,6 +166,8 @@ struct LubricatedSkirtResults {
     double maxElasticDeformation_m = 0;
   };
   std::array<Side, 2> sides;                                    // [0] thrust, [1] anti-thrust
+  Eigen::Vector3d skirtForce_N = Eigen::Vector3d::Zero();      // both sides, piston frame
+  Eigen::Vector3d skirtMoment_Nm = Eigen::Vector3d::Zero();    // both sides, piston frame
   Eigen::Vector3d forceOnPiston_N = Eigen::Vector3d::Zero();    // ground, at the origin
   Eigen::Vector3d momentOnPiston_Nm = Eigen::Vector3d::Zero();  // ground, about the origin
   Eigen::Matrix3d dQ_dPose = Eigen::Matrix3d::Zero();           // PistonPose.h generalised forces
@@ -190,7 +181,7 @@ struct LubricatedSkirtResults {
   double retainerForce_N = 0;  // tertiary: force of the pin retainer on the piston (+z)
 };
 
-class LubricatedSkirtElement final : public LinerElement {
+class LubricatedSkirtElement final : public LinerElement, public NodalFieldSource {
  public:
   static constexpr double kMinSlapEnergy_J = 1e-6;
 
@@ -221,36 +212,36 @@ class LubricatedSkirtElement final : public LinerElement {
   std::optional<double> getMinGapOverSigma(const SimTK::State& s, SkirtSide side) const override;
   std::optional<double> getLastSlapEnergy_J(const SimTK::State& s) const override;
   std::optional<double> getHotRunningClearance_m() const override;
-  // Time spent in the element's phases since construction [s], both sides (diagnostics for
-  // benchmarks; the counters are mutable workspace and never affect results). gap, film,
-  // contact and loads include every film solve (each elastic-coupling iteration, and the
-  // evaluations that threw); total_s and evaluations count the evaluations that returned.
-  // coupling_s: the elastic coupling's own work between its film evaluations (mapping the
-  // pressure onto the structure, the modal Jacobian and steps) for the solves that returned.
-  struct Timings {
-    double gap_s = 0.0, film_s = 0.0, contact_s = 0.0, loads_s = 0.0, coupling_s = 0.0,
-           total_s = 0.0;
-    long evaluations = 0;
-  };
-  const Timings& getTimings() const { return timings_; }
-  std::optional<long> getFilmSolveCount() const override { return filmSolves_; }
-  std::optional<long> getFilmFallbackCount() const override { return filmFallbacks_; }
-  std::optional<long> getFilmDerivativeFailureCount() const override {
-    return filmDerivativeFailures_;
+  std::optional<double> getAsperityFrictionWork_J(const SimTK::State& s) const override {
+    return integrals_.getValue(s, kAsperityFrictionWork);
   }
+  // Its nodal fields (NodalFieldSource below): the gap with its seven terms, the film gap,
+  // h/sigma, film pressure, fill fraction and asperity pressure on both sides.
+  const NodalFieldSource* getNodalFields() const override { return this; }
+  // Film solves, fallbacks, derivative failures and the time of the phases of both sides.
+  std::optional<SolverCounters> getSolverCounters() const override { return counters_; }
+
+  // ---- NodalFieldSource -------------------------------------------------------------
+  std::vector<NodalFieldRegion> getNodalFieldRegions() const override;
+  std::vector<NodalFieldDeclaration> getNodalFieldDeclarations() const override;
+  void calcNodalFields(const SimTK::State& s, int region, Eigen::MatrixXd& values) const override;
 
   // ---- for tests, dumps and studies -------------------------------------------------
   const LubricatedSkirtParameters& getParameters() const { return parameters_; }
   const LubricatedSkirtResults& getResults(const SimTK::State& s) const;
   const skirt::GapAssembly& getGapAssembly(SkirtSide side) const;
+  // A side's Simbody-free solver (its grid, gap assembly, last fields, elastic coupling).
+  const skirt::SkirtSideSolver& getSideSolver(SkirtSide side) const;
   double getViscosity_Pas() const { return viscosity_Pas_; }
   // Gap fields and film/contact fields of the last evaluation (see the top).
   const skirt::GapFields& getLastGapFields(SkirtSide side) const;
   const skirt::SkirtSideResults& getLastSideResults(SkirtSide side) const;
   double getWearVolume_m3(const SimTK::State& s, SkirtSide side) const;
   // The friction work's split since the start of the run [J] (continuous states).
-  double getHydrodynamicFrictionWork_J(const SimTK::State& s) const { return work_.getValue(s, 1); }
-  double getAsperityFrictionWork_J(const SimTK::State& s) const { return work_.getValue(s, 2); }
+  double getHydrodynamicFrictionWork_J(const SimTK::State& s) const {
+    return integrals_.getValue(s, kHydrodynamicFrictionWork);
+  }
+
   long getSlapEventCount(const SimTK::State& s) const;
 
  private:
@@ -260,46 +251,45 @@ class LubricatedSkirtElement final : public LinerElement {
     double lastEvent_J = 0.0;  // impact energy of the last completed event
     long events = 0;           // completed events
   };
-  struct Workspace;  // per-side solvers, gap fields, results (mutable)
+  struct Workspace;  // per-side solvers and their last solutions (mutable)
+  // The element's continuous states (integrals over the run).
+  enum Integral : int {
+    kFrictionWork,               // [J]
+    kHydrodynamicFrictionWork,   // [J]
+    kAsperityFrictionWork,       // [J]
+    kWearVolumeThrust,           // Archard wear volume [m^3]
+    kWearVolumeAntiThrust,       // [m^3]
+    kIntegralCount
+  };
 
+  // One evaluation: read the State, solve both sides, sum, install the histories, add the pin
+  // retainer and turn the loads into ground, track slaps.
   void calcResults(const SimTK::State& s, LubricatedSkirtResults& r) const;
+  // Both sides (in parallel with parallelSides), their counters and clocks summed; rethrows a
+  // side's error with the crank angle.
+  void solveSides(const SimTK::State& s, const skirt::SkirtSideMotion& motion,
+                  double crankAngle_deg, double supplyFilm_m) const;
+  // The sides' loads, derivatives and figures into r (thrust first).
+  void sumSides(LubricatedSkirtResults& r) const;
+  // Each side's history this evaluation leads to, installed if its step is accepted.
+  void installHistories(const SimTK::State& s) const;
+  // The pin retainer (tertiary motion) and the loads in ground.
+  void addRetainerAndRotate(const SimTK::State& s, const PistonPose& pose,
+                            LubricatedSkirtResults& r) const;
+  // The secondary kinetic energy and the slap tracker's update.
+  void trackSlap(const SimTK::State& s, const PistonPose& pose, LubricatedSkirtResults& r) const;
 
   LubricatedSkirtParameters parameters_;
   const mbd::CrankTrain* crankTrain_ = nullptr;  // non-owning; the model owns both
   double viscosity_Pas_ = 0.0;
   std::unique_ptr<Workspace> workspace_;
-  mutable long filmSolves_ = 0, filmFallbacks_ = 0, filmDerivativeFailures_ = 0;
   mutable bool jacobianWanted_ = true;  // a request of the stepper (setForceJacobianWanted)
-  mutable Timings timings_;
+  mutable SolverCounters counters_;      // since construction (getSolverCounters)
   ElementCache<LubricatedSkirtResults> cache_;
-  ElementZ work_;  // [0] friction work, [1] hydrodynamic, [2] asperity, [3..4] wear volume
-  // The mass-conserving film's history per side: the fill fraction at the last two accepted
-  // steps and the step between them, so that the film's time derivative is second order
-  // (BDF2, when fillFractionHistoryOrder is 2) like LinearlyImplicitStepper's.
-  // With each fill fraction the film's expected gap of the same step, so that the film keeps
-  // the oil content theta hT of cavitated nodes whose gap moves (FilmProblem.h).
-  struct FillHistory {
-    Eigen::ArrayXd current;       // theta_n (empty: full film, the initial state)
-    Eigen::ArrayXd currentGap;    // hT_n [m] (empty with current)
-    Eigen::ArrayXd previous;      // theta_{n-1} (empty until two steps are accepted)
-    Eigen::ArrayXd previousGap;   // hT_{n-1} [m]
-    double previousStep_s = 0.0;  // t_n - t_{n-1} [s]
-    // Elastic skirt: the converged elastic gap term at t_n [m] (empty: none yet), for the rate
-    // (h_el - h_el,n) / (t - t_n) in the film's squeeze term (ElasticSkirtParameters).
-    Eigen::ArrayXd elastic_m;
-    // ... and the structural displacement it came from [m] (empty: none yet), for the start of
-    // the next step's coupling. Not the last converged solve, which may belong to a rejected
-    // trial of the stepper: with the rate implicit over a short step the solution is close to
-    // the accepted deformation and far from a trial's (1 um over 1e-8 s is a 100 m/s rate).
-    Eigen::VectorXd elasticStructural_m;
-    // Its backward-Euler rate over the step that led to it [m/s] (empty: none yet). The next
-    // coupling starts from elasticStructural_m + rate * dt: there the implicit elastic rate is
-    // the last step's, so for a short step the start is close to the solution. From the
-    // accepted deformation alone the rate would jump to 0, and where that rate opened the gap
-    // into cavitation the film's response is too far from linear for Newton.
-    Eigen::VectorXd elasticStructuralRate_mps;
-  };
-  ElementAutoUpdateVariable<FillHistory> fillThrust_, fillAntiThrust_;
+  ElementZ integrals_;  // indexed by Integral
+  // Each side's history (skirt::SkirtSideSolver.h: the film's fill fraction at the last
+  // accepted steps, the elastic skirt's accepted deformation and rate), [0] thrust.
+  std::array<ElementAutoUpdateVariable<skirt::SkirtSideHistory>, 2> history_;
   ElementAutoUpdateVariable<SlapTracker> slap_;
 };
 

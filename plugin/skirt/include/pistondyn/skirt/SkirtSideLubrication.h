@@ -110,6 +110,25 @@ struct SkirtLubricationParameters {
   double wearCoefficient_m2pN = 0.0;
 };
 
+// Extra derivative bases of one film solve beyond the pose's squeeze columns, e.g. an elastic
+// coupling's modal shapes (ElasticCoupling.h: each scheme says which it needs). Each is
+// optional (nullptr = none) and, when given, has one finite row per node.
+struct FilmSensitivityRequest {
+  // Further squeeze-basis columns: the film returns their pressure derivatives in
+  // film.dPressure_dVelocity after the squeezeColumns pose columns. They enter no load
+  // derivative (dLoads_dPoseRate stays the pose's).
+  const Eigen::MatrixXd* squeezeBasis = nullptr;
+  // Gap-basis columns d(nominal gap)/d(u_g): the film returns dp/du_g on its final active set in
+  // film.dPressure_dGap (lubrication::FilmProblem::gapBasis; the film-gap clamp's slope applied
+  // here, and its curvature times the gap rate added to the columns' rate part: the film's rate
+  // slope(h) dh/dt moves with the gap too).
+  const Eigen::MatrixXd* gapBasis = nullptr;
+  // With gapBasis (same shape): each column also moves the gap rate by this much per unit
+  // (FilmProblem::gapRateBasis), e.g. -Psi_j / dt for a backward-Euler elastic rate:
+  // film.dPressure_dGap is then the total derivative, static and squeeze parts.
+  const Eigen::MatrixXd* gapRateBasis = nullptr;
+};
+
 // What one call needs besides the gap fields.
 struct SkirtSideInputs {
   double slidingVelocityAxial_mps = 0.0;            // U_y, liner relative to skirt [m/s]
@@ -121,55 +140,21 @@ struct SkirtSideInputs {
   // Squeeze derivatives wanted: the first squeezeColumns columns of the gap's squeeze basis
   // (0..3; 2 = lateral and tilt, 3 with the tertiary motion).
   int squeezeColumns = 2;
-  // Optional further squeeze-basis columns (nodeCount rows, finite; nullptr = none), e.g.
-  // the elastic skirt's modal shapes (ElasticCoupling, scheme Modal): the film returns their
-  // pressure derivatives in film.dPressure_dVelocity after the squeezeColumns pose columns.
-  // They enter no load derivative (dLoads_dPoseRate stays the pose's).
-  const Eigen::MatrixXd* extraSqueezeBasis = nullptr;
-  // Optional gap-basis columns (nodeCount rows, finite; nullptr = none): d(nominal gap)/d(u_g)
-  // per node, e.g. the elastic skirt's modal shapes (-Psi_j). The film returns dp/du_g on its
-  // final active set in film.dPressure_dGap (lubrication::FilmProblem::gapBasis; the film-gap
-  // clamp's slope applied here, and its curvature times the gap rate added to the columns'
-  // rate part: the film's rate slope(h) dh/dt moves with the gap too).
-  const Eigen::MatrixXd* extraGapBasis = nullptr;
-  // Optional, with extraGapBasis (same shape): each column also moves the gap rate by this
-  // much per unit (FilmProblem::gapRateBasis), e.g. -Psi_j / dt for a backward-Euler elastic
-  // rate: film.dPressure_dGap is then the total derivative, static and squeeze parts.
-  const Eigen::MatrixXd* extraGapRateBasis = nullptr;
-  // Mass-conserving model only: fill fraction at the start of the step (nodeCount entries;
-  // empty = full film) and the step [s] (> 0; +inf or <= 0 = steady state; NaN is rejected).
-  const Eigen::ArrayXd* previousFillFraction = nullptr;
+  FilmSensitivityRequest extraBases;  // optional further derivative bases
+  // Mass-conserving model only: the film's history (lubrication::FilmHistory.h; nullptr or
+  // empty = a full film at rest), passed to the film solver as it is and checked there, and
+  // the step since its last point [s] (> 0; +inf or <= 0 = steady state; NaN is rejected).
+  const lubrication::FilmHistory* history = nullptr;
   double timeStep_s = std::numeric_limits<double>::infinity();
-  // Optional: the fill fraction one step earlier and that step [s] (> 0), for the film's
-  // second-order (BDF2) history (FilmProblem::previousFillFraction2); nullptr = first order.
-  const Eigen::ArrayXd* previousFillFraction2 = nullptr;
-  double previousTimeStep_s = std::numeric_limits<double>::quiet_NaN();
-  // Optional, with the fill fractions above: the film's expected gap at those two steps
-  // (SkirtSideResults::film.expectedGap_m of the solves that gave them; nodeCount entries).
-  // With them the film keeps the oil content of cavitated nodes whose gap moves within a
-  // step (FilmProblem::previousExpectedGap_m); without them it creates oil where the gap
-  // closes.
-  const Eigen::ArrayXd* previousExpectedGap = nullptr;
-  const Eigen::ArrayXd* previousExpectedGap2 = nullptr;
 };
 
-struct SkirtSideResults {
-  lubrication::FilmResult film;          // pressure, fill fraction, film shear, diagnostics
-  contact_forces::ContactField contact;  // p_c, dp_c/dh, area fraction, h/sigma, regime
-  Eigen::ArrayXd filmGap_m;              // clamped film gap h_f [m]
-  Eigen::ArrayXd boundaryShearAxial_Pa, boundaryShearCircumferential_Pa;  // tau_b [Pa]
-  Eigen::ArrayXd normalPressure_Pa;  // p_film + p_c - edgePressure [Pa] (total traction)
-
+// The figures of one side's evaluation (all SI, finite): its loads and what a designer reads.
+struct SkirtSideFigures {
   PistonLoads hydrodynamicLoads;  // film pressure + film shear (piston frame, about origin)
   PistonLoads asperityLoads;      // contact pressure + boundary shear
   PistonLoads totalLoads;
-  Eigen::Matrix<double, 6, 3> dLoads_dPoseRate = Eigen::Matrix<double, 6, 3>::Zero();
-  Eigen::Matrix<double, 6, 3> dLoads_dPose = Eigen::Matrix<double, 6, 3>::Zero();
-
-  // Figures of the side (all SI, finite):
-  double hydrodynamicNormalForce_N =
-      0.0;  // load the film carries, along the side's normal, >= 0 typical
-  double asperityNormalForce_N = 0.0;        // load the asperities carry, >= 0
+  double hydrodynamicNormalForce_N = 0.0;  // load the film carries, along the side's normal
+  double asperityNormalForce_N = 0.0;      // load the asperities carry, >= 0
   double hydrodynamicFrictionAxial_N = 0.0;  // film shear force on the piston along +y
   double asperityFrictionAxial_N = 0.0;      // boundary friction force on the piston along +y
   // Power the shear dissipates, U . (integral of tau on the skirt) [W], split into the film
@@ -185,12 +170,23 @@ struct SkirtSideResults {
   double wettedShare = 0.0;  // share of the area with oil (fill fraction > 0)
   // Oil held in the film on the side, sum of area x fill fraction x film gap [m^3].
   double filmOilVolume_m3 = 0.0;
+  double wearRate_m3ps = 0.0;         // Archard wear volume rate k/H * integral p_c |U| dA [m^3/s]
+  double maxWearDepthRate_mps = 0.0;  // k/H * max p_c |U| [m/s]
+};
+
+// One evaluation: the figures, the nodal fields and the load derivatives.
+struct SkirtSideResults : SkirtSideFigures {
+  lubrication::FilmResult film;          // pressure, fill fraction, film shear, diagnostics
+  contact_forces::ContactField contact;  // p_c, dp_c/dh, area fraction, h/sigma, regime
+  Eigen::ArrayXd filmGap_m;              // clamped film gap h_f [m]
+  Eigen::ArrayXd boundaryShearAxial_Pa, boundaryShearCircumferential_Pa;  // tau_b [Pa]
+  Eigen::ArrayXd normalPressure_Pa;  // p_film + p_c - edgePressure [Pa] (total traction)
+  Eigen::Matrix<double, 6, 3> dLoads_dPoseRate = Eigen::Matrix<double, 6, 3>::Zero();
+  Eigen::Matrix<double, 6, 3> dLoads_dPose = Eigen::Matrix<double, 6, 3>::Zero();
   // Wall time of this call's phases [s] (diagnostics for benchmarks; results never depend
   // on them): the film solve, the asperity contact with boundary friction, and the loads
   // with their derivatives and the figures.
   double filmTime_s = 0.0, contactTime_s = 0.0, loadsTime_s = 0.0;
-  double wearRate_m3ps = 0.0;         // Archard wear volume rate k/H * integral p_c |U| dA [m^3/s]
-  double maxWearDepthRate_mps = 0.0;  // k/H * max p_c |U| [m/s]
 };
 
 class SkirtSideLubrication {

@@ -33,7 +33,7 @@ enum class PressureFlowGammaModel {
   // ln(gamma); outside [1/9, 9] the end row is used (the paper has no data there). A
   // convex combination of two valid factor values stays positive and continuous in gamma.
   kTableLogGamma,
-  // The continuous-gamma curve fits quoted in DESIGN.md section 4 (C and r as functions
+  // The continuous-gamma curve fits quoted in docs/DESIGN.md §4 (C and r as functions
   // of gamma). They are somebody's least-squares fit of [PC78] Table 1, not the paper's
   // own; they reproduce the table to within about 0.02 in C, but they jump at gamma = 1
   // (just above 1 the fit gives phi ~ 1 + 0.0008 H^-1.5, i.e. practically no roughness
@@ -135,7 +135,7 @@ double calcShearStressFactorFs(double H, double gamma);
 // f0 + (phi(H_lo) - f0) (H/H_lo)^k, C1 at H_lo, -> f0 = kPressureFactorFloor as H -> 0.
 // Gamma handled as calcPressureFlowFactor with kTableLogGamma.
 // SOURCE CAVEAT: only the gamma = 1 row (1.40, 0.66) is confirmed by a second source (R.
-// Boman's EHD code, DESIGN.md). The rows for gamma != 1 are our transcription of the
+// Boman's EHD code, docs/DESIGN.md §4). The rows for gamma != 1 are our transcription of the
 // [PC79] table and are NOT cross-checked (no second source found, searched again for this
 // review); verify them against the paper before relying on anisotropic phi_fp.
 // Inputs:

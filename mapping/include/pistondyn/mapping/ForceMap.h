@@ -1,5 +1,5 @@
 #pragma once
-// Force mapping by analytical integration (thesis eq. 10, DESIGN.md §4): a pressure (or
+// Force mapping by analytical integration (thesis eq. 10, docs/DESIGN.md §4): a pressure (or
 // any force per area) known at the nodes of a source grid, read as its bilinear
 // interpolant p_h, becomes nodal forces on a target grid,
 //

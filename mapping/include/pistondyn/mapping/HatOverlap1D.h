@@ -26,7 +26,7 @@
 
 namespace pistondyn::mapping {
 
-// What a target node collects (DESIGN.md §4, thesis eq. 10 and Fig. 3).
+// What a target node collects (docs/DESIGN.md §4, thesis eq. 10 and Fig. 3).
 enum class LoadRule {
   // F_J = integral p_h * N_J dA with N_J the target's bilinear shape function: the
   // consistent load. Conserves total force AND the first moments (default).

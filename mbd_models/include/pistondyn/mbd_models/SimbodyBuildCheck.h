@@ -4,7 +4,7 @@
 // NDEBUG and several Simbody classes change their memory layout with NDEBUG
 // (SimTKcommon/internal/StateImpl.h); a translation unit that includes Simbody and is
 // compiled with -DNDEBUG crashes inside realizeTopology() of any model with
-// constraints or motions (DESIGN.md section 5). The pistondyn CMake targets add
+// constraints or motions (docs/DESIGN.md §5). The pistondyn CMake targets add
 // -UNDEBUG to every consumer; this guard stops a build that defeats that.
 #if defined(NDEBUG) && !defined(PISTONDYN_SIMBODY_BUILT_WITH_NDEBUG)
 #error \

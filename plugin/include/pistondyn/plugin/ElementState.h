@@ -4,7 +4,7 @@
 // Simbody indices. Allocate them in ForceElement::realizeTopology() through the
 // ElementStateAllocator it receives; read and write them through the handles.
 //
-// Which kind to use (DESIGN.md §2: history lives in the State, never in mutable members):
+// Which kind to use (docs/DESIGN.md §2: history lives in the State, never in mutable members):
 //
 //   ElementZ                  continuous states integrated with the motion, for quantities
 //                             that must be integrated exactly over the cycle (friction

@@ -20,7 +20,7 @@
 //   getOutputs()        typed outputs (ElementOutput.h), read on a state realized through
 //                       Stage::Acceleration
 //
-// Where an element keeps what (DESIGN.md §2). Everything the trajectory depends on is a
+// Where an element keeps what (docs/DESIGN.md §2). Everything the trajectory depends on is a
 // function of the State: q, u, z, discrete variables, time. History (fill fraction,
 // inlet film, wear depth) lives in auto-update discrete variables, integrals in z. Per-
 // state results go into the State's cache (ElementCache). Mutable members are allowed

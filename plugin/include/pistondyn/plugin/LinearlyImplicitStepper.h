@@ -6,7 +6,7 @@
 // Why not an explicit Runge-Kutta method: the squeeze film damps the piston's lateral
 // and tilt motion with a coefficient c ~ 1/h^3; at h = 5 um it reaches ~1e7 N s/m, so
 // the time constant m/c of a 0.3 kg piston is ~3e-8 s and explicit steps collapse to
-// nanoseconds (DESIGN.md §5). Why not Simbody's CPodes BDF: it differentiates the whole
+// nanoseconds (docs/DESIGN.md §5). Why not Simbody's CPodes BDF: it differentiates the whole
 // system numerically, one force evaluation (two film solves) per state variable for
 // every Jacobian, against a film whose solver tolerance makes such differences noisy.
 // The film solver instead returns the exact derivatives of its loads with respect to

@@ -1,5 +1,5 @@
 #pragma once
-// The seven terms of the piston-to-liner gap (thesis §2.1, eq. 1; DESIGN.md §4),
+// The seven terms of the piston-to-liner gap (thesis §2.1, eq. 1; docs/DESIGN.md §4),
 //
 //   h = h_rigid + h_skirtProfile + h_linerShape + h_pistonThermal + h_linerThermal
 //       + h_pistonElastic + h_linerElastic,

@@ -1,5 +1,5 @@
 # FindSuiteSparse — SuiteSparse 5.x as shipped by Debian 12 has no CMake config
-# (DESIGN.md §5). Headers live under <prefix>/include/suitesparse/.
+# (docs/DESIGN.md §5). Headers live under <prefix>/include/suitesparse/.
 #
 # Components: cholmod umfpack klu (and their support libraries, found always:
 # suitesparseconfig amd colamd camd ccolamd btf).

@@ -10,7 +10,7 @@ set(PISTONDYN_WARNINGS -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wov
 # Creates target pistondyn_<module> (alias and exported name pistondyn::<module>)
 # with public include folder <module>/include (headers under include/pistondyn/<module>/),
 # installs it and its headers. USES_SIMBODY adds -UNDEBUG to the target and to its
-# consumers (DESIGN.md §5). INTERFACE makes a header-only library: no sources, its
+# consumers (docs/DESIGN.md §5). INTERFACE makes a header-only library: no sources, its
 # PUBLIC_DEPS become interface dependencies of every consumer.
 function(pistondyn_add_library module)
   cmake_parse_arguments(ARG "USES_SIMBODY;INTERFACE" "" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})

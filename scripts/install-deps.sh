@@ -16,6 +16,7 @@ PACKAGES=(
   chromium                # tests: report.html rendered headless (skipped without it)
   libgtest-dev googletest # test suite
   libbenchmark-dev        # bench/
+  doxygen graphviz        # API reference: cmake --build build --target docs, ctest -L docs
   libopenmpi-dev openmpi-bin  # optional: `mpirun -np K pistondyn sweep` (PISTONDYN_WITH_MPI)
   clang libclang-rt-14-dev llvm  # .ci: sanitizer suite, libFuzzer targets, symbolised stacks
 )

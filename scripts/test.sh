@@ -6,5 +6,6 @@ cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"
-# Labels outside the default run: bench (whole-cycle timings), slow (FE regeneration).
-ctest --test-dir build --output-on-failure -j"$(nproc)" -LE "bench|slow"
+# Labels outside the default run: bench (whole-cycle timings), slow (FE regeneration),
+# docs (the API reference: `ctest --test-dir build -L docs`).
+ctest --test-dir build --output-on-failure -j"$(nproc)" -LE "bench|slow|docs"

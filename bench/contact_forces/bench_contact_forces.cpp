@@ -1,5 +1,5 @@
 // Cost of F_{5/2} (exact tables vs the power-law fit) and of GreenwoodTrippLaw::calcField.
-// Figures and the machine are recorded in BENCHMARKS.md (## contact_forces).
+// Figures and the machine are recorded in BENCHMARKS.md ("Asperity contact").
 
 #include <benchmark/benchmark.h>
 

@@ -36,7 +36,7 @@ constexpr double kPi = 3.14159265358979323846;
 // The product's own Patir & Cheng model (PatirChengFlowFactors.h): surface 1 = the liner
 // (moving at U relative to the skirt), Rq1 = 0.5 um; surface 2 = the skirt carrying the grid,
 // Rq2 = 0.62 um; composite sigma = sqrt(0.5^2 + 0.62^2) = 0.80 um; isotropic roughness
-// (gamma = 1), Gaussian expected gap. Unlike the simple isotropic fits used before (BENCHMARKS.md),
+// (gamma = 1), Gaussian expected gap. Unlike simple isotropic fits of the flow factors alone,
 // it carries the shear-flow term (Vr1 - Vr2 != 0) and the full shear-stress factors.
 std::unique_ptr<FlowFactorModel> makeFlowFactors() {
   PatirChengParameters p;

@@ -1,6 +1,6 @@
 // pistondyn::mapping timings (Google Benchmark). Grids as in issue 5: a 64 x 48 contact
 // (film) grid on one skirt side, a 17 x 30 structural grid, a 36 x 400 liner grid.
-// Results and the machine go to BENCHMARKS.md (## mapping).
+// Results and the machine go to BENCHMARKS.md ("Mapping").
 
 #include <benchmark/benchmark.h>
 

@@ -11,9 +11,9 @@
 //         ehd_flow_factors.c: gamma = 1 rows of Phi_fs (11.10, 2.31, 2.38, 0.11) and of
 //         phi_fp (1.40, 0.66); phi_f closed form with ln(300 (z + 1)), i.e. eps* = 1/300;
 //         and the continuous-gamma fits C(gamma), r(gamma) of the pressure flow factor
-//         that DESIGN.md section 4 quotes (plus a fit of A2: 1.0766 - 0.37758 ln gamma,
+//         that docs/DESIGN.md §4 quotes (plus a fit of A2: 1.0766 - 0.37758 ln gamma,
 //         within 0.05 of the tabulated A2).
-//   [DN]  DESIGN.md section 4: gamma = 1 rows of phi_x, Phi_s, Phi_fs, phi_fp.
+//   [DN]  docs/DESIGN.md §4: gamma = 1 rows of phi_x, Phi_s, Phi_fs, phi_fp.
 // All three agree digit for digit wherever they overlap. The phi_fp rows for gamma != 1
 // could NOT be cross-checked: no second source was found (searched again during the
 // module review: public code, docs and pages; only the gamma = 1 row turns up, in the two
@@ -104,7 +104,7 @@ constexpr double kShearStressFsCutoffH = 7.0;
 // Departure from [PC79] (which cuts Phi_fs to 0 at H = 7, a jump of 0.004 to 0.023, i.e.
 // up to 2.2 % of phi_f ~ 1.02 there): the fit is multiplied by the C1 step
 // S(x) = 1 - 3 x^2 + 2 x^3, x = (H - 6.5) / 0.5, over [6.5, 7], so Phi_fs and its slope
-// are continuous (no discontinuity for the integrator; DESIGN.md policy).
+// are continuous (no discontinuity for the integrator; docs/DESIGN.md §4).
 constexpr double kShearStressFsTaperStartH = 6.5;
 
 // [PC79] Poiseuille shear-stress factor: 1 - D exp(-s H), H > 0.5.
@@ -249,11 +249,11 @@ double shearStressFpRow(int row, double H) {
 }
 
 double pressureFlowDesignNoteFit(double H, double gamma) {
-  // DESIGN.md section 4 / [RB]: gamma <= 1: C = 0.89679 - 0.26591 ln gamma,
+  // docs/DESIGN.md §4 / [RB]: gamma <= 1: C = 0.89679 - 0.26591 ln gamma,
   // r = 0.43006 - 0.10828 gamma + 0.23821 gamma^2, phi = 1 - C exp(-r H);
   // gamma > 1: C = -0.10667 + 0.1075 gamma, phi = 1 + C H^-1.5.
   // Note: [RB] applies the power branch already at gamma = 1 (its test is gamma < 1),
-  // which would give phi ~ 1 for isotropic roughness; DESIGN.md states gamma = 1 as
+  // which would give phi ~ 1 for isotropic roughness; docs/DESIGN.md states gamma = 1 as
   // 1 - 0.90 exp(-0.56 H), so gamma = 1 takes the exponential branch here.
   constexpr double kHmin = 0.5;
   if (gamma <= 1.0) {

@@ -25,7 +25,7 @@ double shearFlowRow(int row, double H);
 double shearStressFsRow(int row, double H);
 double shearStressFpRow(int row, double H);
 
-// The DESIGN.md continuous-gamma fit of the pressure flow factor (any gamma > 0).
+// The docs/DESIGN.md continuous-gamma fit of the pressure flow factor (any gamma > 0).
 double pressureFlowDesignNoteFit(double H, double gamma);
 
 // Blend of one row function over a bracket.

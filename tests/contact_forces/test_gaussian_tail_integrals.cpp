@@ -181,7 +181,7 @@ TEST(GaussianTail, FitErrorsAtIssuePoints) {
                          [lambda](const Row& r) { return r.lambda == lambda; });
   };
   // Power law 4.4068e-5 (4 − λ)^6.804: −10.8 % at 0, −9.2 % at 2, −74 % (×3.9) at 3,
-  // −98 % at 3.5 (DESIGN.md §4: "~10 % at λ = 0 and ×4 at λ = 3").
+  // −98 % at 3.5 (docs/DESIGN.md §4: "~10 % at λ = 0 and ×4 at λ = 3").
   EXPECT_NEAR(at(0.0).powerF52, -0.108, 0.001);
   EXPECT_NEAR(at(2.0).powerF52, -0.092, 0.001);
   EXPECT_NEAR(at(3.0).powerF52, -0.742, 0.001);

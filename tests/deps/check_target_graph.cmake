@@ -1,4 +1,4 @@
-# The dependency picture of DESIGN.md section 2, checked on CMake's own target graph:
+# The dependency picture of docs/DESIGN.md §2, checked on CMake's own target graph:
 #   app (pistondyn_exe) -> io -> plugin -> mbd_models + the numerics
 # and the numerics (mapping, contact_forces, lubrication, and the Simbody-free gap terms
 # plugin/skirt) link no Simbody and nothing of mbd_models, plugin, io or app, not even

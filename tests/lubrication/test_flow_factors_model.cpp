@@ -95,7 +95,7 @@ TEST(PatirChengFlowFactors, PerSurfaceAndCompositePeklenik) {
 }
 
 // [PC78]: phi_y(H, gamma) = phi_x(H, 1/gamma), for the table interpolation and for the
-// DESIGN.md fit, at tabulated and intermediate gamma.
+// docs/DESIGN.md fit, at tabulated and intermediate gamma.
 TEST(PatirChengFlowFactors, CrossFactorIsSlidingFactorOfInverseGamma) {
   for (const auto model :
        {pc::PressureFlowGammaModel::kTableLogGamma, pc::PressureFlowGammaModel::kDesignNoteFit}) {

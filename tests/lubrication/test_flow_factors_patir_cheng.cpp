@@ -5,7 +5,7 @@
 //        Phi_fs and phi_fp, closed form of phi_f.
 // The constants below are the papers' printed constants as reproduced by independent
 // secondary sources (foam-extend flowFactorsPatirCheng.C; R. Boman's EHD code for the
-// gamma = 1 rows; DESIGN.md section 4), typed here separately from the library's
+// gamma = 1 rows; docs/DESIGN.md §4), typed here separately from the library's
 // tables so a transcription slip in either shows. We had no access to numeric values
 // read off the papers' figures, so the comparison is against the fits evaluated with the
 // printed constants; phi_f is in addition checked against its defining integral.
@@ -333,7 +333,7 @@ TEST(PatirChengFactors, GammaInterpolationIsLinearInLogGamma) {
   EXPECT_DOUBLE_EQ(pc::calcShearFlowFactor(2.0, 0.01), pc::calcShearFlowFactor(2.0, 1.0 / 9.0));
 }
 
-// The DESIGN.md continuous-gamma fit is a fit of [PC78] Table 1: at the tabulated gamma it
+// The docs/DESIGN.md continuous-gamma fit is a fit of [PC78] Table 1: at the tabulated gamma it
 // stays within 0.007 of the table for gamma <= 1 and within 0.06 for gamma > 1 (its C is
 // linear in gamma with residuals up to 0.018, times H^-1.5 <= 2.83 at H = 0.5).
 TEST(PatirChengFactors, DesignNoteFitReproducesTable1) {
@@ -403,7 +403,7 @@ TEST(PatirChengFactors, LowHTreatmentIsPositiveContinuousMonotone) {
 // the fit is 0.02), value AND slope must be continuous (the integrator and the film's
 // Newton iterations see the factor and, through the conductance, its slope). Reference:
 // H_lo and the fit's value and slope there, computed here from the printed constants
-// ([PC78] Table 1, [PC79] phi_fp table, DESIGN.md fit). Value: within 1e-12 of the fit at
+// ([PC78] Table 1, [PC79] phi_fp table, docs/DESIGN.md fit). Value: within 1e-12 of the fit at
 // H_lo just below and above it (a jump of 0.005 fails by 9 orders of magnitude). Slope:
 // one-sided second-order differences (step 1e-5, truncation ~1e-9 of the slope) on each
 // side within 1e-6 of the fit's slope.

@@ -214,7 +214,7 @@ TEST(HermiteSurface, IsC1AcrossThePeriodicSeam) {
 }
 
 // Resolution of a full-circle grid for bore distortion (Fourier orders 0..12 along the
-// circumference, DESIGN.md section 4). Reference: the closed form of the periodic cubic
+// circumference, docs/DESIGN.md §4). Reference: the closed form of the periodic cubic
 // spline's error for one Fourier mode on n uniform nodes, derived by hand, sharing nothing
 // with the library: the spline slopes of e^{ik phi} are m_j = c f_j with
 // c h = 3 i sin(theta) / (2 + cos(theta)), theta = k h = 2 pi k / n, and at a cell

@@ -1,4 +1,4 @@
-// DESIGN.md section 5: Debian's Simbody 3.7 is built without NDEBUG and a translation
+// docs/DESIGN.md §5: Debian's Simbody 3.7 is built without NDEBUG and a translation
 // unit that includes Simbody with NDEBUG crashes in realizeTopology(). These checks fail
 // if any pistondyn code including Simbody is built with NDEBUG. (A separate CTest entry,
 // ndebug_guard_rejects_NDEBUG, shows the header guard stops such a build outright.)

@@ -1,6 +1,7 @@
 #pragma once
-// Bad user input at the edge (deck, table, command line). The message names the file,
-// the line or the key, and what is expected; it may hold several lines, one per problem.
+/// \file
+/// Bad user input at the edge (deck, table, command line). The message names the file,
+/// the line or the key, and what is expected; it may hold several lines, one per problem.
 
 #include <stdexcept>
 #include <string>

@@ -1,6 +1,7 @@
 #pragma once
-// An engine deck read and checked: everything needed to build and run a model, in SI.
-// Deck keys, units, defaults and ranges: DeckKeys.h (`pistondyn keys`, README.md).
+/// \file
+/// An engine deck read and checked: everything needed to build and run a model, in SI.
+/// Deck keys, units, defaults and ranges: DeckKeys.h (`pistondyn keys`, README.md).
 
 #include <memory>
 #include <optional>
@@ -16,44 +17,45 @@
 
 namespace pistondyn::io {
 
+/// An engine deck as loaded and checked: everything a run needs, in SI.
 struct EngineDeck {
-  std::string deckPath;
-  std::vector<std::string> overrides;  // the --set assignments applied, in order
-  mbd::EngineDescription engine;
-  std::string cylinderPressureFile;  // as resolved (relative to the deck's folder)
-  std::shared_ptr<const mbd::CylinderPressureCurve> cylinderPressure;
-  double crankcasePressure_Pa = 101325.0;
-  std::optional<double> statedImep_Pa;     // checked against the table within 0.5 %
-  std::string linerModel = "ideal_guide";  // liner.model, a name in the LinerRegistry
-  LinerElementMaker makeLinerElement;      // from that model's factory
-  std::vector<ResolvedInput> linerInputs;  // what the factory read (liner.*), SI keys
-  // Every key read (defaults included) in reading order, under its deck path with the unit
-  // replaced by the SI one (geometry.bore_mm -> geometry.bore_m): summary.json's inputs.
+  std::string deckPath;                ///< the deck file as given
+  std::vector<std::string> overrides;  ///< the --set assignments applied, in order
+  mbd::EngineDescription engine;       ///< the crank train (geometry, masses, drive)
+  std::string cylinderPressureFile;    ///< as resolved (relative to the deck's folder)
+  std::shared_ptr<const mbd::CylinderPressureCurve> cylinderPressure;  ///< absolute [Pa]
+  double crankcasePressure_Pa = 101325.0;  ///< absolute pressure under the piston [Pa]
+  std::optional<double> statedImep_Pa;     ///< checked against the table within 0.5 %
+  std::string linerModel = "ideal_guide";  ///< liner.model, a name in the LinerRegistry
+  LinerElementMaker makeLinerElement;      ///< from that model's factory
+  std::vector<ResolvedInput> linerInputs;  ///< what the factory read (liner.*), SI keys
+  /// Every key read (defaults included) in reading order, under its deck path with the unit
+  /// replaced by the SI one (geometry.bore_mm -> geometry.bore_m): summary.json's inputs.
   std::vector<ResolvedInput> inputs;
-  // Every key path the readers asked for, sections included (the schema as used; the
-  // key-table tests check it against DeckKeys.h), sorted.
+  /// Every key path the readers asked for, sections included (the schema as used; the
+  /// key-table tests check it against DeckKeys.h), sorted.
   std::vector<std::string> keysRead;
-  // Crank angles [deg, in [0, 720)] of the last cycle at which a run writes the liner's
-  // nodal fields (liner.field_dumps.crank_angles_deg of the lubricated skirt); output rows.
+  /// Crank angles [deg, in [0, 720)] of the last cycle at which a run writes the liner's
+  /// nodal fields (liner.field_dumps.crank_angles_deg of the lubricated skirt); output rows.
   std::vector<double> fieldDumpAngles_deg;
-  plugin::SimulationSettings simulation;
+  plugin::SimulationSettings simulation;  ///< the simulation.* keys
 };
 
-// Reads, overrides and checks a deck; the liner model comes from `registry`. Throws
-// DeckError listing every problem found (file:line: key: message); nothing is simulated
-// or written before this succeeds. The last check builds a trial model (buildModel), so
-// an element's own checks against the engine are bad input too. The liner model decides
-// the crank train's tertiary mobility (LinerDeckContext::tertiaryMotion) and whether the
-// integrator fits it (explicit ones are rejected for a stiff liner, linearly_implicit_bdf2
-// for one held by constraints).
+/// Reads, overrides and checks a deck; the liner model comes from `registry`. Throws
+/// DeckError listing every problem found (file:line: key: message); nothing is simulated
+/// or written before this succeeds. The last check builds a trial model (buildModel), so
+/// an element's own checks against the engine are bad input too. The liner model decides
+/// the crank train's tertiary mobility (LinerDeckContext::tertiaryMotion) and whether the
+/// integrator fits it (explicit ones are rejected for a stiff liner, linearly_implicit_bdf2
+/// for one held by constraints).
 EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::string>& overrides,
                           const LinerRegistry& registry = LinerRegistry::getGlobal());
 
-// The deck's imep from its pressure table [Pa].
+/// The deck's imep from its pressure table [Pa].
 double calcDeckImep_Pa(const EngineDeck& deck);
 
-// Builds the Simbody model with the deck's force elements: the gas force, then the liner
-// element made by the deck's liner model. May be called many times (one model per thread).
+/// Builds the Simbody model with the deck's force elements: the gas force, then the liner
+/// element made by the deck's liner model. May be called many times (one model per thread).
 std::unique_ptr<plugin::PistonAssemblyModel> buildModel(const EngineDeck& deck);
 
 }  // namespace pistondyn::io

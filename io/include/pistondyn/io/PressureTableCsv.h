@@ -1,16 +1,17 @@
 #pragma once
-// Reads a cylinder-pressure table: CSV, '#' comment lines allowed, a header naming the
-// two columns with their units, then one row per crank angle:
-//
-//   # any comment
-//   crank_angle_deg,pressure_bar
-//   0,41.3
-//   0.5,41.9
-//
-// The pressure column may be pressure_Pa, pressure_kPa, pressure_bar or pressure_MPa
-// (absolute). Angles: crank angle from firing TDC, strictly increasing, covering 720
-// deg (see mbd::CylinderPressureCurve). Errors name the file and line; the rows' problems
-// are reported together (up to 20 lines, then how many more).
+/// \file
+/// Reads a cylinder-pressure table: CSV, '#' comment lines allowed, a header naming the
+/// two columns with their units, then one row per crank angle:
+///
+///   # any comment
+///   crank_angle_deg,pressure_bar
+///   0,41.3
+///   0.5,41.9
+///
+/// The pressure column may be pressure_Pa, pressure_kPa, pressure_bar or pressure_MPa
+/// (absolute). Angles: crank angle from firing TDC, strictly increasing, covering 720
+/// deg (see mbd::CylinderPressureCurve). Errors name the file and line; the rows' problems
+/// are reported together (up to 20 lines, then how many more).
 
 #include <string>
 
@@ -18,8 +19,8 @@
 
 namespace pistondyn::io {
 
-// Throws DeckError "<file>:<line>: ..." on any problem. `pressureUnit`, if given, receives
-// the unit the header names ("bar" of pressure_bar).
+/// Throws DeckError "<file>:<line>: ..." on any problem. `pressureUnit`, if given, receives
+/// the unit the header names ("bar" of pressure_bar).
 mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath,
                                                 std::string* pressureUnit = nullptr);
 

@@ -1,29 +1,30 @@
 #pragma once
-// Runs a PistonAssemblyModel over whole 720 deg cycles and records one row per output
-// crank angle: the crank-train columns below, then every element's outputs
-// (ElementOutput.h) in registration order. Rows go to a RowSink as they are computed
-// (a file writer streams them to disk; ResultTableSink keeps them in memory).
-//
-// Crank-train columns (units in the names; crank angle 0 = firing TDC):
-//   time_s, crank_angle_deg (continuous from the start angle), crank_speed_rpm,
-//   piston_y_m (height of the piston axis at pin height above the crank axis),
-//   piston_vy_mps, piston_ay_mps2, u_lat_um (+ thrust), tilt_mrad (+ crown towards
-//   thrust), u_tran_um (+ along pin axis z), conrod_force_N (+ compression),
-//   crank_torque_Nm (rod on crank, + along rotation), drive_torque_Nm (drive on crank,
-//   + along rotation).
-//
-// Rows are taken at the crank angles start + k * step: with a constant-speed crank at
-// the matching times, with a free crank by iterating the time until the crank angle
-// is reached to 1e-12 rad (relative beyond 1 rad: 1e-12 |theta|). crank_angle_deg holds that nominal angle, unwrapped (it
-// keeps growing past 720 deg over several cycles).
-//
-// Periodic steady state (SimulationSettings::untilPeriodic): cycles are run until two
-// consecutive cycles agree - fmep (from the liner element's friction work, LinerElement.h)
-// within periodicFmepTolerance relative, and the lateral displacement and the tilt times
-// the skirt length at every output angle within periodicPoseTolerance_m - or until
-// `cycles` cycles are done; only the last cycle's rows are kept (the sinks are told to
-// discard the earlier ones), and the stats say whether and after how many cycles the run
-// converged.
+/// \file
+/// Runs a PistonAssemblyModel over whole 720 deg cycles and records one row per output
+/// crank angle: the crank-train columns below, then every element's outputs
+/// (ElementOutput.h) in registration order. Rows go to a RowSink as they are computed
+/// (a file writer streams them to disk; ResultTableSink keeps them in memory).
+///
+/// Crank-train columns (units in the names; crank angle 0 = firing TDC):
+///   time_s, crank_angle_deg (continuous from the start angle), crank_speed_rpm,
+///   piston_y_m (height of the piston axis at pin height above the crank axis),
+///   piston_vy_mps, piston_ay_mps2, u_lat_um (+ thrust), tilt_mrad (+ crown towards
+///   thrust), u_tran_um (+ along pin axis z), conrod_force_N (+ compression),
+///   crank_torque_Nm (rod on crank, + along rotation), drive_torque_Nm (drive on crank,
+///   + along rotation).
+///
+/// Rows are taken at the crank angles start + k * step: with a constant-speed crank at
+/// the matching times, with a free crank by iterating the time until the crank angle
+/// is reached to 1e-12 rad (relative beyond 1 rad: 1e-12 |theta|). crank_angle_deg holds that
+/// nominal angle, unwrapped (it keeps growing past 720 deg over several cycles).
+///
+/// Periodic steady state (SimulationSettings::untilPeriodic): cycles are run until two
+/// consecutive cycles agree - fmep (from the liner element's friction work, LinerElement.h)
+/// within periodicFmepTolerance relative, and the lateral displacement and the tilt times
+/// the skirt length at every output angle within periodicPoseTolerance_m - or until
+/// `cycles` cycles are done; only the last cycle's rows are kept (the sinks are told to
+/// discard the earlier ones), and the stats say whether and after how many cycles the run
+/// converged.
 
 #include <functional>
 #include <string>
@@ -34,130 +35,142 @@
 
 namespace pistondyn::plugin {
 
+/// How a CycleSimulation runs: rows, cycles, integrator and its tolerances (each member
+/// states its default).
 struct SimulationSettings {
-  static constexpr int kMaxCycles = 1000;
-  static constexpr double kMinOutputStep_deg = 1e-3;
-  static constexpr double kMaxRows = 1e7;  // rows are kept in memory
+  static constexpr int kMaxCycles = 1000;             ///< largest `cycles`
+  static constexpr double kMinOutputStep_deg = 1e-3;  ///< smallest output step [deg]
+  static constexpr double kMaxRows = 1e7;             ///< rows are kept in memory
 
-  double startAngle_deg = 0.0;  // crank angle of the first row [deg]
-  // The piston's secondary pose at the start (CrankTrain::setPose), at rest relative to the
-  // primary motion: lateral displacement [m], tilt [rad], tertiary displacement [m] (needs
-  // EngineDescription::tertiaryMotion). Default: centred and upright.
+  double startAngle_deg = 0.0;  ///< crank angle of the first row [deg]
+  /// The piston's secondary pose at the start (CrankTrain::setPose), at rest relative to the
+  /// primary motion: lateral displacement [m], tilt [rad], tertiary displacement [m] (needs
+  /// EngineDescription::tertiaryMotion). Default: centred and upright.
   double initialLateral_m = 0.0;
-  double initialTilt_rad = 0.0;
-  double initialTransverse_m = 0.0;
-  int cycles = 1;               // number of 720 deg cycles (the maximum if untilPeriodic), >= 1
-  double outputStep_deg = 1.0;  // output interval [deg], > 0, must divide 720
+  double initialTilt_rad = 0.0;      ///< see initialLateral_m
+  double initialTransverse_m = 0.0;  ///< see initialLateral_m
+  int cycles = 1;               ///< number of 720 deg cycles (the maximum if untilPeriodic), >= 1
+  double outputStep_deg = 1.0;  ///< output interval [deg], > 0, must divide 720
+  /// The time integrator.
   enum class Integrator {
-    RungeKuttaMerson,      // Simbody's, explicit (for the ideal guide, smooth elements)
-    RungeKuttaFeldberg,    // Simbody's, explicit
-    CPodesBDF,             // Simbody's CPodes BDF with Newton iterations (numerical Jacobian)
-    LinearlyImplicitBDF2,  // LinearlyImplicitStepper.h: for the stiff squeeze film
+    RungeKuttaMerson,      ///< Simbody's, explicit (for the ideal guide, smooth elements)
+    RungeKuttaFeldberg,    ///< Simbody's, explicit
+    CPodesBDF,             ///< Simbody's CPodes BDF with Newton iterations (numerical Jacobian)
+    LinearlyImplicitBDF2,  ///< LinearlyImplicitStepper.h: for the stiff squeeze film
   };
-  Integrator integrator = Integrator::RungeKuttaMerson;
-  double accuracy = 1e-9;              // Simbody integrators' relative accuracy [-]
-  double constraintTolerance = 1e-11;  // constraint projection tolerance [-]
-  // LinearlyImplicitBDF2 only: per-step tolerance on the piston pose (lateral, tertiary,
-  // tilt x skirt length) [m], > 0, default 10 nm; the rates get poseTolerance_m per time of
-  // one crank degree.
+  Integrator integrator = Integrator::RungeKuttaMerson;  ///< default RungeKuttaMerson
+  double accuracy = 1e-9;              ///< Simbody integrators' relative accuracy [-]
+  double constraintTolerance = 1e-11;  ///< constraint projection tolerance [-]
+  /// LinearlyImplicitBDF2 only: per-step tolerance on the piston pose (lateral, tertiary,
+  /// tilt x skirt length) [m], > 0, default 10 nm; the rates get poseTolerance_m per time of
+  /// one crank degree.
   double poseTolerance_m = 1e-8;
-  // LinearlyImplicitBDF2: largest step [deg of crank], > 0, default 0.25. The error test
-  // alone let 0.5 deg steps through the flooded example skirt with a 1.4 um lag of the
-  // secondary motion and 4 % on fmep against CPodes (plugin/README.md).
+  /// LinearlyImplicitBDF2: largest step [deg of crank], > 0, default 0.25. The error test
+  /// alone would let 0.5 deg steps through the flooded example skirt, which lag its
+  /// secondary motion by 1.4 um and move fmep by 4 % against CPodes (plugin/README.md).
   double maxStep_deg = 0.25;
-  // LinearlyImplicitBDF2: order of the BDF formula, 2 (default) or 3 (LinearlyImplicitStepper
-  // Options::maxOrder: the third order for the global error of the slow secondary motion).
+  /// LinearlyImplicitBDF2: order of the BDF formula, 2 (default) or 3 (LinearlyImplicitStepper
+  /// Options::maxOrder: the third order for the global error of the slow secondary motion).
   int stepperOrder = 2;
-  // LinearlyImplicitBDF2: steps over which the elements' Jacobian may be kept (Linearly
-  // ImplicitStepperOptions::jacobianReuseSteps), 0 (default: evaluated every time) or more.
+  /// LinearlyImplicitBDF2: steps over which the elements' Jacobian may be kept (Linearly
+  /// ImplicitStepperOptions::jacobianReuseSteps), 0 (default: evaluated every time) or more.
   int jacobianReuseSteps = 0;
-  // Step budget of the whole run (every integrator): a run that needs more steps stops with
-  // an error naming the crank angle reached, never hangs. Default 2e7.
+  /// Step budget of the whole run (every integrator): a run that needs more steps stops with
+  /// an error naming the crank angle reached, never hangs. Default 2e7.
   long maxSteps = 20000000;
 
-  bool untilPeriodic = false;               // run to periodic steady state (see the top)
-  double periodicFmepTolerance = 0.005;     // relative change of fmep between cycles [-]
-  double periodicPoseTolerance_m = 0.2e-6;  // change of the pose at equal crank angles [m]
+  bool untilPeriodic = false;               ///< run to periodic steady state (see the top)
+  double periodicFmepTolerance = 0.005;     ///< relative change of fmep between cycles [-]
+  double periodicPoseTolerance_m = 0.2e-6;  ///< change of the pose at equal crank angles [m]
 
-  // 720 / outputStep_deg, not rounded [-].
+  /// 720 / outputStep_deg, not rounded [-].
   double outputStepsPerCycle() const { return 720.0 / outputStep_deg; }
-  // True when outputStep_deg divides 720 deg into a whole number of steps (to 1e-9).
+  /// True when outputStep_deg divides 720 deg into a whole number of steps (to 1e-9).
   bool outputStepDividesCycle() const;
-  // Output steps per 720 deg cycle, rounded (for settings that pass validate()).
+  /// Output steps per 720 deg cycle, rounded (for settings that pass validate()).
   long stepsPerCycle() const;
 };
 
-// Throws std::invalid_argument naming the member when settings are unusable.
+/// Throws std::invalid_argument naming the member when settings are unusable.
 void validate(const SimulationSettings& settings);
 
-// Where a simulation puts its rows. The simulation calls beginRun() once with the column
-// names, beginCycle() at the first row of every 720 deg cycle, consumeRow() for every
-// row (the state is realized through Stage::Acceleration, so a sink may also evaluate
-// outputs or role interfaces of its own), and endRun() after the last row. In a run to
-// periodic steady state, discardRows() says that every row consumed so far is not part of
-// the result (an earlier cycle), just before beginCycle() of the next cycle, whose first
-// row is the one that closed the discarded cycle. If the run fails, the exception leaves the
-// simulation before endRun(): a file-writing sink then discards what it wrote (all-or-nothing).
+/// Where a simulation puts its rows. The simulation calls beginRun() once with the column
+/// names, beginCycle() at the first row of every 720 deg cycle, consumeRow() for every
+/// row (the state is realized through Stage::Acceleration, so a sink may also evaluate
+/// outputs or role interfaces of its own), and endRun() after the last row. In a run to
+/// periodic steady state, discardRows() says that every row consumed so far is not part of
+/// the result (an earlier cycle), just before beginCycle() of the next cycle, whose first
+/// row is the one that closed the discarded cycle. If the run fails, the exception leaves the
+/// simulation before endRun(): a file-writing sink then discards what it wrote (all-or-nothing).
 class RowSink {
  public:
   virtual ~RowSink() = default;
+  /// Once, before the first row, with the column names.
   virtual void beginRun(const std::vector<std::string>& /*columns*/) {}
-  // cycle = 0, 1, ...; the row of crank angle start + 720 * cycle.
+  /// cycle = 0, 1, ...; the row of crank angle start + 720 * cycle.
   virtual void beginCycle(int /*cycle*/) {}
+  /// Every row: its values in column order, the state realized through Stage::Acceleration.
   virtual void consumeRow(const SimTK::State& state, const std::vector<double>& values) = 0;
-  // Forget the rows consumed so far (pure: every sink must decide what that means).
+  /// Forget the rows consumed so far (pure: every sink must decide what that means).
   virtual void discardRows() = 0;
+  /// Once, after the last row of a run that succeeded.
   virtual void endRun() {}
 };
 
-// Keeps every row in a ResultTable.
+/// Keeps every row in a ResultTable.
 class ResultTableSink final : public RowSink {
  public:
-  void beginRun(const std::vector<std::string>& columns) override;
+  void beginRun(const std::vector<std::string>& columns) override;  ///< starts a new table
+  /// Appends the row.
   void consumeRow(const SimTK::State& state, const std::vector<double>& values) override;
-  void discardRows() override { table_.rows.clear(); }
-  const ResultTable& getTable() const { return table_; }
-  ResultTable releaseTable() { return std::move(table_); }
+  void discardRows() override { table_.rows.clear(); }      ///< clears the rows
+  const ResultTable& getTable() const { return table_; }    ///< the rows so far
+  ResultTable releaseTable() { return std::move(table_); }  ///< moves the table out
 
  private:
   ResultTable table_;
 };
 
+/// What a run did.
 struct SimulationStats {
-  double wallTime_s = 0.0;
-  long integratorSteps = 0;
-  long realizations = 0;       // number of Stage::Dynamics realizations taken by the integrator
-  long rejectedSteps = 0;      // LinearlyImplicitBDF2: steps rejected by the error test
-  long failedEvaluations = 0;  // LinearlyImplicitBDF2: steps retried after an element threw
-  // LinearlyImplicitBDF2: wall time in its force evaluations (realize through Acceleration:
-  // Simbody and the elements) [s]; 0 for Simbody's integrators (not separable there).
+  double wallTime_s = 0.0;     ///< wall time of the run [s]
+  long integratorSteps = 0;    ///< accepted integrator steps
+  long realizations = 0;       ///< number of Stage::Dynamics realizations taken by the integrator
+  long rejectedSteps = 0;      ///< LinearlyImplicitBDF2: steps rejected by the error test
+  long failedEvaluations = 0;  ///< LinearlyImplicitBDF2: steps retried after an element threw
+  /// LinearlyImplicitBDF2: wall time in its force evaluations (realize through Acceleration:
+  /// Simbody and the elements) [s]; 0 for Simbody's integrators (not separable there).
   double realizeTime_s = 0.0;
-  int cyclesRun = 0;           // whole cycles simulated
-  bool converged = false;      // untilPeriodic: the last two cycles agreed
-  int cyclesToConverge = 0;    // untilPeriodic: cycles run when they did (0 if not)
-  std::vector<double> cycleFmep_Pa;  // fmep of every cycle run, if the liner integrates it
+  int cyclesRun = 0;                 ///< whole cycles simulated
+  bool converged = false;            ///< untilPeriodic: the last two cycles agreed
+  int cyclesToConverge = 0;          ///< untilPeriodic: cycles run when they did (0 if not)
+  std::vector<double> cycleFmep_Pa;  ///< fmep of every cycle run, if the liner integrates it
 };
 
+/// Runs a model over whole cycles (the documentation of CycleSimulation.h).
 class CycleSimulation {
  public:
+  /// Validates the settings (throws std::invalid_argument naming the member). The model must
+  /// outlive the simulation.
   CycleSimulation(PistonAssemblyModel& model, SimulationSettings settings);
 
-  // Progress: called after every row with the fraction done in [0, 1].
+  /// Progress: called after every row with the fraction done in [0, 1].
   using Progress = std::function<void(double)>;
-  // Row observer: called at every output row with the state realized through
-  // Stage::Acceleration (custom outputs, checks), before the row is stored.
+  /// Row observer: called at every output row with the state realized through
+  /// Stage::Acceleration (custom outputs, checks), before the row is stored.
   using RowObserver = std::function<void(const SimTK::State&)>;
-  // Runs and keeps every row in memory.
+  /// Runs and keeps every row in memory.
   ResultTable run(const Progress& progress = {}, const RowObserver& observer = {});
-  // Runs and hands every row to each sink, in order.
+  /// Runs and hands every row to each sink, in order.
   void run(const std::vector<RowSink*>& sinks, const Progress& progress = {});
-  const SimulationStats& getStats() const { return stats_; }
+  const SimulationStats& getStats() const { return stats_; }  ///< of the last run
 
-  // All columns of a run of this model: crankTrainColumns() then the elements' outputs.
+  /// All columns of a run of this model: crankTrainColumns() then the elements' outputs.
   std::vector<std::string> getColumns() const;
-  // The crank-train columns listed above, and their values at a state realized
-  // through Stage::Acceleration (also usable outside a run).
+  /// The crank-train columns listed above, and their values at a state realized
+  /// through Stage::Acceleration (also usable outside a run).
   static std::vector<std::string> crankTrainColumns();
+  /// The crank-train columns' values at a state realized through Stage::Acceleration.
   static void calcCrankTrainRow(const mbd::CrankTrain& crankTrain, const SimTK::State& s,
                                 std::vector<double>& values);
 

@@ -1,7 +1,7 @@
 #pragma once
 // The lubricated skirt-liner force element: the piston held in the bore by the oil film and
 // the asperity contact between its skirt and the liner, on a thrust-side and an
-// anti-thrust-side sector of the skirt (DESIGN.md §4, thesis §2).
+// anti-thrust-side sector of the skirt (docs/DESIGN.md §4, thesis §2).
 //
 // At every force evaluation it reads the piston's pose and rates from the State
 // (PistonPose.h), builds the gap and its rate on both sides (skirt::GapAssembly: the seven

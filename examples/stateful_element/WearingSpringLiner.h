@@ -85,12 +85,15 @@ class WearingSpringLiner final : public plugin::LinerElement {
             {"wear_depth", "um", "accepted wear depth of the liner",
              [this](const SimTK::State& s) { return 1e6 * wear_.getValue(s); }},
             {"dissipated_energy", "J", "energy dissipated by the dampers since the start",
-             [this](const SimTK::State& s) { return getDissipatedEnergy_J(s); }}};
+             [this](const SimTK::State& s) { return *getDissipatedEnergy_J(s); }}};
   }
 
   double getWearDepth_m(const SimTK::State& s) const { return wear_.getValue(s); }
   long getAcceptedUpdates(const SimTK::State& s) const { return acceptedUpdates_.getValue(s); }
-  double getDissipatedEnergy_J(const SimTK::State& s) const { return dissipated_.getValue(s, 0); }
+  // The liner role's dissipated energy (LinerElement.h): the dampers' [J].
+  std::optional<double> getDissipatedEnergy_J(const SimTK::State& s) const override {
+    return dissipated_.getValue(s, 0);
+  }
 
  private:
   struct Results {

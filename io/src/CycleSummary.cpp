@@ -69,6 +69,10 @@ void CycleSummarySink::resetCycle() {
   workAtCycleEnd_J_.reset();
   asperityWorkAtCycleStart_J_.reset();
   asperityWorkAtCycleEnd_J_.reset();
+  dissipatedAtCycleStart_J_.reset();
+  dissipatedAtCycleEnd_J_.reset();
+  secondaryAtCycleStart_J_.reset();
+  secondaryAtCycleEnd_J_.reset();
 }
 
 void CycleSummarySink::discardRows() {
@@ -91,9 +95,14 @@ void CycleSummarySink::consumeRow(const SimTK::State& state, const std::vector<d
     (k == 0 ? timeAtCycleStart_s_ : timeAtCycleEnd_s_) = state.getTime();
     if (liner_ != nullptr)
       (k == 0 ? workAtCycleStart_J_ : workAtCycleEnd_J_) = liner_->getFrictionWork_J(state);
-    if (liner_ != nullptr)
+    if (liner_ != nullptr) {
       (k == 0 ? asperityWorkAtCycleStart_J_ : asperityWorkAtCycleEnd_J_) =
           liner_->getAsperityFrictionWork_J(state);
+      (k == 0 ? dissipatedAtCycleStart_J_ : dissipatedAtCycleEnd_J_) =
+          liner_->getDissipatedEnergy_J(state);
+      (k == 0 ? secondaryAtCycleStart_J_ : secondaryAtCycleEnd_J_) =
+          liner_->getSecondaryMotionWork_J(state);
+    }
   }
   // Slap events: a change of the last completed event's energy since the previous row is
   // an event completed in between (the closing row's change belongs to this cycle).
@@ -192,6 +201,10 @@ void CycleSummarySink::endRun() {
     }
     if (asperityWorkAtCycleStart_J_ && asperityWorkAtCycleEnd_J_)
       f.asperityFrictionWork_J = *asperityWorkAtCycleEnd_J_ - *asperityWorkAtCycleStart_J_;
+    if (dissipatedAtCycleStart_J_ && dissipatedAtCycleEnd_J_)
+      f.dissipatedEnergy_J = *dissipatedAtCycleEnd_J_ - *dissipatedAtCycleStart_J_;
+    if (secondaryAtCycleStart_J_ && secondaryAtCycleEnd_J_)
+      f.secondaryMotionWork_J = *secondaryAtCycleEnd_J_ - *secondaryAtCycleStart_J_;
     if (slap_.valid)
       f.slapEnergyMax_J = slap_.max_J;
     f.hotRunningClearance_m = liner_->getHotRunningClearance_m();

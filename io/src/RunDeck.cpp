@@ -105,6 +105,16 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
     if (f.asperityFrictionWork_J && f.frictionWork_J && *f.frictionWork_J > 0.0)
       r["asperity_friction_work_share"] =
           finite("asperity_friction_work_share", *f.asperityFrictionWork_J / *f.frictionWork_J);
+    // The energy balance of the liner over the cycle (LinerElement.h): friction work and the
+    // work taken from the secondary motion against what the films and friction dissipated.
+    optional("dissipated_energy_J", f.dissipatedEnergy_J);
+    optional("secondary_motion_work_J", f.secondaryMotionWork_J);
+    if (f.dissipatedEnergy_J && f.frictionWork_J && f.secondaryMotionWork_J &&
+        *f.dissipatedEnergy_J > 0.0)
+      r["energy_balance_relative_error"] = finite(
+          "energy_balance_relative_error",
+          (*f.frictionWork_J + *f.secondaryMotionWork_J - *f.dissipatedEnergy_J) /
+              *f.dissipatedEnergy_J);
     optional("min_h_over_sigma_thrust", f.minGapOverSigmaThrust);
     optional("min_h_over_sigma_thrust_crank_angle_deg", f.minGapOverSigmaThrustAngle_deg);
     optional("min_h_over_sigma_antithrust", f.minGapOverSigmaAntiThrust);

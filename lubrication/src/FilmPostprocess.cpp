@@ -69,6 +69,24 @@ LoadAndMoments integrateLoad(const FilmGrid& grid, const Eigen::Vector2d& c, int
   return r;
 }
 
+// FilmResult::viscousDissipation_W: the Couette part at the nodes, the Poiseuille part over the
+// faces (each east and north face once) with the system's transmissibilities.
+double calcViscousDissipation_W(const FilmGrid& grid, const FilmProblem& pr, const FilmSystem& s,
+                                const Eigen::ArrayXd& fillFraction) {
+  const Eigen::ArrayXd& A = grid.areaWeights_m2();
+  const double speed2 = pr.slidingVelocity_mps.squaredNorm();
+  double couette = 0.0, poiseuille = 0.0;
+  for (int k = 0; k < s.n; ++k) {
+    couette += A[k] * fillFraction[k] * s.eta[k] * speed2 * s.phiF[k] / pr.gap_m[k];
+    const int e = s.nbE[k], no = s.nbN[k];
+    if (e != k)
+      poiseuille += s.tE[k] * (s.p[k] - s.p[e]) * (s.p[k] - s.p[e]);
+    if (no != k)
+      poiseuille += s.tN[k] * (s.p[k] - s.p[no]) * (s.p[k] - s.p[no]);
+  }
+  return couette + poiseuille;
+}
+
 }  // namespace
 
 void postprocess(const FilmGrid& grid, const FilmProblem& pr, const FilmSystem& s,
@@ -156,6 +174,7 @@ void postprocess(const FilmGrid& grid, const FilmProblem& pr, const FilmSystem& 
   res.minFilmLocation_m = {grid.x_m()[kmin % nx], grid.y_m()[kmin / nx]};
 
   s.fluxDiagnostics(res.boundaryInflow_m3ps, res.boundaryOutflow_m3ps, res.storageRate_m3ps);
+  res.viscousDissipation_W = calcViscousDissipation_W(grid, pr, s, st.fillFraction);
 
   if (dP) {
     // Column by column: Eigen products would evaluate into temporaries (allocations).

@@ -28,10 +28,11 @@ ElementOutput makeLinerOutput(LinerOutput which, const LinerElement& liner,
                        (ct->getLateralDisplacement_m(s) + yBottom * std::sin(ct->getTilt_rad(s)));
               }};
     case LinerOutput::FrictionForce:
-      return {"friction_force", "N", "total skirt friction force on the piston along +y",
+      return {"friction_force", "N", "skirt friction force on the piston along +y (bore axis)",
               [l](S s) { return l->getFrictionForce_N(s); }};
     case LinerOutput::FrictionPower:
-      return {"friction_power", "W", "power dissipated by skirt friction (film and asperities)",
+      return {"friction_power", "W",
+              "power the axial friction force takes from the piston's primary motion",
               [l](S s) { return l->getFrictionPower_W(s); }};
     case LinerOutput::FrictionWork:
       return {"friction_work", "J", "friction work since the start of the run (integrated state)",

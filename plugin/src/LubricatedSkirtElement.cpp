@@ -191,6 +191,7 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
   sumSides(r);
   installHistories(s);
   addRetainerAndRotate(s, pose, r);
+  calcPowers(pose, r);
   trackSlap(s, pose, r);
   counters_.total_s += std::chrono::duration<double>(Clock::now() - start).count();
   ++counters_.evaluations;
@@ -269,7 +270,7 @@ void LubricatedSkirtElement::sumSides(LubricatedSkirtResults& r) const {
   skirt::PistonLoads total;
   Eigen::Matrix<double, 6, 3> dRate = Eigen::Matrix<double, 6, 3>::Zero();
   Eigen::Matrix<double, 6, 3> dPose = Eigen::Matrix<double, 6, 3>::Zero();
-  r.frictionPower_W = r.hydrodynamicFrictionPower_W = r.asperityFrictionPower_W = 0.0;
+  r.dissipatedPower_W = 0.0;
   bool poseDerivatives = true;
   for (int k : {kThrust, kAntiThrust}) {  // thrust first: the sums do not depend on threads
     const skirt::SkirtSideSolver& solver = *workspace_->sides[k];
@@ -288,9 +289,7 @@ void LubricatedSkirtElement::sumSides(LubricatedSkirtResults& r) const {
     total.moment_Nm += out.totalLoads.moment_Nm;
     dRate += out.dLoads_dPoseRate;
     dPose += out.dLoads_dPose;
-    r.frictionPower_W += out.frictionPower_W;
-    r.hydrodynamicFrictionPower_W += out.hydrodynamicFrictionPower_W;
-    r.asperityFrictionPower_W += out.asperityFrictionPower_W;
+    r.dissipatedPower_W += out.dissipatedPower_W;
   }
   r.skirtForce_N = total.force_N;
   r.skirtMoment_Nm = total.moment_Nm;
@@ -332,6 +331,23 @@ void LubricatedSkirtElement::addRetainerAndRotate(const SimTK::State& s, const P
   const SimTK::Vec3 m = R * SimTK::Vec3(mp[0], mp[1], mp[2]);
   r.forceOnPiston_N = Eigen::Vector3d(f[0], f[1], f[2] + r.retainerForce_N);
   r.momentOnPiston_Nm = Eigen::Vector3d(m[0], m[1], m[2]);
+}
+
+void LubricatedSkirtElement::calcPowers(const PistonPose& pose, LubricatedSkirtResults& r) const {
+  // The skirt's forces in the bore frame (the pin retainer's spring is not friction).
+  const Eigen::Vector3d f = r.forceOnPiston_N - Eigen::Vector3d(0.0, 0.0, r.retainerForce_N);
+  const Eigen::Vector3d& m = r.momentOnPiston_Nm;
+  r.frictionForce_N = f[1];
+  r.frictionPower_W = -f[1] * pose.axialVelocity_mps;
+  // Coulomb friction of the asperities along the axis: their exact dissipation there.
+  double asperityAxial_N = 0.0;
+  for (const auto& side : r.sides)
+    asperityAxial_N += side.asperityFrictionAxial_N;
+  r.asperityFrictionPower_W = -asperityAxial_N * pose.axialVelocity_mps;
+  r.hydrodynamicFrictionPower_W = r.frictionPower_W - r.asperityFrictionPower_W;
+  // Secondary motion: the origin's lateral and tertiary velocity, the tilt rate about -z.
+  r.secondaryMotionPower_W = -(f[0] * pose.lateralRate_mps + f[2] * pose.transverseRate_mps -
+                               m[2] * pose.tiltRate_radps);
 }
 
 void LubricatedSkirtElement::trackSlap(const SimTK::State& s, const PistonPose& pose,
@@ -378,6 +394,8 @@ void LubricatedSkirtElement::realizeAcceleration(const SimTK::State& s) const {
   integrals_.setDerivative(s, kAsperityFrictionWork, r.asperityFrictionPower_W);
   integrals_.setDerivative(s, kWearVolumeThrust, r.sides[kThrust].wearRate_m3ps);
   integrals_.setDerivative(s, kWearVolumeAntiThrust, r.sides[kAntiThrust].wearRate_m3ps);
+  integrals_.setDerivative(s, kDissipatedEnergy, r.dissipatedPower_W);
+  integrals_.setDerivative(s, kSecondaryMotionWork, r.secondaryMotionPower_W);
 }
 
 bool LubricatedSkirtElement::addForceJacobian(const SimTK::State& s,
@@ -392,11 +410,7 @@ double LubricatedSkirtElement::getSideForce_N(const SimTK::State& s) const {
 }
 
 double LubricatedSkirtElement::getFrictionForce_N(const SimTK::State& s) const {
-  const LubricatedSkirtResults& r = getResults(s);
-  double f = 0.0;
-  for (const auto& side : r.sides)
-    f += side.hydrodynamicFrictionAxial_N + side.asperityFrictionAxial_N;
-  return f;
+  return getResults(s).frictionForce_N;
 }
 
 double LubricatedSkirtElement::getFrictionPower_W(const SimTK::State& s) const {
@@ -524,10 +538,11 @@ ElementOutputs LubricatedSkirtElement::getOutputs() const {
        [side](S s) { return side(s, kThrust).asperityNormalForce_N; }},
       {"asperity_normal_force_antithrust", "N", "load carried by the asperities, anti-thrust side",
        [side](S s) { return side(s, kAntiThrust).asperityNormalForce_N; }},
-      {"hydrodynamic_friction", "N", "film shear force on the piston along +y (both sides)",
-       [side](S s) {
-         return side(s, kThrust).hydrodynamicFrictionAxial_N +
-                side(s, kAntiThrust).hydrodynamicFrictionAxial_N;
+      {"hydrodynamic_friction", "N",
+       "the film's share of friction_force (shear, pressure on the sloped and tilted skirt)",
+       [this, side](S s) {
+         return getFrictionForce_N(s) - (side(s, kThrust).asperityFrictionAxial_N +
+                                         side(s, kAntiThrust).asperityFrictionAxial_N);
        }},
       {"asperity_friction", "N", "boundary friction force on the piston along +y (both sides)",
        [side](S s) {
@@ -537,6 +552,12 @@ ElementOutputs LubricatedSkirtElement::getOutputs() const {
       role(LinerOutput::FrictionForce),
       role(LinerOutput::FrictionPower),
       role(LinerOutput::FrictionWork),
+      {"dissipated_power", "W",
+       "power dissipated by the films (viscous) and the asperity friction, both sides, >= 0",
+       [this](S s) { return getResults(s).dissipatedPower_W; }},
+      {"secondary_motion_power", "W",
+       "power the skirt forces take from the piston's secondary motion (lateral, tilt, tertiary)",
+       [this](S s) { return getResults(s).secondaryMotionPower_W; }},
       role(LinerOutput::MinFilmThrust),
       role(LinerOutput::MinFilmAntiThrust),
       role(LinerOutput::MinGapOverSigmaThrust),

@@ -101,7 +101,11 @@ TEST(SkirtThesisTrends, PartialFloodingRaisesFmepAndBringsAsperityContact) {
   std::printf("  partially flooded: fmep %.3f kPa, asperity work %.4f of %.4f J, %d cycles%s\n",
               fmep_kPa(b), b.asperityWork_J, b.totalWork_J, b.stats.cyclesRun,
               b.stats.converged ? "" : " (not periodic)");
-  EXPECT_GT(fmep_kPa(b), 1.1 * fmep_kPa(a));  // a clear rise, not noise
+  // A clear rise, not noise: beyond twice the step error (SkirtNumerics.HalvingTheStep...: < 1 %)
+  // and the periodicity tolerance (0.5 %). With the film's energy-consistent loads the flooded
+  // skirt's friction includes its pressure dissipation, which a starved film lacks, so the rise
+  // at this supply is a few percent rather than the shear-only model's ten and more.
+  EXPECT_GT(fmep_kPa(b), 1.025 * fmep_kPa(a));
   // Asperity friction: negligible fully flooded, a real part of the loss when starved.
   EXPECT_LT(a.asperityWork_J, 0.01 * a.totalWork_J);
   EXPECT_GT(b.asperityWork_J, 0.05 * b.totalWork_J);

@@ -150,7 +150,7 @@ TEST(StatefulElement, ContinuousStateClosesTheEnergyBalance) {
   auto total = [&](const SimTK::State& s) {
     system.realize(s, SimTK::Stage::Dynamics);
     return system.calcKineticEnergy(s) + system.calcPotentialEnergy(s) +
-           liner.getDissipatedEnergy_J(s);
+           *liner.getDissipatedEnergy_J(s);
   };
   SimTK::RungeKuttaMersonIntegrator integ(system);
   integ.setAccuracy(1e-10);
@@ -161,7 +161,7 @@ TEST(StatefulElement, ContinuousStateClosesTheEnergyBalance) {
     integ.stepTo(s0.getTime() + k * 1e-3);
     worst = std::max(worst, std::abs(total(integ.getState()) - e0));
   }
-  const double dissipated = liner.getDissipatedEnergy_J(integ.getState());
+  const double dissipated = *liner.getDissipatedEnergy_J(integ.getState());
   std::printf("  dissipated %.4e J, energy-balance defect %.3e J of %.3f J\n", dissipated, worst,
               e0);
   ASSERT_GT(dissipated, 1e-4);

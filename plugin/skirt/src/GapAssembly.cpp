@@ -32,6 +32,13 @@ GapAssembly::GapAssembly(const SkirtSideGrid& grid, const GapAssemblyParameters&
       hot_(calcHotRunningClearance(grid_, parameters)) {
   profile_.calcField(grid_, skirtProfile_);
   pistonThermalGrowth_.calcField(grid_, pistonThermal_);
+  // The fixed part of the skirt surface's slope: its profile and thermal growth (switched on).
+  Eigen::ArrayXd fixedSkirt = Eigen::ArrayXd::Zero(grid_.nodeCount());
+  if (switches_.skirtProfile)
+    fixedSkirt += skirtProfile_;
+  if (switches_.pistonThermal)
+    fixedSkirt += pistonThermal_;
+  grid_.calcAxialDerivative(fixedSkirt, fixedSkirtSlope_);
   requireNonNegativeHotClearance(hot_, grid_);
 }
 
@@ -42,7 +49,7 @@ GapFields GapAssembly::makeFields() const {
        {&f.gap_m, &f.gapRate_mps, &f.rigid_m, &f.skirtProfile_m, &f.linerShape_m,
         &f.pistonThermal_m, &f.linerThermal_m, &f.pistonElastic_m, &f.linerElastic_m,
         &f.rigidRate_mps, &f.linerShapeRate_mps, &f.linerThermalRate_mps, &f.pistonElasticRate_mps,
-        &f.linerElasticRate_mps})
+        &f.linerElasticRate_mps, &f.skirtGapSlope})
     a->setZero(n);
   f.dGap_dPose.setZero(n, 3);
   f.squeezeBasis.setZero(n, 3);
@@ -73,6 +80,7 @@ void GapAssembly::calc(const PistonPose& pose, const PistonPoseRate& rate, doubl
   size("out.linerThermalRate_mps", out.linerThermalRate_mps);
   size("out.pistonElasticRate_mps", out.pistonElasticRate_mps);
   size("out.linerElasticRate_mps", out.linerElasticRate_mps);
+  size("out.skirtGapSlope", out.skirtGapSlope);
   detail::requireNodalMatrix(fn, "out.dGap_dPose", out.dGap_dPose.rows(), out.dGap_dPose.cols(), n);
   detail::requireNodalMatrix(fn, "out.squeezeBasis", out.squeezeBasis.rows(),
                              out.squeezeBasis.cols(), n);
@@ -114,6 +122,10 @@ void GapAssembly::calc(const PistonPose& pose, const PistonPoseRate& rate, doubl
   if (switches_.pistonElastic) {
     out.gap_m += out.pistonElastic_m;
     out.gapRate_mps += out.pistonElasticRate_mps;
+    grid_.calcAxialDerivative(out.pistonElastic_m, out.skirtGapSlope);
+    out.skirtGapSlope += fixedSkirtSlope_;
+  } else {
+    out.skirtGapSlope = fixedSkirtSlope_;
   }
   if (switches_.linerElastic) {
     out.gap_m += out.linerElastic_m;

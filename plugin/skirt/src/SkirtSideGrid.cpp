@@ -1,9 +1,11 @@
 #include "pistondyn/skirt/SkirtSideGrid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "Checks.h"
+#include "OutputChecks.h"
 
 namespace pistondyn::skirt {
 
@@ -194,6 +196,25 @@ PistonLoads SkirtSideGrid::calcLoadsOnPiston(
     detail::fail(fn, "the resultant overflowed (finite inputs too large)");
   }
   return out;
+}
+
+void SkirtSideGrid::calcAxialDerivative(const Eigen::Ref<const Eigen::ArrayXd>& field,
+                                        Eigen::ArrayXd& out) const {
+  detail::requireNodalSize("SkirtSideGrid::calcAxialDerivative", "field", field.size(),
+                           nodeCount());
+  const int nP = nPhi(), n = nY();
+  out.resize(nodeCount());
+  for (int j = 0; j < n; ++j) {
+    // Three nodes j0 < j1 < j2 around j (shifted inwards at the ends) and the derivative of the
+    // quadratic through them at y_j: Lagrange weights' derivatives.
+    const int j0 = std::clamp(j - 1, 0, n - 3), j1 = j0 + 1, j2 = j0 + 2;
+    const double y = y_m_[j], a = y_m_[j0], b = y_m_[j1], c = y_m_[j2];
+    const double w0 = ((y - b) + (y - c)) / ((a - b) * (a - c));
+    const double w1 = ((y - a) + (y - c)) / ((b - a) * (b - c));
+    const double w2 = ((y - a) + (y - b)) / ((c - a) * (c - b));
+    for (int i = 0; i < nP; ++i)
+      out[i + nP * j] = w0 * field[i + nP * j0] + w1 * field[i + nP * j1] + w2 * field[i + nP * j2];
+  }
 }
 
 }  // namespace pistondyn::skirt

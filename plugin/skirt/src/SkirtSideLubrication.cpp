@@ -93,6 +93,10 @@ void validateInputs(const GapFields& gap, const SkirtSideInputs& in, const Skirt
              " side) and at least inputs.squeezeColumns = ", in.squeezeColumns, " columns");
   requireFiniteEntries(gap.gap_m, "gap.gap_m", "m", side);
   requireFiniteEntries(gap.gapRate_mps, "gap.gapRate_mps", "m/s", side);
+  if (gap.skirtGapSlope.size() != 0 && gap.skirtGapSlope.size() != n)
+    badInput("gap.skirtGapSlope has ", gap.skirtGapSlope.size(), " entries, expected ", n,
+             " (nodes of the ", sideName(side), " side) or none");
+  requireFiniteEntries(gap.skirtGapSlope, "gap.skirtGapSlope", "", side);
   requireFiniteEntries(gap.dGap_dPose, 3, "gap.dGap_dPose", side);
   requireFiniteEntries(gap.squeezeBasis, in.squeezeColumns, "gap.squeezeBasis", side);
   const FilmSensitivityRequest& extra = in.extraBases;
@@ -193,7 +197,8 @@ struct SkirtSideLubrication::Impl {
   // The film-gap clamp's slope per node, and its curvature times the nominal gap rate (the
   // rate part of a gap column, below).
   Eigen::ArrayXd clampSlope, rateCurvature;
-  Eigen::ArrayXd pressureColumn, shearColumnX, shearColumnY, zero;
+  Eigen::ArrayXd pressureColumn, shearColumnX, shearColumnY;
+  Eigen::ArrayXd pressureAxial;  // the film pressure's axial traction on the sloped skirt [Pa]
   Eigen::ArrayXd couetteY, couetteX;     // film shear on the skirt (Couette + Poiseuille)
   Eigen::ArrayXXd boundaryX, boundaryY;  // boundary shear as grid-shaped scratch
   // Outward normal of the side's centre line (cos phi_c, sin phi_c) in (x, z).
@@ -287,6 +292,207 @@ struct SkirtSideLubrication::Impl {
     }
   }
 
+  // The film problem of a call: the clamped film gap and its rates, the derivative bases, the
+  // sliding velocity, viscosity, supply and the history.
+  void setFilmProblem(const GapFields& gap, const SkirtSideInputs& in) {
+    lubrication::FilmProblem& p = problem;
+    const int n = grid.nodeCount();
+    for (int k = 0; k < n; ++k) {
+      const lubrication::FlooredGap f = lubrication::calcFlooredGap(gap.gap_m[k], clamp_m);
+      p.gap_m[k] = f.film_m;
+      clampSlope[k] = f.slope;
+      rateCurvature[k] = f.curvature_per_m * gap.gapRate_mps[k];
+    }
+    p.gapRate_mps = gap.gapRate_mps * clampSlope;
+    setBases(gap, in);
+    p.slidingVelocity_mps =
+        Eigen::Vector2d(in.slidingVelocityCircumferential_mps, in.slidingVelocityAxial_mps);
+    p.viscosity_Pas = in.viscosity_Pas;
+    p.boundary.yMin.supplyFilm_m = in.supplyFilm_m;
+    p.boundary.yMax.supplyFilm_m = in.supplyFilm_m;
+    if (p.cavitation == lubrication::CavitationModel::MassConserving) {
+      // The history as it is: the film solver checks it and uses what the step allows.
+      if (in.history != nullptr)
+        p.history = *in.history;
+      else if (!p.history.empty())
+        p.history = lubrication::FilmHistory();
+      p.timeStep_s =
+          in.timeStep_s > 0.0 ? in.timeStep_s : std::numeric_limits<double>::infinity();
+    }
+  }
+
+  // The squeeze, gap and gap-rate bases of the film problem (the pose's squeeze columns and
+  // the extra bases), each row scaled by the film-gap clamp's slope.
+  void setBases(const GapFields& gap, const SkirtSideInputs& in) {
+    lubrication::FilmProblem& p = problem;
+    const int n = grid.nodeCount();
+    const FilmSensitivityRequest& bases = in.extraBases;
+    const Eigen::Index extra = bases.squeezeBasis ? bases.squeezeBasis->cols() : 0;
+    p.squeezeBasis.resize(n, in.squeezeColumns + extra);
+    for (int c = 0; c < in.squeezeColumns; ++c)
+      p.squeezeBasis.col(c) = (gap.squeezeBasis.col(c).array() * clampSlope).matrix();
+    for (Eigen::Index c = 0; c < extra; ++c)
+      p.squeezeBasis.col(in.squeezeColumns + c) =
+          (bases.squeezeBasis->col(c).array() * clampSlope).matrix();
+    scaleRowsInto(bases.gapBasis, clampSlope, p.gapBasis);
+    if (bases.gapBasis) {
+      // The film's rate is slope(h) dh/dt, so a gap column moves it also through the clamp's
+      // curvature: d(rate_f)/du_g = slope d(dh/dt)/du_g + curvature dh/dt dh/du_g. Where the gap
+      // closes fast near the floor this part is as large as the others (the elastic coupling's
+      // Newton steps overshoot by 2-3.5x without it).
+      p.gapRateBasis.resize(n, bases.gapBasis->cols());
+      for (Eigen::Index c = 0; c < bases.gapBasis->cols(); ++c) {
+        p.gapRateBasis.col(c) = (bases.gapBasis->col(c).array() * rateCurvature).matrix();
+        if (bases.gapRateBasis)
+          p.gapRateBasis.col(c) += (bases.gapRateBasis->col(c).array() * clampSlope).matrix();
+      }
+    } else if (p.gapRateBasis.size() > 0) {
+      p.gapRateBasis.resize(0, 0);
+    }
+  }
+
+  // The film solve from the warm start; a solve that does not converge throws (naming the
+  // side) and forgets the warm start.
+  void solveFilm(SkirtSideResults& out) {
+    solver.solve(grid.getFilmGrid(), problem, haveWarmStart ? &warmStart : nullptr, out.film);
+    const lubrication::FilmResult& film = out.film;
+    if (!film.converged) {
+      haveWarmStart = false;  // a failed iterate is a poor start
+      // the caller's clocks and counters still see this solve (out.film says what it did)
+      out.contactTime_s = out.loadsTime_s = 0.0;
+      throw std::runtime_error(common::message(
+          kSolve, ": the ", sideName(grid.getSide()),
+          " side's film solve did not converge (residual ", film.residual, " > tolerance ",
+          solver.getOptions().tolerance, " after ", film.iterations, " iterations",
+          film.usedFallback ? ", reference-solver fallback included" : "", ")"));
+    }
+    warmStart = film.state;
+    haveWarmStart = true;
+    out.filmGap_m = problem.gap_m;
+  }
+
+  // Asperity contact on the nominal gap, boundary friction with the skirt's velocity -U, and
+  // the Gauss-point integrals where the contact is active (integrateContact).
+  void calcContact(const GapFields& gap, SkirtSideResults& out) {
+    const int n = grid.nodeCount();
+    const Eigen::Map<const Eigen::ArrayXXd> nominal(gap.gap_m.data(), grid.nPhi(), grid.nY());
+    contactLaw->calcField(nominal, out.contact);
+    const Eigen::Vector2d skirtVelocity = -problem.slidingVelocity_mps;
+    friction.calcShearStressField(out.contact.pressure_Pa, skirtVelocity, boundaryX, boundaryY);
+    out.boundaryShearCircumferential_Pa = Eigen::Map<const Eigen::ArrayXd>(boundaryX.data(), n);
+    out.boundaryShearAxial_Pa = Eigen::Map<const Eigen::ArrayXd>(boundaryY.data(), n);
+    integrateContact(gap, skirtVelocity, out);
+  }
+
+  // The film pressure's axial traction on the skirt, -(p - p_ref) slope (GapFields::
+  // skirtGapSlope; none where the skirt surface is parallel to the axis or no slope is given).
+  void calcPressureAxialTraction(const GapFields& gap, const Eigen::ArrayXd& pressure_Pa,
+                                 Eigen::ArrayXd& traction_Pa) const {
+    if (gap.skirtGapSlope.size() == 0)
+      traction_Pa.setZero(pressure_Pa.size());
+    else
+      traction_Pa = -pressure_Pa * gap.skirtGapSlope;
+  }
+
+  // Tractions and loads: the film's (pressure, its axial component on the sloped skirt, shear)
+  // and the asperities' (contact pressure and boundary shear, with the Gauss correction).
+  void calcLoads(const GapFields& gap, SkirtSideResults& out) {
+    const int n = grid.nodeCount();
+    const lubrication::FilmResult& film = out.film;
+    const lubrication::SurfaceShear& shear = film.shearOnSurface2;
+    pressureColumn = film.pressure_Pa() - problem.referencePressure_Pa;
+    calcPressureAxialTraction(gap, pressureColumn, pressureAxial);
+    couetteY = shear.couetteY_Pa + shear.poiseuilleY_Pa + pressureAxial;
+    couetteX = shear.couetteX_Pa + shear.poiseuilleX_Pa;
+    out.hydrodynamicLoads = grid.calcLoadsOnPiston(pressureColumn, couetteY, couetteX);
+    const Eigen::Map<const Eigen::ArrayXd> pc(out.contact.pressure_Pa.data(), n);
+    out.asperityLoads =
+        grid.calcLoadsOnPiston(pc, out.boundaryShearAxial_Pa, out.boundaryShearCircumferential_Pa);
+    out.asperityLoads.force_N += contactCorrection.force_N;
+    out.asperityLoads.moment_Nm += contactCorrection.moment_Nm;
+    out.totalLoads.force_N = out.hydrodynamicLoads.force_N + out.asperityLoads.force_N;
+    out.totalLoads.moment_Nm = out.hydrodynamicLoads.moment_Nm + out.asperityLoads.moment_Nm;
+    out.normalPressure_Pa = pressureColumn + pc;
+  }
+
+  // Derivatives: the film's squeeze columns (its pressure with the pressure's axial traction),
+  // the asperity stiffness (contact pressure and the boundary shear it carries, for the fixed
+  // sliding velocity, with the Gauss correction).
+  void calcDerivatives(const GapFields& gap, int squeezeColumns, SkirtSideResults& out) {
+    const int n = grid.nodeCount();
+    out.dLoads_dPoseRate.setZero();
+    out.dLoads_dPose.setZero();
+    for (int c = 0; c < squeezeColumns; ++c) {
+      pressureColumn = out.film.dPressure_dVelocity.col(c).array();
+      calcPressureAxialTraction(gap, pressureColumn, shearColumnY);
+      out.dLoads_dPoseRate.col(c) =
+          stack(grid.calcLoadsOnPiston(pressureColumn, shearColumnY, Eigen::ArrayXd()));
+    }
+    const Eigen::Map<const Eigen::ArrayXd> slope(out.contact.dPressure_dGap_PaPerM.data(), n);
+    for (int c = 0; c < 3; ++c) {
+      pressureColumn = slope * gap.dGap_dPose.col(c).array();
+      shearColumnX = shearPerPressure[0] * pressureColumn;
+      shearColumnY = shearPerPressure[1] * pressureColumn;
+      out.dLoads_dPose.col(c) =
+          stack(grid.calcLoadsOnPiston(pressureColumn, shearColumnY, shearColumnX)) +
+          contactStiffnessCorrection.col(c);
+    }
+  }
+
+  // The side's figures (SkirtSideFigures): normal loads, friction, powers, films, regime shares,
+  // oil, wear.
+  void calcFigures(const GapFields& gap, SkirtSideResults& out) const {
+    const int n = grid.nodeCount();
+    const lubrication::FilmResult& film = out.film;
+    const Eigen::ArrayXd& w = grid.getAreaWeights_m2();
+    const Eigen::Map<const Eigen::ArrayXd> pc(out.contact.pressure_Pa.data(), n);
+    // Normal loads: minus the force component along the side's outward normal (x here; the
+    // z components of the two halves of a side cancel for a centred load).
+    out.hydrodynamicNormalForce_N = -normalX * out.hydrodynamicLoads.force_N[0];
+    out.asperityNormalForce_N = -normalX * out.asperityLoads.force_N[0];
+    out.hydrodynamicFrictionAxial_N = (w * couetteY).sum();
+    out.pressureFrictionAxial_N = (w * pressureAxial).sum();
+    const double contactLoad_N = (w * pc).sum() + contactPressureIntegralCorrection_N;
+    out.asperityFrictionAxial_N = shearPerPressure[1] * contactLoad_N;
+    const double hydroCirc = (w * couetteX).sum();
+    const double asperityCirc = shearPerPressure[0] * contactLoad_N;
+    const Eigen::Vector2d& U = problem.slidingVelocity_mps;
+    out.hydrodynamicFrictionPower_W = U[1] * out.hydrodynamicFrictionAxial_N + U[0] * hydroCirc;
+    out.asperityFrictionPower_W = U[1] * out.asperityFrictionAxial_N + U[0] * asperityCirc;
+    out.frictionPower_W = out.hydrodynamicFrictionPower_W + out.asperityFrictionPower_W;
+    out.filmDissipation_W = film.viscousDissipation_W;
+    out.dissipatedPower_W = out.filmDissipation_W + out.asperityFrictionPower_W;
+
+    Eigen::Index kMin = 0;
+    out.minFilmThickness_m = gap.gap_m.minCoeff(&kMin);
+    out.minFilmPhi_rad = grid.getNodePhi_rad()[kMin];
+    out.minFilmY_m = grid.getNodeY_m()[kMin];
+    out.minGapOverSigma =
+        sigma_m > 0.0 ? out.minFilmThickness_m / sigma_m : std::numeric_limits<double>::max();
+    double hydro = 0.0, mixed = 0.0, boundary = 0.0, wetted = 0.0, maxPc = 0.0;
+    for (int k = 0; k < n; ++k) {
+      const double ratio = out.contact.filmRatio.data()[k];
+      if (ratio > contact_forces::kMixedRegimeUpperFilmRatio)
+        hydro += w[k];
+      else if (ratio > contact_forces::kBoundaryRegimeUpperFilmRatio)
+        mixed += w[k];
+      else
+        boundary += w[k];
+      if (film.fillFraction()[k] > 0.0)
+        wetted += w[k];
+      maxPc = std::max(maxPc, pc[k]);
+    }
+    const double area = w.sum();
+    out.hydrodynamicShare = hydro / area;
+    out.mixedShare = mixed / area;
+    out.boundaryShare = boundary / area;
+    out.wettedShare = wetted / area;
+    out.filmOilVolume_m3 = (w * film.fillFraction() * problem.gap_m).sum();
+    const double speed = U.norm();
+    out.wearRate_m3ps = parameters.wearCoefficient_m2pN * contactLoad_N * speed;
+    out.maxWearDepthRate_mps = parameters.wearCoefficient_m2pN * maxPc * speed;
+  }
+
   Impl(const SkirtSideGrid& g, std::shared_ptr<const lubrication::FlowFactorModel> ff,
        std::shared_ptr<const contact_forces::AsperityContactLaw> law,
        const contact_forces::BoundaryFriction& f, const SkirtLubricationParameters& p)
@@ -347,7 +553,6 @@ struct SkirtSideLubrication::Impl {
     problem.gapFloor_m = p.faceValues == lubrication::FaceValues::LinearGap ? clamp_m : 0.0;
     clampSlope.resize(n);
     rateCurvature.resize(n);
-    zero = Eigen::ArrayXd::Zero(n);
   }
 };
 
@@ -381,174 +586,20 @@ void SkirtSideLubrication::resetWarmStart() {
 void SkirtSideLubrication::solve(const GapFields& gap, const SkirtSideInputs& in,
                                  SkirtSideResults& out) {
   Impl& m = *impl_;
-  const SkirtSideGrid& grid = m.grid;
-  const int n = grid.nodeCount();
-  validateInputs(gap, in, grid);
-
-  // Film gap: the smooth clamp of the nominal gap, and its slope for the rates.
-  lubrication::FilmProblem& p = m.problem;
-  const double hc = m.clamp_m;
-  for (int k = 0; k < n; ++k) {
-    const lubrication::FlooredGap f = lubrication::calcFlooredGap(gap.gap_m[k], hc);
-    p.gap_m[k] = f.film_m;
-    m.clampSlope[k] = f.slope;
-    m.rateCurvature[k] = f.curvature_per_m * gap.gapRate_mps[k];
-  }
-  p.gapRate_mps = gap.gapRate_mps * m.clampSlope;
-  const FilmSensitivityRequest& bases = in.extraBases;
-  const Eigen::Index extra = bases.squeezeBasis ? bases.squeezeBasis->cols() : 0;
-  p.squeezeBasis.resize(n, in.squeezeColumns + extra);
-  for (int c = 0; c < in.squeezeColumns; ++c)
-    p.squeezeBasis.col(c) = (gap.squeezeBasis.col(c).array() * m.clampSlope).matrix();
-  for (Eigen::Index c = 0; c < extra; ++c)
-    p.squeezeBasis.col(in.squeezeColumns + c) =
-        (bases.squeezeBasis->col(c).array() * m.clampSlope).matrix();
-  scaleRowsInto(bases.gapBasis, m.clampSlope, p.gapBasis);
-  if (bases.gapBasis) {
-    // The film's rate is slope(h) dh/dt, so a gap column moves it also through the clamp's
-    // curvature: d(rate_f)/du_g = slope d(dh/dt)/du_g + curvature dh/dt dh/du_g. Where the gap
-    // closes fast near the floor this part is as large as the others (the elastic coupling's
-    // Newton steps overshoot by 2-3.5x without it).
-    p.gapRateBasis.resize(n, bases.gapBasis->cols());
-    for (Eigen::Index c = 0; c < bases.gapBasis->cols(); ++c) {
-      p.gapRateBasis.col(c) = (bases.gapBasis->col(c).array() * m.rateCurvature).matrix();
-      if (bases.gapRateBasis)
-        p.gapRateBasis.col(c) += (bases.gapRateBasis->col(c).array() * m.clampSlope).matrix();
-    }
-  } else if (p.gapRateBasis.size() > 0) {
-    p.gapRateBasis.resize(0, 0);
-  }
-  p.slidingVelocity_mps =
-      Eigen::Vector2d(in.slidingVelocityCircumferential_mps, in.slidingVelocityAxial_mps);
-  p.viscosity_Pas = in.viscosity_Pas;
-  p.boundary.yMin.supplyFilm_m = in.supplyFilm_m;
-  p.boundary.yMax.supplyFilm_m = in.supplyFilm_m;
-  if (p.cavitation == lubrication::CavitationModel::MassConserving) {
-    // The history as it is: the film solver checks it and uses what the step allows.
-    if (in.history != nullptr)
-      p.history = *in.history;
-    else if (!p.history.empty())
-      p.history = lubrication::FilmHistory();
-    p.timeStep_s = in.timeStep_s > 0.0 ? in.timeStep_s : std::numeric_limits<double>::infinity();
-  }
-
+  validateInputs(gap, in, m.grid);
+  m.setFilmProblem(gap, in);
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
-  m.solver.solve(grid.getFilmGrid(), p, m.haveWarmStart ? &m.warmStart : nullptr, out.film);
+  m.solveFilm(out);
   const auto t1 = Clock::now();
-  const lubrication::FilmResult& film = out.film;
-  if (!film.converged) {
-    m.haveWarmStart = false;  // a failed iterate is a poor start
-    // the caller's clocks and counters still see this solve (out.film says what it did)
-    out.filmTime_s = std::chrono::duration<double>(t1 - t0).count();
-    out.contactTime_s = out.loadsTime_s = 0.0;
-    throw std::runtime_error(common::message(
-        kSolve, ": the ", sideName(grid.getSide()),
-        " side's film solve did not converge (residual ", film.residual, " > tolerance ",
-        m.solver.getOptions().tolerance, " after ", film.iterations, " iterations",
-        film.usedFallback ? ", reference-solver fallback included" : "", ")"));
-  }
-  m.warmStart = film.state;
-  m.haveWarmStart = true;
-  out.filmGap_m = p.gap_m;
-
-  // Asperity contact on the nominal gap, boundary friction with the skirt's velocity -U.
-  const Eigen::Map<const Eigen::ArrayXXd> nominal(gap.gap_m.data(), grid.nPhi(), grid.nY());
-  m.contactLaw->calcField(nominal, out.contact);
-  const Eigen::Map<const Eigen::ArrayXd> pc(out.contact.pressure_Pa.data(), n);
-  const Eigen::Vector2d skirtVelocity = -p.slidingVelocity_mps;
-  m.friction.calcShearStressField(out.contact.pressure_Pa, skirtVelocity, m.boundaryX, m.boundaryY);
-  out.boundaryShearCircumferential_Pa = Eigen::Map<const Eigen::ArrayXd>(m.boundaryX.data(), n);
-  out.boundaryShearAxial_Pa = Eigen::Map<const Eigen::ArrayXd>(m.boundaryY.data(), n);
-
-  // Asperity pressure: nodal field (for the fields and the nodal interpolant), and the
-  // integrals of p_c(h) itself at Gauss points where the contact is active (below).
-  m.integrateContact(gap, skirtVelocity, out);
-  const auto t2 = Clock::now();
-
-  // Tractions and loads.
-  const lubrication::SurfaceShear& shear = film.shearOnSurface2;
-  m.couetteY = shear.couetteY_Pa + shear.poiseuilleY_Pa;
-  m.couetteX = shear.couetteX_Pa + shear.poiseuilleX_Pa;
-  m.pressureColumn = film.pressure_Pa() - p.referencePressure_Pa;
-  out.hydrodynamicLoads = grid.calcLoadsOnPiston(m.pressureColumn, m.couetteY, m.couetteX);
-  out.asperityLoads =
-      grid.calcLoadsOnPiston(pc, out.boundaryShearAxial_Pa, out.boundaryShearCircumferential_Pa);
-  out.asperityLoads.force_N += m.contactCorrection.force_N;
-  out.asperityLoads.moment_Nm += m.contactCorrection.moment_Nm;
-  out.totalLoads.force_N = out.hydrodynamicLoads.force_N + out.asperityLoads.force_N;
-  out.totalLoads.moment_Nm = out.hydrodynamicLoads.moment_Nm + out.asperityLoads.moment_Nm;
-  out.normalPressure_Pa = m.pressureColumn + pc;
-
-  // Derivatives: film squeeze (pressure part), asperity stiffness (pressure part).
-  out.dLoads_dPoseRate.setZero();
-  out.dLoads_dPose.setZero();
-  for (int c = 0; c < in.squeezeColumns; ++c) {
-    m.pressureColumn = film.dPressure_dVelocity.col(c).array();
-    out.dLoads_dPoseRate.col(c) = stack(grid.calcLoadsOnPiston(m.pressureColumn));
-  }
-  // Asperity stiffness: the derivative of the asperity loads (contact pressure and the
-  // boundary shear shearPerPressure * p_c it carries) for the fixed sliding velocity.
-  const Eigen::Map<const Eigen::ArrayXd> slope(out.contact.dPressure_dGap_PaPerM.data(), n);
-  for (int c = 0; c < 3; ++c) {
-    m.pressureColumn = slope * gap.dGap_dPose.col(c).array();
-    m.shearColumnX = m.shearPerPressure[0] * m.pressureColumn;
-    m.shearColumnY = m.shearPerPressure[1] * m.pressureColumn;
-    out.dLoads_dPose.col(c) =
-        stack(grid.calcLoadsOnPiston(m.pressureColumn, m.shearColumnY, m.shearColumnX)) +
-        m.contactStiffnessCorrection.col(c);
-  }
-
-  // Figures.
-  const Eigen::ArrayXd& w = grid.getAreaWeights_m2();
-  const double area = w.sum();
-  // Normal loads: minus the force component along the side's outward normal (x here; the
-  // z components of the two halves of a side cancel for a centred load).
-  out.hydrodynamicNormalForce_N = -m.normalX * out.hydrodynamicLoads.force_N[0];
-  out.asperityNormalForce_N = -m.normalX * out.asperityLoads.force_N[0];
-  out.hydrodynamicFrictionAxial_N = (w * m.couetteY).sum();
-  const double contactLoad_N = (w * pc).sum() + m.contactPressureIntegralCorrection_N;
-  out.asperityFrictionAxial_N = m.shearPerPressure[1] * contactLoad_N;
-  const double hydroCirc = (w * m.couetteX).sum();
-  const double asperityCirc = m.shearPerPressure[0] * contactLoad_N;
-  out.hydrodynamicFrictionPower_W = p.slidingVelocity_mps[1] * out.hydrodynamicFrictionAxial_N +
-                                    p.slidingVelocity_mps[0] * hydroCirc;
-  out.asperityFrictionPower_W = p.slidingVelocity_mps[1] * out.asperityFrictionAxial_N +
-                                p.slidingVelocity_mps[0] * asperityCirc;
-  out.frictionPower_W = out.hydrodynamicFrictionPower_W + out.asperityFrictionPower_W;
-
-  Eigen::Index kMin = 0;
-  out.minFilmThickness_m = gap.gap_m.minCoeff(&kMin);
-  out.minFilmPhi_rad = grid.getNodePhi_rad()[kMin];
-  out.minFilmY_m = grid.getNodeY_m()[kMin];
-  out.minGapOverSigma =
-      m.sigma_m > 0.0 ? out.minFilmThickness_m / m.sigma_m : std::numeric_limits<double>::max();
-  double hydro = 0.0, mixed = 0.0, boundary = 0.0, wetted = 0.0, maxPc = 0.0;
-  for (int k = 0; k < n; ++k) {
-    const double ratio = out.contact.filmRatio.data()[k];
-    if (ratio > contact_forces::kMixedRegimeUpperFilmRatio) {
-      hydro += w[k];
-    } else if (ratio > contact_forces::kBoundaryRegimeUpperFilmRatio) {
-      mixed += w[k];
-    } else {
-      boundary += w[k];
-    }
-    if (film.fillFraction()[k] > 0.0)
-      wetted += w[k];
-    maxPc = std::max(maxPc, pc[k]);
-  }
-  out.hydrodynamicShare = hydro / area;
-  out.mixedShare = mixed / area;
-  out.boundaryShare = boundary / area;
-  out.wettedShare = wetted / area;
-  out.filmOilVolume_m3 = (w * film.fillFraction() * p.gap_m).sum();
-  const double speed = p.slidingVelocity_mps.norm();
-  out.wearRate_m3ps = m.parameters.wearCoefficient_m2pN * contactLoad_N * speed;
-  out.maxWearDepthRate_mps = m.parameters.wearCoefficient_m2pN * maxPc * speed;
-  const auto t3 = Clock::now();
   out.filmTime_s = std::chrono::duration<double>(t1 - t0).count();
+  m.calcContact(gap, out);
+  const auto t2 = Clock::now();
+  m.calcLoads(gap, out);
+  m.calcDerivatives(gap, in.squeezeColumns, out);
+  m.calcFigures(gap, out);
   out.contactTime_s = std::chrono::duration<double>(t2 - t1).count();
-  out.loadsTime_s = std::chrono::duration<double>(t3 - t2).count();
+  out.loadsTime_s = std::chrono::duration<double>(Clock::now() - t2).count();
 }
 
 }  // namespace pistondyn::skirt

@@ -54,6 +54,12 @@ struct CycleSummary {
     /// The part of it dissipated by asperity (boundary) friction, from the lubricated
     /// liner's integrated state (plugin::LinerElement::getAsperityFrictionWork_J).
     std::optional<double> asperityFrictionWork_J;
+    /// Energy the liner's films and friction dissipated over the cycle [J], >= 0
+    /// (plugin::LinerElement::getDissipatedEnergy_J).
+    std::optional<double> dissipatedEnergy_J;
+    /// Work the liner's forces took from the piston's secondary motion over the cycle [J]; over
+    /// a periodic cycle frictionWork_J + secondaryMotionWork_J = dissipatedEnergy_J.
+    std::optional<double> secondaryMotionWork_J;
     /// Friction work over the cycle / the cycle's duration: the exact time average [W].
     std::optional<double> frictionPowerMean_W;
     /// Largest impact energy of the slap events that completed in the cycle [J] (0: none).
@@ -135,6 +141,8 @@ class CycleSummarySink final : public plugin::RowSink {
   double timeAtCycleStart_s_ = 0.0, timeAtCycleEnd_s_ = 0.0;
   std::optional<double> workAtCycleStart_J_, workAtCycleEnd_J_;
   std::optional<double> asperityWorkAtCycleStart_J_, asperityWorkAtCycleEnd_J_;
+  std::optional<double> dissipatedAtCycleStart_J_, dissipatedAtCycleEnd_J_;
+  std::optional<double> secondaryAtCycleStart_J_, secondaryAtCycleEnd_J_;
 };
 
 }  // namespace pistondyn::io

@@ -340,6 +340,12 @@ struct FilmResult {
   double boundaryInflow_m3ps = 0.0;
   double boundaryOutflow_m3ps = 0.0;
   double storageRate_m3ps = 0.0;
+  // Power the film dissipates [W], >= 0: the Couette part sum_k A_k theta_k eta_k |U|^2 phiF_k
+  // / h_k and the Poiseuille part sum over faces K_f L_f / d_f (p_a - p_b)^2 (the discrete
+  // energy of the pressure flux; smooth surfaces: int eta U^2/h + h^3 |grad p|^2 / (12 eta) dA).
+  // For a steady full film with the edges at one pressure it equals U . (force of the film on
+  // surface 1) = the friction power of the sliding surface.
+  double viscousDissipation_W = 0.0;
 
   // Squeeze derivatives (empty without a squeeze basis): column m is d/d(v_m).
   Eigen::MatrixXd dPressure_dVelocity;  // [Pa per unit v_m], nodeCount x M

@@ -22,9 +22,10 @@ class LinerElement : public ForceElement {
   virtual double getSideForce_N(const SimTK::State& s) const = 0;
   // Axial friction force the liner exerts on the piston, + along +y (towards the head) [N].
   virtual double getFrictionForce_N(const SimTK::State& /*s*/) const { return 0.0; }
-  // Power dissipated by friction between skirt and liner, >= 0 [W].
+  // Power the axial friction force takes from the piston's primary motion, -F_y v_y [W] (with
+  // the pressure terms of a film: what it dissipates along the stroke; >= 0 typical).
   virtual double getFrictionPower_W(const SimTK::State& /*s*/) const { return 0.0; }
-  // Friction work dissipated since the start of the run, >= 0 [J], if the element
+  // The integral of getFrictionPower_W since the start of the run [J], if the element
   // integrates it (a continuous state); nullopt otherwise.
   virtual std::optional<double> getFrictionWork_J(const SimTK::State& /*s*/) const {
     return std::nullopt;
@@ -49,6 +50,15 @@ class LinerElement : public ForceElement {
   // The part of getFrictionWork_J dissipated by asperity (boundary) friction [J], if the
   // element integrates it.
   virtual std::optional<double> getAsperityFrictionWork_J(const SimTK::State& /*s*/) const {
+    return std::nullopt;
+  }
+  // The energy the liner's friction and film dissipated since the start of the run [J], and
+  // the work the liner's forces took from the piston's secondary motion [J], if the element
+  // integrates them: over a periodic cycle friction work + secondary work = dissipated energy.
+  virtual std::optional<double> getDissipatedEnergy_J(const SimTK::State& /*s*/) const {
+    return std::nullopt;
+  }
+  virtual std::optional<double> getSecondaryMotionWork_J(const SimTK::State& /*s*/) const {
     return std::nullopt;
   }
   // Nodal fields over the liner's contact regions (NodalFields.h), for field dumps and maps;

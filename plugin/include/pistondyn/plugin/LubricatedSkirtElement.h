@@ -174,8 +174,20 @@ struct LubricatedSkirtResults {
   // NaN when the evaluation left the film's squeeze derivatives out
   // (setForceJacobianWanted(false)); dQ_dPose stays exact.
   Eigen::Matrix3d dQ_dPoseRate = Eigen::Matrix3d::Zero();
-  double frictionPower_W = 0;  // both sides, >= 0 typical
+  // The skirt's axial friction force on the piston in the bore frame [N] (both sides: film shear,
+  // the film pressure's axial part on the sloped skirt, the tilt's share of the normal load,
+  // boundary friction), and the power it takes from the piston's primary motion,
+  // -frictionForce_N v_y [W], with its film and asperity parts (they sum to it).
+  double frictionForce_N = 0;
+  double frictionPower_W = 0;
   double hydrodynamicFrictionPower_W = 0, asperityFrictionPower_W = 0;
+  // The power the skirt forces take from the piston's secondary motion [W] (lateral, tilt,
+  // tertiary; squeeze damping and the asperities' give), and the power the two sides
+  // dissipate (films and asperity friction, >= 0) [W]. Over a periodic cycle the friction and
+  // the secondary work together equal the dissipated energy (the asperities' elastic energy
+  // returns).
+  double secondaryMotionPower_W = 0;
+  double dissipatedPower_W = 0;
   double secondaryKineticEnergy_J = 0;
   double supplyFilm_m = 0;
   double retainerForce_N = 0;  // tertiary: force of the pin retainer on the piston (+z)
@@ -214,6 +226,12 @@ class LubricatedSkirtElement final : public LinerElement, public NodalFieldSourc
   std::optional<double> getHotRunningClearance_m() const override;
   std::optional<double> getAsperityFrictionWork_J(const SimTK::State& s) const override {
     return integrals_.getValue(s, kAsperityFrictionWork);
+  }
+  std::optional<double> getDissipatedEnergy_J(const SimTK::State& s) const override {
+    return integrals_.getValue(s, kDissipatedEnergy);
+  }
+  std::optional<double> getSecondaryMotionWork_J(const SimTK::State& s) const override {
+    return integrals_.getValue(s, kSecondaryMotionWork);
   }
   // Its nodal fields (NodalFieldSource below): the gap with its seven terms, the film gap,
   // h/sigma, film pressure, fill fraction and asperity pressure on both sides.
@@ -259,6 +277,8 @@ class LubricatedSkirtElement final : public LinerElement, public NodalFieldSourc
     kAsperityFrictionWork,       // [J]
     kWearVolumeThrust,           // Archard wear volume [m^3]
     kWearVolumeAntiThrust,       // [m^3]
+    kDissipatedEnergy,           // [J]
+    kSecondaryMotionWork,        // [J]
     kIntegralCount
   };
 
@@ -276,6 +296,8 @@ class LubricatedSkirtElement final : public LinerElement, public NodalFieldSourc
   // The pin retainer (tertiary motion) and the loads in ground.
   void addRetainerAndRotate(const SimTK::State& s, const PistonPose& pose,
                             LubricatedSkirtResults& r) const;
+  // The powers of the skirt forces on the piston's primary and secondary motion.
+  void calcPowers(const PistonPose& pose, LubricatedSkirtResults& r) const;
   // The secondary kinetic energy and the slap tracker's update.
   void trackSlap(const SimTK::State& s, const PistonPose& pose, LubricatedSkirtResults& r) const;
 

@@ -77,6 +77,7 @@ class GapAssembly {
   PistonThermalGrowth pistonThermalGrowth_;
   LinerThermalGrowth linerThermal_;
   Eigen::ArrayXd skirtProfile_, pistonThermal_;
+  Eigen::ArrayXd fixedSkirtSlope_;  // d/dy of the switched-on profile and piston thermal terms
   HotRunningClearance hot_;
 };
 

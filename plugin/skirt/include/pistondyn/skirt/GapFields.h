@@ -18,6 +18,10 @@ namespace pistondyn::skirt {
 struct GapFields {
   Eigen::ArrayXd gap_m;        ///< h, sum of the terms switched on [m]
   Eigen::ArrayXd gapRate_mps;  ///< dh/dt at the skirt node [m/s] (lubrication::FilmProblem)
+  /// d/dy of the skirt surface's own terms (skirt profile with ovality, piston thermal, piston
+  /// elastic; those switched on) [-]: the skirt surface's axial slope, r_s' = -slope. The film
+  /// pressure on the skirt has the axial component -p slope per area (SkirtSideLubrication.h).
+  Eigen::ArrayXd skirtGapSlope;
 
   /// The seven terms [m] (0 when switched off): h_rigid.
   Eigen::ArrayXd rigid_m;

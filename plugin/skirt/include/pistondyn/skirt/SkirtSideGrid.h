@@ -134,6 +134,12 @@ class SkirtSideGrid {
   const Eigen::ArrayXd& getYCosPhiWeights_m3() const { return wyc_; }
   /// int N_k y sin phi dA [m^3]
   const Eigen::ArrayXd& getYSinPhiWeights_m3() const { return wys_; }
+  /// d f / dy of a nodal field f at every node (nodeCount() entries each, k = i + nPhi j),
+  /// second order along each grid line: central on the interior nodes, one-sided at the skirt's
+  /// top and bottom rows (the three-point stencils of the nonuniform grid). `out` is resized;
+  /// no other allocation. Throws std::invalid_argument for a field of the wrong size.
+  void calcAxialDerivative(const Eigen::Ref<const Eigen::ArrayXd>& field,
+                           Eigen::ArrayXd& out) const;
   /// Total surface area of the side, R Phi L [m^2].
   double getArea_m2() const { return radius_m_ * arcWidth_rad_ * (y_m_[nY() - 1] - y_m_[0]); }
 

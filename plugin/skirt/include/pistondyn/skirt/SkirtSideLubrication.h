@@ -33,10 +33,18 @@
 //                  above it between the nodes: 7 % of a mid-skirt contact's load)
 //   boundary shear tau_b = BoundaryFriction::calcShearStress_Pa(p_c, -U) on the skirt
 // Tractions on the skirt: normal p = p_film + p_c (minus edgePressure_Pa, see below), axial
-// tau_y = film shear on surface 2 along y + tau_b,y, circumferential tau_phi = film shear on
-// surface 2 along x + tau_b,x. Loads by SkirtSideGrid::calcLoadsOnPiston (exact for the
-// bilinear fields), split into the hydrodynamic part (film pressure and film shear) and the
-// asperity part (contact pressure and boundary shear).
+// tau_y = film shear on surface 2 along y - (p_film - edgePressure) s + tau_b,y, circumferential
+// tau_phi = film shear on surface 2 along x + tau_b,x. s = GapFields::skirtGapSlope is the axial
+// slope of the skirt surface's own gap terms (profile, thermal, elastic): the film pressure acts
+// normal to the skirt surface r_s = R - h_s, whose normal has the axial component -dr_s/dy = s,
+// so the pressure pushes the skirt along -s p per area. With it the film's force on the skirt
+// is minus its force on the (straight) liner, and U . F of the film equals the power it
+// dissipates, int [eta U^2 / h + h^3 |grad p|^2 / (12 eta)] dA for a smooth film (the
+// tilt's part of that balance is the rotation of the loads into the bore frame, the element's).
+// The circumferential slope of an oval skirt is left out, as the linear gap model leaves it out
+// of the gap rate. Loads by SkirtSideGrid::calcLoadsOnPiston (exact for the bilinear fields),
+// split into the hydrodynamic part (film pressure and film shear) and the asperity part
+// (contact pressure, normal to the liner, and boundary shear).
 //
 // Derivatives (for the implicit time stepper; pose order kLateral, kTilt, kTertiary):
 //   dLoads_dPoseRate  6 x 3: (force; moment) per unit pose rate, from the film's squeeze
@@ -155,12 +163,20 @@ struct SkirtSideFigures {
   PistonLoads totalLoads;
   double hydrodynamicNormalForce_N = 0.0;  // load the film carries, along the side's normal
   double asperityNormalForce_N = 0.0;      // load the asperities carry, >= 0
-  double hydrodynamicFrictionAxial_N = 0.0;  // film shear force on the piston along +y
+  // Film force on the piston along +y [N]: the shear and the film pressure's axial component
+  // on the sloped skirt surface (pressureFrictionAxial_N, also part of it). With it the film's
+  // friction power equals the power it dissipates (the file comment).
+  double hydrodynamicFrictionAxial_N = 0.0;
+  double pressureFrictionAxial_N = 0.0;      // the film pressure's part of it [N]
   double asperityFrictionAxial_N = 0.0;      // boundary friction force on the piston along +y
   // Power the shear dissipates, U . (integral of tau on the skirt) [W], split into the film
   // (Couette + Poiseuille shear) and the boundary (asperity) part; frictionPower_W is the sum.
   double frictionPower_W = 0.0;
   double hydrodynamicFrictionPower_W = 0.0, asperityFrictionPower_W = 0.0;
+  // Power dissipated on the side [W], >= 0 by construction: the film's viscous dissipation
+  // (lubrication::FilmResult::viscousDissipation_W) plus the asperity friction power.
+  double filmDissipation_W = 0.0;
+  double dissipatedPower_W = 0.0;
   double minFilmThickness_m = 0.0;  // smallest NOMINAL gap on the side (may be < 0: overlap)
   double minFilmPhi_rad = 0.0, minFilmY_m = 0.0;  // where
   double minGapOverSigma = 0.0;                   // smallest h / sigma (nominal gap)

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "Subcommand.h"
 #include "pistondyn/io/DeckError.h"
 #include "pistondyn/io/DeckReference.h"
 #include "pistondyn/io/LinerRegistry.h"
@@ -53,8 +54,10 @@ std::string deckHelpFooter() {
          ".\nEvery key with its unit, default and range: `pistondyn keys`.\n"
          "liner.model (default ideal_guide):" +
          models +
-         "\nExit codes: 0 ok; 1 bad input, nothing written; 2 bad command line; 3 run failed, "
-         "nothing written.";
+         "\nExit codes: 0 ok; 1 bad input, nothing written; 2 bad command line, or --out a file,\n"
+         "not writable or in use by another pistondyn process, nothing written; 3 run failed,\n"
+         "nothing written; 130 / 143 interrupted by SIGINT / SIGTERM, what was being written\n"
+         "removed.";
 }
 
 std::string findOutputFolderProblem(const std::string& dir) {
@@ -75,6 +78,20 @@ std::string findOutputFolderProblem(const std::string& dir) {
   if (::access(p.c_str(), W_OK | X_OK) != 0)
     return "cannot be written: no permission to write in " + p.string();
   return {};
+}
+
+int lockOutputFolder(const std::string& dir, std::optional<io::OutputFolderLock>& lock,
+                     const std::string& option, const std::string& notDone) {
+  try {
+    lock.emplace(dir);
+    return kExitOk;
+  } catch (const io::OutputFolderBusy& e) {
+    std::cerr << "pistondyn: " << option << e.what() << "; " << notDone << "\n";
+  } catch (const std::exception& e) {
+    std::cerr << "pistondyn: " << option << dir << " cannot be written: " << e.what() << "; "
+              << notDone << "\n";
+  }
+  return kExitUsage;
 }
 
 void addSetOption(CLI::App& command, std::vector<std::string>& overrides) {

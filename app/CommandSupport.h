@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pistondyn/io/EngineDeck.h"
+#include "pistondyn/io/OutputFolderLock.h"
 
 namespace pistondyn::app {
 
@@ -21,6 +22,14 @@ std::optional<io::EngineDeck> loadDeckOrReport(const std::string& deckPath,
 // this process may write in, or creatable in one (its nearest existing ancestor a writable
 // folder). Checked before simulating, so a bad --out never costs a simulation.
 std::string findOutputFolderProblem(const std::string& dir);
+
+// Takes the output folder's lock (io/OutputFolderLock.h: created if needed) into `lock`.
+// Returns kExitOk, or kExitUsage after printing why the folder was refused (another
+// pistondyn process is writing there now, or it cannot be created or written in), the
+// message starting with `option` ("--out " for run, "" for plot) and ending with what was
+// not done ("nothing was simulated or written").
+int lockOutputFolder(const std::string& dir, std::optional<io::OutputFolderLock>& lock,
+                     const std::string& option, const std::string& notDone);
 
 // Adds --set KEY.PATH=VALUE (repeatable, one assignment per occurrence).
 void addSetOption(CLI::App& command, std::vector<std::string>& overrides);

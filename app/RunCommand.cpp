@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include <unistd.h>
 
@@ -15,6 +16,8 @@
 #include "ProgressLine.h"
 #include "ResultPlots.h"
 #include "Subcommand.h"
+#include "pistondyn/common/Cancellation.h"
+#include "pistondyn/io/OutputFolderLock.h"
 #include "pistondyn/io/ResultFolder.h"
 #include "pistondyn/io/RunDeck.h"
 
@@ -137,6 +140,11 @@ class RunCommand final : public Subcommand {
     const auto deck = loadDeckOrReport(deck_, overrides_);
     if (!deck)
       return kExitBadInput;
+    // One process at a time writes the folder, from here to the last figure.
+    std::optional<io::OutputFolderLock> lock;
+    if (const int refused = lockOutputFolder(outDir_, lock, "--out ",
+                                                  "nothing was simulated or written"); refused != kExitOk)
+      return refused;
     spdlog::info("run: deck {} ({}), liner {}, {} cycle(s) of {} rows, results to {}", deck_,
                  deck->engine.name, deck->linerModel, deck->simulation.cycles,
                  deck->simulation.stepsPerCycle(), outDir_);
@@ -150,6 +158,9 @@ class RunCommand final : public Subcommand {
       const io::RunOutcome outcome = io::runDeck(*deck, outDir_, {}, sinks);
       progress.finish();
       printSummary(*deck, outcome, outDir_);
+    } catch (const common::Cancelled&) {
+      progress.finish();
+      throw;  // main reports it; the folder is as it was
     } catch (const std::exception& e) {
       progress.finish();
       std::cerr << "pistondyn: the run failed; no results were written: " << e.what() << "\n";
@@ -160,6 +171,8 @@ class RunCommand final : public Subcommand {
       try {
         const auto files = writeResultPlots(io::readResultFolder(outDir_));
         std::printf("  and %zu figures (%s/plots/*.png)\n", files.size(), outDir_.c_str());
+      } catch (const common::Cancelled&) {
+        throw;
       } catch (const std::exception& e) {
         std::fflush(stdout);
         std::cerr << "pistondyn: warning: no plots (the results are written; `pistondyn plot "

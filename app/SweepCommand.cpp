@@ -15,6 +15,7 @@
 #include "ComparisonPlots.h"
 #include "Subcommand.h"
 #include "SweepSupport.h"
+#include "pistondyn/common/Cancellation.h"
 #include "pistondyn/io/DeckError.h"
 
 namespace pistondyn::app {
@@ -233,7 +234,8 @@ class SweepCommand final : public Subcommand {
         "line, or --out is a file, another sweep's folder or a non-empty folder without\n"
         "sweep.json, nothing written; 3 the sweep could not write its folder or sweep.csv; 4 "
         "some cases\nfailed (each listed in sweep.csv with its message, the others' results "
-        "written).");
+        "written); 130 / 143\ninterrupted by SIGINT / SIGTERM (the running cases removed, the "
+        "finished kept: rerun to resume).");
   }
 
   int execute() override {
@@ -277,6 +279,8 @@ class SweepCommand final : public Subcommand {
       if (!options_.noPlot)
         drawComparisonPlots(options_, io::makeStudyComparison(*plan, results));
       return code;
+    } catch (const common::Cancelled&) {
+      throw;  // main reports it; the complete cases are kept, a rerun resumes
     } catch (const io::SweepOutputError& e) {
       std::cerr << "pistondyn: --out " << e.what() << "; nothing was simulated or written\n";
       return kExitUsage;

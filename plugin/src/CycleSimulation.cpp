@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "pistondyn/common/Cancellation.h"
 #include "pistondyn/common/Validation.h"
 #include "pistondyn/mbd_models/SliderCrank.h"
 #include "pistondyn/plugin/LinearlyImplicitStepper.h"
@@ -164,6 +165,7 @@ class SimbodyAdvancer final : public Advancer {
   }
   void advanceTo(double tOut) override {
     while (integ_->getTime() < tOut) {
+      common::throwIfCancelled();
       if (getSteps() >= maxSteps_) {
         throw std::runtime_error("the step budget of " + std::to_string(maxSteps_) +
                                  " integrator steps is used up");
@@ -381,6 +383,7 @@ void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& pr
   long k = 0;
   try {
     for (k = 0; k < nRows; ++k) {
+      common::throwIfCancelled();
       const double thetaTarget = theta0 + static_cast<double>(k) * dTheta;
       if (k > 0) {
         if (prescribed) {
@@ -451,6 +454,8 @@ void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& pr
       if (stop)
         break;
     }
+  } catch (const common::Cancelled&) {
+    throw;  // not a failure of the simulation: the caller asked it to stop
   } catch (const std::exception& e) {
     const double reached = settings_.startAngle_deg +
                            static_cast<double>(std::max(k - 1, 0L)) * settings_.outputStep_deg;

@@ -24,6 +24,11 @@
 // `cycles` cycles are done; only the last cycle's rows are kept (the sinks are told to
 // discard the earlier ones), and the stats say whether and after how many cycles the run
 // converged.
+//
+// Cancellation (common/Cancellation.h): a run checks the process's cancellation request
+// before every output row (and every step of Simbody's integrators) and stops by throwing
+// common::Cancelled, which leaves run() as it is (not wrapped in a runtime_error); the
+// sinks see it as any failure (no endRun()).
 
 #include <functional>
 #include <string>

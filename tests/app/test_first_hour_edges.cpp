@@ -1,0 +1,248 @@
+// The edges issue 37 found when the program was tried as a new user would, each through
+// the built program: two runs into one folder, SIGINT / SIGTERM during run, plot and sweep,
+// a Matrix Market header that claims a huge matrix, a newline in the deck's path, result
+// folders that are not what plot and report expect, and the messages of a stalled free
+// crank, a stated imep of 0, an --out that cannot be written and a huge --set value.
+//
+// Processes that must overlap are made to: the first is stopped (SIGSTOP) as soon as it
+// has started writing, the second runs or the signal is sent, then the first continues
+// (SIGCONT). No test depends on how fast anything runs.
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "ScratchDeck.h"
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+using namespace pistondyn_test;
+
+namespace {
+
+// The ideal guide for several cycles at a fine output step: seconds of simulation, long
+// enough to be stopped while it writes.
+const std::string kLongIdealRun =
+    "--set simulation.cycles=6 --set simulation.output_step_deg=0.25 --quiet --no-plot";
+
+class FirstHourEdges : public ScratchDeck {
+ protected:
+  // Starts `/bin/sh -c "exec <command>"` (the shell replaced by the command: the pid is the
+  // program's) with stdout and stderr to files in the scratch folder; returns the pid.
+  pid_t start(const std::string& command, const std::string& tag) const {
+    const std::string script = "exec " + command + " > " + (dir_ / (tag + ".out")).string() +
+                               " 2> " + (dir_ / (tag + ".err")).string();
+    std::vector<char*> argv{const_cast<char*>("/bin/sh"), const_cast<char*>("-c"),
+                            const_cast<char*>(script.c_str()), nullptr};
+    pid_t pid = 0;
+    EXPECT_EQ(posix_spawn(&pid, "/bin/sh", nullptr, nullptr, argv.data(), environ), 0);
+    return pid;
+  }
+  // The exit code, or 1000 + signal if the process was killed by one.
+  static int finish(pid_t pid) {
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0) {
+    }
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
+  }
+  // Waits (without a deadline: ctest's timeout ends a hang) until `path` exists and holds at
+  // least `bytes` bytes, or the process has ended (then false).
+  static bool waitFor(const fs::path& path, pid_t pid, std::uintmax_t bytes = 1) {
+    for (;;) {
+      std::error_code ec;
+      if (fs::exists(path, ec) && fs::file_size(path, ec) >= bytes && !ec)
+        return true;
+      int status = 0;
+      if (::waitpid(pid, &status, WNOHANG) == pid)
+        return false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+  }
+  std::string output(const std::string& tag, const char* stream = "err") const {
+    return readFile(dir_ / (tag + "." + stream));
+  }
+  std::string runCommand(const fs::path& out, const std::string& args) const {
+    return std::string(PISTONDYN_EXE) + " run " + deck() + " --out " + out.string() + " " + args;
+  }
+  // Every entry under `dir` (files and folders), relative names, sorted.
+  static std::vector<std::string> listTree(const fs::path& dir) {
+    std::vector<std::string> names;
+    std::error_code ec;
+    if (!fs::exists(dir, ec))
+      return names;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+      names.push_back(fs::relative(e.path(), dir).string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+};
+
+// A whole cycle.csv: comment lines, one header, rows of as many fields as the header, the
+// crank angle advancing by one output step per row from 0. Returns the row count.
+long expectWholeCycleCsv(const fs::path& path, double step_deg) {
+  std::ifstream in(path);
+  std::string line;
+  std::size_t fields = 0;
+  long rows = 0;
+  while (std::getline(in, line)) {
+    if (line.rfind("#", 0) == 0) {
+      EXPECT_EQ(fields, 0u) << "a comment line after the header: " << line;
+      continue;
+    }
+    const std::size_t n = static_cast<std::size_t>(std::count(line.begin(), line.end(), ',')) + 1;
+    if (fields == 0) {
+      EXPECT_EQ(line.rfind("time_s,crank_angle_deg,", 0), 0u) << line;
+      fields = n;
+      continue;
+    }
+    EXPECT_EQ(n, fields) << "row " << rows << ": " << line;
+    const std::size_t a = line.find(',') + 1;
+    EXPECT_DOUBLE_EQ(std::stod(line.substr(a, line.find(',', a) - a)),
+                     static_cast<double>(rows) * step_deg)
+        << "row " << rows;
+    ++rows;
+  }
+  return rows;
+}
+
+// Two runs into one --out at once: the second is refused (exit 2, before simulating), the
+// first's files are whole and its own; the lock is gone afterwards.
+TEST_F(FirstHourEdges, TwoRunsIntoOneFolderNeverMix) {
+  const fs::path out = dir_ / "results";
+  const pid_t first = start(runCommand(out, kLongIdealRun), "first");
+  ASSERT_TRUE(waitFor(out / ".cycle.csv.partial", first, 20000)) << output("first");
+  ::kill(first, SIGSTOP);  // it holds the folder and is mid-run
+  const pid_t second =
+      start(runCommand(out, kLongIdealRun + " --set drive.speed_rpm=3000"), "second");
+  const int secondCode = finish(second);
+  ::kill(first, SIGCONT);
+  EXPECT_EQ(secondCode, 2) << output("second");
+  EXPECT_NE(output("second").find("is in use by another pistondyn process"), std::string::npos)
+      << output("second");
+  EXPECT_NE(output("second").find("nothing was simulated or written"), std::string::npos);
+  ASSERT_EQ(finish(first), 0) << output("first");
+  EXPECT_EQ(expectWholeCycleCsv(out / "cycle.csv", 0.25), 6 * 2880 + 1);
+  // The first run's own speed (the refused one asked for 3000 rpm).
+  const auto summary = nlohmann::json::parse(readFile(out / "summary.json"));
+  EXPECT_NEAR(summary["inputs"]["drive"]["speed_rad_per_s"].get<double>(), 2000 * M_PI / 30,
+              1e-9);
+  EXPECT_EQ(listTree(out), (std::vector<std::string>{"cycle.csv", "summary.json"}));
+}
+
+// SIGINT and SIGTERM during a run into a new folder: exit 130 / 143, and nothing the run
+// created is left (no partial file, no lock, not the folder nor its new parent).
+TEST_F(FirstHourEdges, SignalDuringRunLeavesNothing) {
+  for (const int signal : {SIGINT, SIGTERM}) {
+    SCOPED_TRACE(signal);
+    const fs::path parent = dir_ / "new_parent";
+    const pid_t run = start(runCommand(parent / "results", kLongIdealRun), "run");
+    ASSERT_TRUE(waitFor(parent / "results" / ".cycle.csv.partial", run, 20000)) << output("run");
+    ::kill(run, SIGSTOP);
+    ::kill(run, signal);  // delivered when it continues
+    ::kill(run, SIGCONT);
+    EXPECT_EQ(finish(run), 128 + signal) << output("run");
+    EXPECT_NE(output("run").find(signal == SIGINT ? "interrupted by SIGINT"
+                                                  : "interrupted by SIGTERM"),
+              std::string::npos)
+        << output("run");
+    EXPECT_FALSE(fs::exists(parent)) << "left: " << ::testing::PrintToString(listTree(parent));
+  }
+}
+
+// The same into a folder holding an earlier run: the earlier results stay as they were.
+TEST_F(FirstHourEdges, SignalDuringRunKeepsEarlierResults) {
+  const fs::path out = dir_ / "results";
+  ASSERT_EQ(runProgram("", out), 0) << programStderr();
+  const std::string csv = readFile(out / "cycle.csv"), json = readFile(out / "summary.json");
+  const pid_t run = start(runCommand(out, kLongIdealRun), "run");
+  ASSERT_TRUE(waitFor(out / ".cycle.csv.partial", run, 20000)) << output("run");
+  ::kill(run, SIGSTOP);
+  ::kill(run, SIGINT);
+  ::kill(run, SIGCONT);
+  EXPECT_EQ(finish(run), 130) << output("run");
+  EXPECT_EQ(listTree(out), (std::vector<std::string>{"cycle.csv", "summary.json"}));
+  EXPECT_EQ(readFile(out / "cycle.csv"), csv);
+  EXPECT_EQ(readFile(out / "summary.json"), json);
+}
+
+// SIGINT / SIGTERM while gnuplot draws: gnuplot is ended, no staged figure, no temporary
+// folder, the earlier figures as they were. A stand-in gnuplot writes the figures the
+// script names (as gnuplot starts to) and then takes its time.
+TEST_F(FirstHourEdges, SignalDuringPlotLeavesNoPartialFigureOrTemporaryFolder) {
+  const fs::path out = dir_ / "results";
+  ASSERT_EQ(runProgram("", out), 0) << programStderr();
+  fs::create_directories(out / "plots");
+  std::ofstream(out / "plots" / "side_force.png") << "earlier figure";
+  const fs::path tmp = dir_ / "tmp";
+  fs::create_directories(tmp);
+  const fs::path gnuplot = dir_ / "slow_gnuplot.sh";
+  std::ofstream(gnuplot) << "#!/bin/sh\n"
+                            "grep -o 'set output \"[^\"]*\"' \"$1\" | sed 's/set output \"//; "
+                            "s/\"$//' | while read f; do echo partial > \"$f\"; done\n"
+                            ": > \"$(dirname \"$1\")/started\"\n"
+                            "exec sleep 600\n";
+  fs::permissions(gnuplot, fs::perms::owner_all);
+  for (const std::string command : {"plot", "report"}) {
+    for (const int signal : {SIGINT, SIGTERM}) {
+      SCOPED_TRACE(command + " " + std::to_string(signal));
+      const pid_t plot = start("env TMPDIR=" + tmp.string() + " PISTONDYN_GNUPLOT=" +
+                                   gnuplot.string() + " " + PISTONDYN_EXE + " " + command + " " +
+                                   out.string(),
+                               "plot");
+      // The stand-in has started: the staged figures exist.
+      for (bool started = false; !started;) {
+        for (const auto& e : fs::directory_iterator(tmp))
+          started = started || fs::exists(e.path() / "started");
+        int status = 0;
+        ASSERT_NE(::waitpid(plot, &status, WNOHANG), plot) << output("plot");
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      }
+      ::kill(plot, signal);
+      EXPECT_EQ(finish(plot), 128 + signal) << output("plot");
+      EXPECT_EQ(listTree(out), (std::vector<std::string>{"cycle.csv", "plots",
+                                                         "plots/side_force.png", "summary.json"}));
+      EXPECT_EQ(readFile(out / "plots" / "side_force.png"), "earlier figure");
+      EXPECT_TRUE(listTree(tmp).empty()) << ::testing::PrintToString(listTree(tmp));
+    }
+  }
+}
+
+// SIGINT during a sweep: the running case's folder is removed, sweep.json stays (the sweep
+// resumes), exit 130.
+TEST_F(FirstHourEdges, SignalDuringSweepRemovesTheRunningCase) {
+  std::ofstream(dir_ / "sweep.yaml") << "base_deck: engine.yaml\n"
+                                        "set:\n  simulation.cycles: 6\n"
+                                        "  simulation.output_step_deg: 0.25\n"
+                                        "cartesian:\n  drive.speed_rpm: [2000, 3000]\n";
+  const fs::path out = dir_ / "sweep";
+  const pid_t sweep = start(std::string(PISTONDYN_EXE) + " sweep " + (dir_ / "sweep.yaml").string() +
+                                " --out " + out.string() + " --jobs 1 --quiet --no-plot",
+                            "sweep");
+  ASSERT_TRUE(waitFor(out / "case_0001" / ".cycle.csv.partial", sweep, 20000)) << output("sweep");
+  ::kill(sweep, SIGSTOP);
+  ::kill(sweep, SIGINT);
+  ::kill(sweep, SIGCONT);
+  EXPECT_EQ(finish(sweep), 130) << output("sweep");
+  const auto left = listTree(out);
+  EXPECT_TRUE(std::find(left.begin(), left.end(), "sweep.json") != left.end());
+  for (const auto& name : left) {
+    EXPECT_EQ(name.find("case_"), std::string::npos) << name;
+    EXPECT_EQ(name.find(".partial"), std::string::npos) << name;
+  }
+}
+
+}  // namespace

@@ -130,6 +130,10 @@ TEST_F(BadInputCatalogue, EachCaseExitsNamingWhereAndWhatAndWritesNothing) {
                      "4 4\n4e-9\n3e-9\n0\n0\n1e-9\n4e-9\n0\n0\n0\n0\n4e-9\n0\n0\n0\n0\n4e-9\n",
                      {"liner.elastic_skirt.compliance_file", "c.mtx: not symmetric: entry (2, 1)",
                       "Maxwell-Betti"}),
+      complianceCase("compliance header claiming a huge matrix (refused before allocating)",
+                     "20000 20000\n4e-9\n",
+                     {"liner.elastic_skirt.compliance_file",
+                      "c.mtx: 20000 x 20000 matrix, expected 4 x 4", "nodes.csv"}),
       {"pressure table: angles not increasing",
        [table](auto& f) {
          f.writeTable("crank_angle_deg,pressure_bar\n0,40\n10,30\n5,20\n720,40\n");

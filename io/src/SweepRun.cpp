@@ -241,8 +241,9 @@ std::string csvFromRows(const SweepPlan& plan,
     }
   }
   std::ostringstream out;
-  out << "# pistondyn " << getVersion() << " sweep results for " << plan.sweepDeckPath
-      << " (base deck " << plan.baseDeckPath << ")\n";
+  out << "# pistondyn " << getVersion() << " sweep results for "
+      << escapeForCommentLine(plan.sweepDeckPath) << " (base deck "
+      << escapeForCommentLine(plan.baseDeckPath) << ")\n";
   out << "# sweep fingerprint " << plan.fingerprint << "; " << plan.cases.size()
       << " cases, run folders " << plan.getCaseFolderName(1) << "/ .. "
       << plan.getCaseFolderName(static_cast<int>(plan.cases.size()))

@@ -39,13 +39,14 @@ namespace {
 const std::string kLongIdealRun =
     "--set simulation.cycles=6 --set simulation.output_step_deg=0.25 --quiet --no-plot";
 
-class FirstHourEdges : public ScratchDeck {
- protected:
+// Process helpers over a scratch folder (both fixtures below).
+struct Processes {
+  fs::path dir;
   // Starts `/bin/sh -c "exec <command>"` (the shell replaced by the command: the pid is the
-  // program's) with stdout and stderr to files in the scratch folder; returns the pid.
+  // program's) with stdout and stderr to <tag>.out and <tag>.err in `dir`; returns the pid.
   pid_t start(const std::string& command, const std::string& tag) const {
-    const std::string script = "exec " + command + " > " + (dir_ / (tag + ".out")).string() +
-                               " 2> " + (dir_ / (tag + ".err")).string();
+    const std::string script = "exec " + command + " > " + (dir / (tag + ".out")).string() +
+                               " 2> " + (dir / (tag + ".err")).string();
     std::vector<char*> argv{const_cast<char*>("/bin/sh"), const_cast<char*>("-c"),
                             const_cast<char*>(script.c_str()), nullptr};
     pid_t pid = 0;
@@ -73,22 +74,40 @@ class FirstHourEdges : public ScratchDeck {
     }
   }
   std::string output(const std::string& tag, const char* stream = "err") const {
-    return readFile(dir_ / (tag + "." + stream));
+    return readFile(dir / (tag + "." + stream));
   }
+};
+
+// Every entry under `dir` (files and folders), relative names, sorted.
+std::vector<std::string> listTree(const fs::path& dir) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  if (!fs::exists(dir, ec))
+    return names;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    names.push_back(fs::relative(e.path(), dir).string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+class FirstHourEdges : public ScratchDeck {
+ protected:
+  void SetUp() override {
+    ScratchDeck::SetUp();
+    procs_.dir = dir_;
+  }
+  pid_t start(const std::string& command, const std::string& tag) const {
+    return procs_.start(command, tag);
+  }
+  static int finish(pid_t pid) { return Processes::finish(pid); }
+  static bool waitFor(const fs::path& path, pid_t pid, std::uintmax_t bytes = 1) {
+    return Processes::waitFor(path, pid, bytes);
+  }
+  std::string output(const std::string& tag) const { return procs_.output(tag); }
   std::string runCommand(const fs::path& out, const std::string& args) const {
     return std::string(PISTONDYN_EXE) + " run " + deck() + " --out " + out.string() + " " + args;
   }
-  // Every entry under `dir` (files and folders), relative names, sorted.
-  static std::vector<std::string> listTree(const fs::path& dir) {
-    std::vector<std::string> names;
-    std::error_code ec;
-    if (!fs::exists(dir, ec))
-      return names;
-    for (const auto& e : fs::recursive_directory_iterator(dir))
-      names.push_back(fs::relative(e.path(), dir).string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
+  Processes procs_;
 };
 
 // A whole cycle.csv: comment lines, one header, rows of as many fields as the header, the
@@ -243,6 +262,59 @@ TEST_F(FirstHourEdges, SignalDuringSweepRemovesTheRunningCase) {
     EXPECT_EQ(name.find("case_"), std::string::npos) << name;
     EXPECT_EQ(name.find(".partial"), std::string::npos) << name;
   }
+}
+
+}  // namespace
+
+namespace {
+
+class FirstHourSkirtEdges : public SkirtScratchDeck {};
+
+// A compliance whose Matrix Market header claims 20000 x 20000 with one entry, beside a
+// node table of 4 nodes: refused from the size line, before the 3.2 GB matrix is
+// allocated - checked under a 1.5 GB address-space limit, where the allocation would fail
+// with std::bad_alloc instead of the message.
+TEST_F(FirstHourSkirtEdges, HugeMatrixMarketHeaderIsRefusedBeforeAllocating) {
+  writeFile("nodes.csv", "node,phi_deg,y_mm\n1,0,-1\n2,30,-1\n3,0,3\n4,30,3\n");
+  writeFile("c.mtx", "%%MatrixMarket matrix coordinate real symmetric\n20000 20000 1\n1 1 4e-9\n");
+  const Processes p{dir_};
+  const pid_t check = p.start("sh -c 'ulimit -v 1500000 && exec " + std::string(PISTONDYN_EXE) +
+                                  " check " + deck() +
+                                  " --set liner.elastic_skirt.compliance_file=c.mtx"
+                                  " --set liner.elastic_skirt.nodes_file=nodes.csv'",
+                              "check");
+  const ProgramRun r{Processes::finish(check), p.output("check", "out"), p.output("check")};
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_NE(r.err.find("liner.elastic_skirt.compliance_file"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("c.mtx: 20000 x 20000 matrix, expected 4 x 4 for the 4 nodes of"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("bad_alloc"), std::string::npos) << r.err;
+}
+
+// A newline (and a tab) in the deck's path: cycle.csv's comment line holds the path with
+// the characters escaped, so the file keeps its shape (comments, header, rows) and reads
+// back; the summary holds the path as it is (JSON escapes it).
+TEST_F(FirstHourEdges, NewlineInTheDeckPathKeepsCycleCsvWhole) {
+  const fs::path odd = dir_ / "new\nline\tfolder";
+  fs::create_directories(odd);
+  for (const auto& e : fs::directory_iterator(dir_)) {
+    if (e.is_regular_file() && e.path().extension() != ".txt")
+      fs::copy_file(e.path(), odd / e.path().filename());
+  }
+  const fs::path out = dir_ / "results";
+  const std::string cmd = std::string(PISTONDYN_EXE) + " run '" + (odd / "engine.yaml").string() +
+                          "' --out " + out.string() + " --quiet --no-plot";
+  const pid_t run = start(cmd, "run");
+  ASSERT_EQ(finish(run), 0) << output("run");
+  EXPECT_EQ(expectWholeCycleCsv(out / "cycle.csv", 1.0), 721);
+  const std::string csv = readFile(out / "cycle.csv");
+  EXPECT_NE(csv.find("# pistondyn " PISTONDYN_VERSION " cycle results for " + dir_.string() +
+                     "/new\\nline\\tfolder/engine.yaml\n"),
+            std::string::npos)
+      << csv.substr(0, 400);
+  const auto summary = nlohmann::json::parse(readFile(out / "summary.json"));
+  EXPECT_EQ(summary["deck_file"].get<std::string>(), (odd / "engine.yaml").string());
 }
 
 }  // namespace

@@ -51,6 +51,7 @@ class PlotCommand final : public Subcommand {
     io::ResultFolder folder;
     try {
       folder = io::readResultFolder(dir_);
+      checkResultPlotColumns(folder);
     } catch (const std::exception& e) {
       std::cerr << "pistondyn: cannot plot: " << e.what() << "\n";
       return kExitBadInput;

@@ -52,6 +52,7 @@ class ReportCommand final : public Subcommand {
     io::ResultFolder folder;
     try {
       folder = io::readResultFolder(dir_);
+      checkResultPlotColumns(folder);
     } catch (const std::exception& e) {
       std::cerr << "pistondyn: cannot write a report: " << e.what() << "\n";
       return kExitBadInput;

@@ -21,6 +21,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -265,6 +266,74 @@ TEST_F(FirstHourEdges, SignalDuringSweepRemovesTheRunningCase) {
 }
 
 }  // namespace
+
+// plot and report refuse a folder whose summary.json or cycle.csv is not as run writes
+// it - naming the file and what is wrong, exit 1, nothing written - instead of drawing
+// without the figure that needs the missing piece.
+TEST_F(FirstHourEdges, PlotAndReportRefuseAMalformedResultFolder) {
+  const fs::path good = dir_ / "good";
+  ASSERT_EQ(runProgram("", good), 0) << programStderr();
+  const std::string summary = readFile(good / "summary.json"), csv = readFile(good / "cycle.csv");
+  // cycle.csv without one column (header and rows).
+  auto withoutColumn = [&](const std::string& column) {
+    std::istringstream in(csv);
+    std::string line, out;
+    std::size_t drop = std::string::npos;
+    while (std::getline(in, line)) {
+      if (line.rfind("#", 0) != 0) {
+        std::vector<std::string> fields;
+        std::stringstream ss(line);
+        for (std::string f; std::getline(ss, f, ',');)
+          fields.push_back(f);
+        if (drop == std::string::npos)
+          drop = static_cast<std::size_t>(std::find(fields.begin(), fields.end(), column) -
+                                          fields.begin());
+        fields.erase(fields.begin() + static_cast<long>(drop));
+        line.clear();
+        for (const auto& f : fields)
+          line += (line.empty() ? "" : ",") + f;
+      }
+      out += line + "\n";
+    }
+    return out;
+  };
+  auto json = nlohmann::json::parse(summary);
+  json["results"]["imep_kPa"] = "598 kPa";
+  struct Case {
+    std::string name, file, text, expected;
+  };
+  const std::vector<Case> cases = {
+      {"summary.json is []", "summary.json", "[]",
+       "summary.json: expected a JSON object, found an array"},
+      {"summary.json without results", "summary.json", R"({"inputs": {}})",
+       "summary.json: no \"results\" object"},
+      {"text where a number belongs", "summary.json", json.dump(2),
+       "summary.json: results.imep_kPa: expected a number, found the text \"598 kPa\""},
+      {"cycle.csv without the conrod force", "cycle.csv", withoutColumn("conrod_force_N"),
+       "cycle.csv: no column conrod_force_<unit>, which the figure crank_train_forces.png"},
+      {"cycle.csv without the ideal guide's moment", "cycle.csv", withoutColumn("guide_moment_Nm"),
+       "cycle.csv: no column guide_moment_<unit>, which the figure side_force.png"},
+  };
+  for (const Case& c : cases) {
+    for (const std::string command : {"plot", "report"}) {
+      SCOPED_TRACE(c.name + ", " + command);
+      const fs::path bad = dir_ / "bad";
+      fs::remove_all(bad);
+      fs::create_directories(bad);
+      std::ofstream(bad / "summary.json") << summary;
+      std::ofstream(bad / "cycle.csv") << csv;
+      std::ofstream(bad / c.file) << c.text;
+      const auto before = listTree(bad);
+      const pid_t p = start(std::string(PISTONDYN_EXE) + " " + command + " " + bad.string(), "p");
+      EXPECT_EQ(finish(p), 1) << output("p");
+      EXPECT_NE(output("p").find((bad / c.expected.substr(0, c.expected.find(':'))).string() +
+                                 c.expected.substr(c.expected.find(':'))),
+                std::string::npos)
+          << output("p");
+      EXPECT_EQ(listTree(bad), before);
+    }
+  }
+}
 
 namespace {
 

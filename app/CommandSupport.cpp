@@ -2,6 +2,10 @@
 
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
@@ -54,10 +58,10 @@ std::string deckHelpFooter() {
          ".\nEvery key with its unit, default and range: `pistondyn keys`.\n"
          "liner.model (default ideal_guide):" +
          models +
-         "\nExit codes: 0 ok; 1 bad input, nothing written; 2 bad command line, or --out a file,\n"
-         "not writable or in use by another pistondyn process, nothing written; 3 run failed,\n"
-         "nothing written; 130 / 143 interrupted by SIGINT / SIGTERM, what was being written\n"
-         "removed.";
+         "\nExit codes: 0 ok; 1 bad input, nothing written; 2 bad command line, or an output\n"
+         "folder that is a file, not writable or in use by another pistondyn process, nothing\n"
+         "written; 3 run failed, nothing written; 130 / 143 interrupted by SIGINT / SIGTERM,\n"
+         "what was being written removed.";
 }
 
 std::string findOutputFolderProblem(const std::string& dir) {
@@ -77,6 +81,13 @@ std::string findOutputFolderProblem(const std::string& dir) {
     return "cannot be created: " + p.string() + " is a file, not a folder";
   if (::access(p.c_str(), W_OK | X_OK) != 0)
     return "cannot be written: no permission to write in " + p.string();
+  // access() says yes to root everywhere, and knows nothing of read-only or virtual file
+  // systems (/proc, /sys): a folder made and removed again answers for sure.
+  std::string probe = (p / ".pistondyn_probe_XXXXXX").string();
+  if (::mkdtemp(probe.data()) == nullptr)
+    return "cannot be written: no folder can be made in " + p.string() + " (" +
+           std::strerror(errno) + ")";
+  ::rmdir(probe.c_str());
   return {};
 }
 

@@ -20,7 +20,9 @@ std::optional<io::EngineDeck> loadDeckOrReport(const std::string& deckPath,
 
 // Why `dir` cannot be the output folder of a run, or "" if it can: it must be a folder
 // this process may write in, or creatable in one (its nearest existing ancestor a writable
-// folder). Checked before simulating, so a bad --out never costs a simulation.
+// folder: a probe folder is made there and removed at once, which also tells read-only and
+// virtual file systems such as /proc). Checked before simulating, so a bad --out never
+// costs a simulation.
 std::string findOutputFolderProblem(const std::string& dir);
 
 // Takes the output folder's lock (io/OutputFolderLock.h: created if needed) into `lock`.

@@ -335,6 +335,26 @@ TEST_F(FirstHourEdges, PlotAndReportRefuseAMalformedResultFolder) {
   }
 }
 
+// An --out on a file system nobody can write (/proc) is a refused --out: exit 2 as the
+// README says, before the deck is simulated, for run and sweep alike.
+TEST_F(FirstHourEdges, AnOutFolderOnProcIsARefusedOut) {
+  std::ofstream(dir_ / "sweep.yaml") << "base_deck: engine.yaml\n"
+                                        "cartesian:\n  drive.speed_rpm: [2000, 3000]\n";
+  const std::string out = "/proc/pistondyn_test_" + std::to_string(::getpid()) + "/results";
+  for (const std::string& command :
+       {runCommand(out, "--quiet --no-plot"),
+        std::string(PISTONDYN_EXE) + " sweep " + (dir_ / "sweep.yaml").string() + " --out " + out +
+            " --quiet --no-plot"}) {
+    SCOPED_TRACE(command);
+    const pid_t p = start(command, "p");
+    EXPECT_EQ(finish(p), 2) << output("p");
+    // As root the probe folder answers ("no folder can be made in /proc"), else access().
+    EXPECT_NE(output("p").find("--out " + out + " cannot be written: "), std::string::npos)
+        << output("p");
+    EXPECT_NE(output("p").find("nothing was simulated or written"), std::string::npos);
+  }
+}
+
 namespace {
 
 class FirstHourSkirtEdges : public SkirtScratchDeck {};

@@ -1,7 +1,8 @@
 #pragma once
 // The figures of a run's result folder, drawn by gnuplot (pngcairo) into DIR/plots/:
 //
-//   crank_train_forces.png  gas, conrod and side force; crank and drive torque
+//   crank_train_forces.png  gas, conrod force, the crank train's side force (from the rod)
+//                           and the side force on the liner; crank and drive torque
 //   side_force.png          side force (and, for the lubricated skirt, film and asperity
 //                           normal forces per side); the liner's moment
 //   secondary_motion.png    lateral displacement at skirt top, pin and skirt bottom; tilt

@@ -81,13 +81,17 @@ void printSummary(const io::EngineDeck& deck, const io::RunOutcome& o, const std
   }
   std::printf("  imep %.1f kPa   peak cylinder pressure %.2f bar at %.1f deg\n", s.imep_Pa / 1e3,
               s.peakCylinderPressure_Pa / 1e5, s.peakCylinderPressureAngle_deg);
+  std::printf("  crank-train side force (from the rod) %+.0f N at %.1f deg, %+.0f N at %.1f deg\n",
+              s.crankTrainSideForceMax_N, s.crankTrainSideForceMaxAngle_deg,
+              s.crankTrainSideForceMin_N, s.crankTrainSideForceMinAngle_deg);
   if (s.liner) {
-    std::printf("  side force %+.0f N at %.1f deg (thrust), %+.0f N at %.1f deg (anti-thrust)\n",
+    std::printf("  side force on the liner %+.0f N at %.1f deg (thrust), %+.0f N at %.1f deg "
+                "(anti-thrust)\n",
                 s.liner->sideForceMax_N, s.liner->sideForceMaxAngle_deg, s.liner->sideForceMin_N,
                 s.liner->sideForceMinAngle_deg);
     printLinerFigures(*s.liner, s, o.stats);
   } else {
-    std::printf("  side force: the model has no liner element\n");
+    std::printf("  side force on the liner: the model has no liner element\n");
   }
   std::printf("  conrod force %+.0f .. %+.0f N   mean crank torque %.2f N m   power %.2f kW\n",
               s.conrodForceMin_N, s.conrodForceMax_N, s.meanCrankTorque_Nm,

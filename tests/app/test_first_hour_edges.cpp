@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -353,6 +354,59 @@ TEST_F(FirstHourEdges, AnOutFolderOnProcIsARefusedOut) {
         << output("p");
     EXPECT_NE(output("p").find("nothing was simulated or written"), std::string::npos);
   }
+}
+
+// Item 4: the crank train's own side force beside the liner's, under its own name in
+// cycle.csv, summary.json and the printed summary - on the ideal guide the two agree; and
+// cycles_to_converge is null for a run that did not converge (a number when it did).
+TEST_F(FirstHourEdges, CrankTrainSideForceBesideTheLinersAndNoCountWithoutConvergence) {
+  const fs::path out = dir_ / "results";
+  ASSERT_EQ(runProgram("", out), 0) << programStderr();
+  const std::string printed = readFile(dir_ / "stdout.txt");
+  const auto json = nlohmann::json::parse(readFile(out / "summary.json"));
+  const auto& r = json["results"];
+  const double ctMax = r["crank_train_side_force_max_N"].get<double>();
+  const double ctMin = r["crank_train_side_force_min_N"].get<double>();
+  EXPECT_NEAR(ctMax, r["side_force_max_N"].get<double>(), 1e-9 * std::abs(ctMax));
+  EXPECT_NEAR(ctMin, r["side_force_min_N"].get<double>(), 1e-9 * std::abs(ctMax));
+  EXPECT_EQ(r["crank_train_side_force_max_angle_deg"], r["side_force_max_angle_deg"]);
+  // The extremes are those of the column over the cycle (its closing row repeats 0 deg).
+  std::ifstream in(out / "cycle.csv");
+  std::string line;
+  std::vector<std::string> header;
+  double colMax = -INFINITY, colMin = INFINITY;
+  std::size_t column = 0;
+  while (std::getline(in, line)) {
+    if (line.rfind("#", 0) == 0)
+      continue;
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    for (std::string x; std::getline(ss, x, ',');)
+      f.push_back(x);
+    if (header.empty()) {
+      header = f;
+      column = static_cast<std::size_t>(
+          std::find(header.begin(), header.end(), "crank_train_side_force_N") - header.begin());
+      ASSERT_LT(column, header.size()) << line;
+      continue;
+    }
+    colMax = std::max(colMax, std::stod(f[column]));
+    colMin = std::min(colMin, std::stod(f[column]));
+  }
+  EXPECT_EQ(colMax, ctMax);
+  EXPECT_EQ(colMin, ctMin);
+  EXPECT_NE(printed.find("crank-train side force (from the rod) +"), std::string::npos) << printed;
+  EXPECT_NE(printed.find("side force on the liner +"), std::string::npos) << printed;
+  // One cycle, not run to periodic steady state: no count.
+  EXPECT_FALSE(r["converged"].get<bool>());
+  EXPECT_TRUE(r["cycles_to_converge"].is_null()) << r.dump();
+  // The ideal guide's pose never changes between cycles: periodic after two.
+  ASSERT_EQ(runProgram("--set simulation.until_periodic=true --set simulation.cycles=3", out), 0)
+      << programStderr();
+  const auto periodic = nlohmann::json::parse(readFile(out / "summary.json"))["results"];
+  EXPECT_TRUE(periodic["converged"].get<bool>());
+  EXPECT_EQ(periodic["cycles_to_converge"], 2);
+  EXPECT_NE(readFile(dir_ / "stdout.txt").find("periodic after 2 cycles"), std::string::npos);
 }
 
 namespace {

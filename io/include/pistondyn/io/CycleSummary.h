@@ -12,8 +12,9 @@
 //     does not report, like the ideal guide's film) these figures are absent, never
 //     invented from a column;
 //   - the largest |lateral displacement| and |tilt|: the crank train, at each row's state;
-//   - conrod force, crank and drive torque, crank speed: the crank-train columns, which
-//     CycleSimulation::crankTrainColumns() fixes, found by their index in that list.
+//   - conrod force, crank-train side force, crank and drive torque, crank speed: the
+//     crank-train columns, which CycleSimulation::crankTrainColumns() fixes, found by their
+//     index in that list.
 
 #include <optional>
 #include <vector>
@@ -62,6 +63,11 @@ struct CycleSummary {
   double maxAbsTilt_rad = 0.0;               // largest |tilt| [rad]
 
   double conrodForceMax_N = 0.0, conrodForceMin_N = 0.0;  // compression > 0
+  // The crank train's own side force (crank_train_side_force_N: the rod's lateral force
+  // across the small end), every model: largest towards thrust and towards anti-thrust
+  // (< 0), with their crank angles in [0, 720) deg.
+  double crankTrainSideForceMax_N = 0.0, crankTrainSideForceMaxAngle_deg = 0.0;
+  double crankTrainSideForceMin_N = 0.0, crankTrainSideForceMinAngle_deg = 0.0;
   double meanCrankTorque_Nm = 0.0;                        // rod on crank, cycle mean
   double meanDriveTorque_Nm = 0.0;
   double indicatedPower_W = 0.0;  // mean crank torque x mean speed
@@ -114,6 +120,7 @@ class CycleSummarySink final : public plugin::RowSink {
   // Running figures of the current cycle.
   double torque_ = 0.0, drive_ = 0.0, speed_ = 0.0;
   double conrodMax_ = 0.0, conrodMin_ = 0.0;
+  double rodSideMax_ = 0.0, rodSideMaxAngle_ = 0.0, rodSideMin_ = 0.0, rodSideMinAngle_ = 0.0;
   double sideMax_ = 0.0, sideMaxAngle_ = 0.0, sideMin_ = 0.0, sideMinAngle_ = 0.0;
   FilmMinimum filmThrust_, filmAntiThrust_, sigmaThrust_, sigmaAntiThrust_;
   SlapEvents slap_;

@@ -9,6 +9,8 @@
 //   piston_y_m (height of the piston axis at pin height above the crank axis),
 //   piston_vy_mps, piston_ay_mps2, u_lat_um (+ thrust), tilt_mrad (+ crown towards
 //   thrust), u_tran_um (+ along pin axis z), conrod_force_N (+ compression),
+//   crank_train_side_force_N (the rod's lateral force across the small end, + towards
+//   thrust: what an ideal guide carries; CrankTrain::getConrodLateralForce_N),
 //   crank_torque_Nm (rod on crank, + along rotation), drive_torque_Nm (drive on crank,
 //   + along rotation).
 //

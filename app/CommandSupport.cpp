@@ -18,9 +18,10 @@
 namespace pistondyn::app {
 
 std::optional<io::EngineDeck> loadDeckOrReport(const std::string& deckPath,
-                                               const std::vector<std::string>& overrides) {
+                                               const std::vector<std::string>& overrides,
+                                               io::Fidelity fidelity) {
   try {
-    return io::loadEngineDeck(deckPath, overrides);
+    return io::loadEngineDeck(deckPath, overrides, fidelity);
   } catch (const io::DeckError& e) {
     std::cerr << "pistondyn: the deck was rejected; nothing was simulated or written:\n"
               << e.what() << "\n";
@@ -103,6 +104,21 @@ int lockOutputFolder(const std::string& dir, std::optional<io::OutputFolderLock>
               << notDone << "\n";
   }
   return kExitUsage;
+}
+
+void addFidelityOption(CLI::App& command, std::string& fidelity) {
+  command
+      .add_option("--fidelity", fidelity,
+                  "full: the deck as written (default); preview: a quick look with the film "
+                  "grid halved each way (not below 16 x 12 nodes per side), recorded in "
+                  "summary.json (fidelity, fidelity_note, the grid among inputs and "
+                  "overrides); a liner without a film grid runs the same at both")
+      ->check(CLI::IsMember({"full", "preview"}))
+      ->type_name("full|preview");
+}
+
+io::Fidelity toFidelity(const std::string& fidelity) {
+  return fidelity == "preview" ? io::Fidelity::Preview : io::Fidelity::Full;
 }
 
 void addSetOption(CLI::App& command, std::vector<std::string>& overrides) {

@@ -16,7 +16,13 @@ namespace pistondyn::app {
 // The deck, or nullopt after printing on stderr why it was rejected (every problem as
 // file:line: key: what is wrong); the caller then exits with kExitBadInput.
 std::optional<io::EngineDeck> loadDeckOrReport(const std::string& deckPath,
-                                               const std::vector<std::string>& overrides);
+                                               const std::vector<std::string>& overrides,
+                                               io::Fidelity fidelity = io::Fidelity::Full);
+
+// Adds --fidelity preview|full (default full) into `fidelity`.
+void addFidelityOption(CLI::App& command, std::string& fidelity);
+// The option's value as io::Fidelity (CLI11 has checked it is one of the two).
+io::Fidelity toFidelity(const std::string& fidelity);
 
 // Why `dir` cannot be the output folder of a run, or "" if it can: it must be a folder
 // this process may write in, or creatable in one (its nearest existing ancestor a writable

@@ -1,5 +1,5 @@
-// pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--quiet] [--no-plot]
-//               [--log-level LEVEL]
+// pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--fidelity full|preview]
+//               [--quiet] [--no-plot] [--log-level LEVEL]
 
 #include <cmath>
 #include <cstdio>
@@ -70,6 +70,13 @@ void printSummary(const io::EngineDeck& deck, const io::RunOutcome& o, const std
   std::printf("  %d cycle(s) at %.0f rpm, %ld rows, %.3f s wall time, %ld integrator steps\n",
               o.stats.cyclesRun, deck.engine.drive.speed_radps * 30.0 / M_PI, o.rows,
               o.stats.wallTime_s, o.stats.integratorSteps);
+  if (deck.fidelity == io::Fidelity::Preview) {
+    std::printf("  fidelity preview: %s\n",
+                deck.fidelityNote.empty() ? "the same as full (the liner has no film grid)"
+                                          : deck.fidelityNote.c_str());
+  } else {
+    std::printf("  fidelity full: the deck as written\n");
+  }
   if (deck.simulation.untilPeriodic) {
     if (o.stats.converged) {
       std::printf("  periodic after %d cycles (of at most %d)\n", o.stats.cyclesToConverge,
@@ -120,6 +127,7 @@ class RunCommand final : public Subcommand {
         ->required()
         ->type_name("DIR");
     addSetOption(*app_, overrides_);
+    addFidelityOption(*app_, fidelity_);
     app_->add_flag("--quiet", quiet_,
                    "no progress line on stderr; the summary on stdout, warnings and errors "
                    "stay (default: runs longer than 1 s show cycle, crank angle and the "
@@ -141,7 +149,7 @@ class RunCommand final : public Subcommand {
                 << "; nothing was simulated or written\n";
       return kExitUsage;
     }
-    const auto deck = loadDeckOrReport(deck_, overrides_);
+    const auto deck = loadDeckOrReport(deck_, overrides_, toFidelity(fidelity_));
     if (!deck)
       return kExitBadInput;
     // One process at a time writes the folder, from here to the last figure.
@@ -189,7 +197,7 @@ class RunCommand final : public Subcommand {
  private:
   std::string deck_, outDir_;
   std::vector<std::string> overrides_;
-  std::string logLevel_ = "warn";
+  std::string logLevel_ = "warn", fidelity_ = "full";
   bool quiet_ = false, noPlot_ = false;
 };
 

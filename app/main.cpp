@@ -3,8 +3,9 @@
 // ReportCommand.cpp, SweepCommand.cpp, StudyCommand.cpp, KeysCommand.cpp), each over
 // pistondyn::io.
 //
-//   pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--quiet] [--no-plot]
-//   pistondyn check DECK.yaml [--set key.path=value]...
+//   pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--fidelity full|preview]
+//                 [--quiet] [--no-plot]
+//   pistondyn check DECK.yaml [--set key.path=value]... [--fidelity full|preview]
 //   pistondyn plot DIR          (figures of a result folder, gnuplot)
 //   pistondyn report DIR        (DIR/report.html, self-contained)
 //   pistondyn sweep SWEEP.yaml --out DIR [--jobs N] [--set key.path=value]... [--list] [--quiet]
@@ -31,9 +32,10 @@
 namespace {
 
 const char* kSynopsis =
-    "usage: pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--quiet] [--no-plot]\n"
-    "                     [--log-level LEVEL]\n"
-    "       pistondyn check DECK.yaml [--set key.path=value]... [--log-level LEVEL]\n"
+    "usage: pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--fidelity full|preview]\n"
+    "                     [--quiet] [--no-plot] [--log-level LEVEL]\n"
+    "       pistondyn check DECK.yaml [--set key.path=value]... [--fidelity full|preview]\n"
+    "                       [--log-level LEVEL]\n"
     "       pistondyn plot DIR [--log-level LEVEL]\n"
     "       pistondyn report DIR [--log-level LEVEL]\n"
     "       pistondyn sweep SWEEP.yaml --out DIR [--jobs N] [--set key.path=value]... [--list]\n"

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <variant>
 
 #include "pistondyn/common/Validation.h"
 #include "pistondyn/io/DeckError.h"
@@ -411,6 +412,50 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
                     "' rejected its parameters for this engine: " + ex.what());
   }
   return deck;
+}
+
+const char* getFidelityName(Fidelity fidelity) {
+  return fidelity == Fidelity::Preview ? "preview" : "full";
+}
+
+namespace {
+
+// The whole-number input `path` of a loaded deck, if it read one.
+std::optional<long> findWholeInput(const EngineDeck& deck, const std::string& path) {
+  for (const ResolvedInput& in : deck.inputs) {
+    if (in.path == path && std::holds_alternative<long>(in.value))
+      return std::get<long>(in.value);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::string>& overrides,
+                          Fidelity fidelity, const LinerRegistry& registry) {
+  EngineDeck full = loadEngineDeck(deckPath, overrides, registry);
+  if (fidelity == Fidelity::Full)
+    return full;
+  const char* kPhi = "liner.grid.nodes_circumferential";
+  const char* kY = "liner.grid.nodes_axial";
+  const std::optional<long> nPhi = findWholeInput(full, kPhi), nY = findWholeInput(full, kY);
+  if (!nPhi || !nY) {
+    full.fidelity = Fidelity::Preview;  // nothing to coarsen: the same run
+    return full;
+  }
+  // Half each way (rounded up), not below 16 x 12, never finer than the deck's.
+  auto coarser = [](long n, long floor) { return std::min(n, std::max(floor, (n + 1) / 2)); };
+  const long pPhi = coarser(*nPhi, 16), pY = coarser(*nY, 12);
+  std::vector<std::string> previewOverrides = overrides;
+  previewOverrides.push_back(std::string(kPhi) + "=" + std::to_string(pPhi));
+  previewOverrides.push_back(std::string(kY) + "=" + std::to_string(pY));
+  EngineDeck preview = loadEngineDeck(deckPath, previewOverrides, registry);
+  preview.fidelity = Fidelity::Preview;
+  preview.fidelityNote = "film grid " + std::to_string(pPhi) + " x " + std::to_string(pY) +
+                         " nodes per side, the deck's " + std::to_string(*nPhi) + " x " +
+                         std::to_string(*nY) +
+                         " halved (not below 16 x 12); --fidelity full runs the deck as written";
+  return preview;
 }
 
 double calcDeckImep_Pa(const EngineDeck& deck) {

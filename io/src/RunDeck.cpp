@@ -62,6 +62,11 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
   const std::filesystem::path deckFile = std::filesystem::absolute(deck.deckPath, ec);
   j["deck_file"] = ec ? deck.deckPath : deckFile.lexically_normal().string();
   j["overrides"] = deck.overrides;
+  // full: the deck as written; preview: a coarser film grid for a quick look (EngineDeck.h),
+  // its assignments among the overrides above and its grid among the inputs below.
+  j["fidelity"] = getFidelityName(deck.fidelity);
+  if (!deck.fidelityNote.empty())
+    j["fidelity_note"] = deck.fidelityNote;
 
   j["inputs"] = nestedInputs(deck.inputs);
   // What the model uses besides the deck's keys.

@@ -413,6 +413,39 @@ namespace {
 
 class FirstHourSkirtEdges : public SkirtScratchDeck {};
 
+// --fidelity preview through the program: check says what the preview changes; a run
+// records it in summary.json (fidelity, fidelity_note, the grid among inputs and
+// overrides) and in the printed summary. The deck set to 32 x 24 becomes 16 x 12.
+TEST_F(FirstHourSkirtEdges, PreviewFidelityIsRecordedAndPrinted) {
+  const std::string grid =
+      " --set liner.grid.nodes_circumferential=32 --set liner.grid.nodes_axial=24";
+  const ProgramRun check = invokeInScratch("check " + deck() + grid + " --fidelity preview");
+  ASSERT_EQ(check.exitCode, 0) << check.err;
+  EXPECT_NE(check.out.find("fidelity preview: film grid 16 x 12 nodes per side, the deck's 32 x "
+                           "24 halved"),
+            std::string::npos)
+      << check.out;
+  const fs::path out = dir_ / "results";
+  ASSERT_EQ(runProgram(grid +
+                           " --set simulation.until_periodic=false --set simulation.cycles=1"
+                           " --set simulation.output_step_deg=4 --fidelity preview",
+                       out),
+            0)
+      << programStderr();
+  const auto summary = nlohmann::json::parse(readFile(out / "summary.json"));
+  EXPECT_EQ(summary["fidelity"], "preview");
+  EXPECT_NE(summary["fidelity_note"].get<std::string>().find("film grid 16 x 12"),
+            std::string::npos);
+  EXPECT_EQ(summary["inputs"]["liner"]["grid"]["nodes_circumferential"], 16);
+  EXPECT_EQ(summary["inputs"]["liner"]["grid"]["nodes_axial"], 12);
+  EXPECT_EQ(summary["overrides"].back(), "liner.grid.nodes_axial=12");
+  EXPECT_NE(readFile(dir_ / "stdout.txt").find("fidelity preview: film grid 16 x 12"),
+            std::string::npos)
+      << readFile(dir_ / "stdout.txt");
+  // An unknown fidelity is a bad command line.
+  EXPECT_EQ(invokeInScratch("check " + deck() + " --fidelity coarse").exitCode, 2);
+}
+
 // A compliance whose Matrix Market header claims 20000 x 20000 with one entry, beside a
 // node table of 4 nodes: refused from the size line, before the 3.2 GB matrix is
 // allocated - checked under a 1.5 GB address-space limit, where the allocation would fail

@@ -34,9 +34,10 @@ class PlotCommand final : public Subcommand {
         "also\n  secondary_motion (um, mrad), friction (N, W), film_thickness (um, h/sigma),\n"
         "  regime_shares (area shares), field_map_<angle>deg (MPa, fill fraction, um) per "
         "field dump.\ngnuplot: $PISTONDYN_GNUPLOT or the first gnuplot on PATH (Debian package "
-        "gnuplot).\nExit codes: 0 ok; 1 DIR is not a result folder; 2 bad command line, or another\n"
-        "pistondyn process is writing DIR now; 3 "
-        "plotting failed\n(gnuplot missing or failing), no figure changed.");
+        "gnuplot).\nExit codes: 0 ok; 1 DIR is not a result folder, or its summary.json or "
+        "cycle.csv\nis not as run writes it (the file and what is wrong named); 2 bad command "
+        "line, or\nanother pistondyn process is writing DIR now; 3 plotting failed (gnuplot "
+        "missing or\nfailing), no figure changed; 130 / 143 interrupted, no figure changed.");
   }
 
   int execute() override {

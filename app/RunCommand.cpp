@@ -71,9 +71,9 @@ void printSummary(const io::EngineDeck& deck, const io::RunOutcome& o, const std
               o.stats.cyclesRun, deck.engine.drive.speed_radps * 30.0 / M_PI, o.rows,
               o.stats.wallTime_s, o.stats.integratorSteps);
   if (deck.fidelity == io::Fidelity::Preview) {
-    std::printf("  fidelity preview: %s\n",
-                deck.fidelityNote.empty() ? "the same as full (the liner has no film grid)"
-                                          : deck.fidelityNote.c_str());
+    std::printf("  fidelity preview: %s\n", deck.fidelityNote.empty()
+                                                ? "the same as full (the liner has no film grid)"
+                                                : deck.fidelityNote.c_str());
   } else {
     std::printf("  fidelity full: the deck as written\n");
   }
@@ -92,10 +92,11 @@ void printSummary(const io::EngineDeck& deck, const io::RunOutcome& o, const std
               s.crankTrainSideForceMax_N, s.crankTrainSideForceMaxAngle_deg,
               s.crankTrainSideForceMin_N, s.crankTrainSideForceMinAngle_deg);
   if (s.liner) {
-    std::printf("  side force on the liner %+.0f N at %.1f deg (thrust), %+.0f N at %.1f deg "
-                "(anti-thrust)\n",
-                s.liner->sideForceMax_N, s.liner->sideForceMaxAngle_deg, s.liner->sideForceMin_N,
-                s.liner->sideForceMinAngle_deg);
+    std::printf(
+        "  side force on the liner %+.0f N at %.1f deg (thrust), %+.0f N at %.1f deg "
+        "(anti-thrust)\n",
+        s.liner->sideForceMax_N, s.liner->sideForceMaxAngle_deg, s.liner->sideForceMin_N,
+        s.liner->sideForceMinAngle_deg);
     printLinerFigures(*s.liner, s, o.stats);
   } else {
     std::printf("  side force on the liner: the model has no liner element\n");
@@ -154,8 +155,9 @@ class RunCommand final : public Subcommand {
       return kExitBadInput;
     // One process at a time writes the folder, from here to the last figure.
     std::optional<io::OutputFolderLock> lock;
-    if (const int refused = lockOutputFolder(outDir_, lock, "--out ",
-                                                  "nothing was simulated or written"); refused != kExitOk)
+    if (const int refused =
+            lockOutputFolder(outDir_, lock, "--out ", "nothing was simulated or written");
+        refused != kExitOk)
       return refused;
     spdlog::info("run: deck {} ({}), liner {}, {} cycle(s) of {} rows, results to {}", deck_,
                  deck->engine.name, deck->linerModel, deck->simulation.cycles,

@@ -35,8 +35,10 @@ int reportCancellation(int signal) {
                  "(results completed before the signal are kept)\n",
                  name);
   } else {
-    std::fprintf(stderr, "pistondyn: interrupted by signal %d: stopped; what was being written "
-                         "was removed\n", signal);
+    std::fprintf(stderr,
+                 "pistondyn: interrupted by signal %d: stopped; what was being written "
+                 "was removed\n",
+                 signal);
   }
   return 128 + signal;
 }

@@ -97,8 +97,8 @@ int main(int argc, char** argv) {
     // Commands that write results stop cleanly on SIGINT / SIGTERM (Signals.h); check
     // and keys write nothing and keep the default (the signal ends them at once).
     const std::string name = c->getName();
-    const bool writes = name == "run" || name == "plot" || name == "report" ||
-                        name == "sweep" || name == "study";
+    const bool writes =
+        name == "run" || name == "plot" || name == "report" || name == "sweep" || name == "study";
     if (writes)
       installCancellationHandlers();
     int code = kExitFailed;

@@ -33,8 +33,8 @@ OutputFolderLock::OutputFolderLock(std::string dir) : dir_(std::move(dir)) {
     for (int attempt = 0; attempt < 100; ++attempt) {
       fd_ = ::open(lockPath_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
       if (fd_ < 0) {
-        throw std::runtime_error(lockPath_ + ": cannot create the output folder's lock file: " +
-                                 std::strerror(errno));
+        throw std::runtime_error(
+            lockPath_ + ": cannot create the output folder's lock file: " + std::strerror(errno));
       }
       if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
         const int err = errno;
@@ -49,7 +49,8 @@ OutputFolderLock::OutputFolderLock(std::string dir) : dir_(std::move(dir)) {
         ::unlink(lockPath_.c_str());
         return;  // no flock() on this file system: unlocked, as documented
       }
-      struct stat held {}, named {};
+      struct stat held {
+      }, named{};
       if (::fstat(fd_, &held) == 0 && ::stat(lockPath_.c_str(), &named) == 0 &&
           held.st_dev == named.st_dev && held.st_ino == named.st_ino)
         return;

@@ -63,7 +63,8 @@ bool isNumberOrNull(const Json& j) {
 }
 
 bool isNumberList(const Json& j) {
-  return j.is_array() && std::all_of(j.begin(), j.end(), [](const Json& e) { return e.is_number(); });
+  return j.is_array() &&
+         std::all_of(j.begin(), j.end(), [](const Json& e) { return e.is_number(); });
 }
 
 // The shape summary.json has when `pistondyn run` wrote it, as far as the figures and the

@@ -154,8 +154,7 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
   r["cycles_run"] = o.stats.cyclesRun;
   r["converged"] = o.stats.converged;                  // until_periodic: the last two agreed
   // null unless converged: no number of cycles to converge is claimed for a run that did not.
-  r["cycles_to_converge"] =
-      o.stats.converged ? Json(o.stats.cyclesToConverge) : Json(nullptr);
+  r["cycles_to_converge"] = o.stats.converged ? Json(o.stats.cyclesToConverge) : Json(nullptr);
   r["rejected_steps"] = o.stats.rejectedSteps;         // linearly_implicit_bdf2's error test
   // linearly_implicit_bdf2: steps retried because an element threw, e.g. a film solve or an
   // elastic coupling that did not converge on a trial step (never silent, issue 12).

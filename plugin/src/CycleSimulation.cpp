@@ -291,11 +291,19 @@ std::vector<std::string> CycleSimulation::getColumns() const {
 }
 
 std::vector<std::string> CycleSimulation::crankTrainColumns() {
-  return {"time_s",          "crank_angle_deg", "crank_speed_rpm",
-          "piston_y_m",      "piston_vy_mps",   "piston_ay_mps2",
-          "u_lat_um",        "tilt_mrad",       "u_tran_um",
-          "conrod_force_N",  "crank_train_side_force_N",
-          "crank_torque_Nm", "drive_torque_Nm"};
+  return {"time_s",
+          "crank_angle_deg",
+          "crank_speed_rpm",
+          "piston_y_m",
+          "piston_vy_mps",
+          "piston_ay_mps2",
+          "u_lat_um",
+          "tilt_mrad",
+          "u_tran_um",
+          "conrod_force_N",
+          "crank_train_side_force_N",
+          "crank_torque_Nm",
+          "drive_torque_Nm"};
 }
 
 void CycleSimulation::calcCrankTrainRow(const mbd::CrankTrain& ct, const SimTK::State& s,

@@ -159,8 +159,7 @@ TEST_F(FirstHourEdges, TwoRunsIntoOneFolderNeverMix) {
   EXPECT_EQ(expectWholeCycleCsv(out / "cycle.csv", 0.25), 6 * 2880 + 1);
   // The first run's own speed (the refused one asked for 3000 rpm).
   const auto summary = nlohmann::json::parse(readFile(out / "summary.json"));
-  EXPECT_NEAR(summary["inputs"]["drive"]["speed_rad_per_s"].get<double>(), 2000 * M_PI / 30,
-              1e-9);
+  EXPECT_NEAR(summary["inputs"]["drive"]["speed_rad_per_s"].get<double>(), 2000 * M_PI / 30, 1e-9);
   EXPECT_EQ(listTree(out), (std::vector<std::string>{"cycle.csv", "summary.json"}));
 }
 
@@ -176,9 +175,9 @@ TEST_F(FirstHourEdges, SignalDuringRunLeavesNothing) {
     ::kill(run, signal);  // delivered when it continues
     ::kill(run, SIGCONT);
     EXPECT_EQ(finish(run), 128 + signal) << output("run");
-    EXPECT_NE(output("run").find(signal == SIGINT ? "interrupted by SIGINT"
-                                                  : "interrupted by SIGTERM"),
-              std::string::npos)
+    EXPECT_NE(
+        output("run").find(signal == SIGINT ? "interrupted by SIGINT" : "interrupted by SIGTERM"),
+        std::string::npos)
         << output("run");
     EXPECT_FALSE(fs::exists(parent)) << "left: " << ::testing::PrintToString(listTree(parent));
   }
@@ -220,10 +219,10 @@ TEST_F(FirstHourEdges, SignalDuringPlotLeavesNoPartialFigureOrTemporaryFolder) {
   for (const std::string command : {"plot", "report"}) {
     for (const int signal : {SIGINT, SIGTERM}) {
       SCOPED_TRACE(command + " " + std::to_string(signal));
-      const pid_t plot = start("env TMPDIR=" + tmp.string() + " PISTONDYN_GNUPLOT=" +
-                                   gnuplot.string() + " " + PISTONDYN_EXE + " " + command + " " +
-                                   out.string(),
-                               "plot");
+      const pid_t plot =
+          start("env TMPDIR=" + tmp.string() + " PISTONDYN_GNUPLOT=" + gnuplot.string() + " " +
+                    PISTONDYN_EXE + " " + command + " " + out.string(),
+                "plot");
       // The stand-in has started: the staged figures exist.
       for (bool started = false; !started;) {
         for (const auto& e : fs::directory_iterator(tmp))
@@ -250,9 +249,10 @@ TEST_F(FirstHourEdges, SignalDuringSweepRemovesTheRunningCase) {
                                         "  simulation.output_step_deg: 0.25\n"
                                         "cartesian:\n  drive.speed_rpm: [2000, 3000]\n";
   const fs::path out = dir_ / "sweep";
-  const pid_t sweep = start(std::string(PISTONDYN_EXE) + " sweep " + (dir_ / "sweep.yaml").string() +
-                                " --out " + out.string() + " --jobs 1 --quiet --no-plot",
-                            "sweep");
+  const pid_t sweep =
+      start(std::string(PISTONDYN_EXE) + " sweep " + (dir_ / "sweep.yaml").string() + " --out " +
+                out.string() + " --jobs 1 --quiet --no-plot",
+            "sweep");
   ASSERT_TRUE(waitFor(out / "case_0001" / ".cycle.csv.partial", sweep, 20000)) << output("sweep");
   ::kill(sweep, SIGSTOP);
   ::kill(sweep, SIGINT);
@@ -343,9 +343,9 @@ TEST_F(FirstHourEdges, AnOutFolderOnProcIsARefusedOut) {
                                         "cartesian:\n  drive.speed_rpm: [2000, 3000]\n";
   const std::string out = "/proc/pistondyn_test_" + std::to_string(::getpid()) + "/results";
   for (const std::string& command :
-       {runCommand(out, "--quiet --no-plot"),
-        std::string(PISTONDYN_EXE) + " sweep " + (dir_ / "sweep.yaml").string() + " --out " + out +
-            " --quiet --no-plot"}) {
+       {runCommand(out, "--quiet --no-plot"), std::string(PISTONDYN_EXE) + " sweep " +
+                                                  (dir_ / "sweep.yaml").string() + " --out " + out +
+                                                  " --quiet --no-plot"}) {
     SCOPED_TRACE(command);
     const pid_t p = start(command, "p");
     EXPECT_EQ(finish(p), 2) << output("p");
@@ -426,9 +426,8 @@ TEST_F(FirstHourSkirtEdges, PreviewFidelityIsRecordedAndPrinted) {
             std::string::npos)
       << check.out;
   const fs::path out = dir_ / "results";
-  ASSERT_EQ(runProgram(grid +
-                           " --set simulation.until_periodic=false --set simulation.cycles=1"
-                           " --set simulation.output_step_deg=4 --fidelity preview",
+  ASSERT_EQ(runProgram(grid + " --set simulation.until_periodic=false --set simulation.cycles=1"
+                              " --set simulation.output_step_deg=4 --fidelity preview",
                        out),
             0)
       << programStderr();

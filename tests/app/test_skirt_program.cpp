@@ -217,8 +217,8 @@ TEST_F(SkirtScratchDeck, AShortRunWritesEverySkirtFigure) {
        {"fmep_kPa", "friction_power_mean_W", "min_h_over_sigma_thrust",
         "min_h_over_sigma_antithrust", "min_film_thickness_thrust_um",
         "min_film_thickness_antithrust_um", "max_abs_u_lat_um", "max_abs_tilt_deg",
-        "slap_energy_max_mJ", "hot_clearance_um", "cycles_run", "film_solves",
-        "film_fallbacks", "film_derivative_failures", "rejected_steps", "wall_time_s"})
+        "slap_energy_max_mJ", "hot_clearance_um", "cycles_run", "film_solves", "film_fallbacks",
+        "film_derivative_failures", "rejected_steps", "wall_time_s"})
     finiteNumber(r, key);
   for (const char* key :
        {"min_h_over_sigma_thrust_crank_angle_deg", "min_h_over_sigma_antithrust_crank_angle_deg",

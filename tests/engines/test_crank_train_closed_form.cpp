@@ -383,9 +383,9 @@ TEST(FreeCrank, CycleEnergyBalanceWithGasAndLoad) {
 // gasoline deck with a rod of 1e-6 g (allowed as implausible) on the ideal guide; the rod
 // angle from the closed-form kinematics above (tan = (P - C).x / (P - C).y).
 TEST(CrankTrainSideForce, IsTheAxialLoadTimesTanRodAngleForAMasslessRod) {
-  const EngineDeck deck = loadGasolineDeck(
-      {"conrod.mass_g=1e-6", "conrod.inertia_kg_mm2=1e-9",
-       "checks.allow_implausible=[conrod.mass_g, conrod.inertia_kg_mm2]"});
+  const EngineDeck deck =
+      loadGasolineDeck({"conrod.mass_g=1e-6", "conrod.inertia_kg_mm2=1e-9",
+                        "checks.allow_implausible=[conrod.mass_g, conrod.inertia_kg_mm2]"});
   auto model = pistondyn::io::buildModel(deck);
   pistondyn::plugin::SimulationSettings settings = deck.simulation;
   pistondyn::plugin::CycleSimulation sim(*model, settings);

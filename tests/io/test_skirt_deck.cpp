@@ -265,18 +265,21 @@ TEST_F(SkirtScratchDeck, PreviewFidelityHalvesTheFilmGridNotBelowSixteenByTwelve
     EXPECT_EQ(preview.overrides, expected);
     auto model = io::buildModel(preview);
     model->buildSystem();
-    const auto& grid =
-        model->getElementAs<plugin::LubricatedSkirtElement>("lubricated_skirt").getParameters().grid;
+    const auto& grid = model->getElementAs<plugin::LubricatedSkirtElement>("lubricated_skirt")
+                           .getParameters()
+                           .grid;
     EXPECT_EQ(grid.nPhi, c.previewPhi);
     EXPECT_EQ(grid.nY, c.previewY);
-    EXPECT_NE(preview.fidelityNote.find("film grid " + std::to_string(c.previewPhi) + " x " +
-                                        std::to_string(c.previewY) + " nodes per side, the deck's " +
-                                        std::to_string(c.phi) + " x " + std::to_string(c.y)),
-              std::string::npos)
+    EXPECT_NE(
+        preview.fidelityNote.find("film grid " + std::to_string(c.previewPhi) + " x " +
+                                  std::to_string(c.previewY) + " nodes per side, the deck's " +
+                                  std::to_string(c.phi) + " x " + std::to_string(c.y)),
+        std::string::npos)
         << preview.fidelityNote;
   }
-  const io::EngineDeck guide = io::loadEngineDeck(
-      deck(), {"liner.model=ideal_guide", "simulation.integrator=rk_merson"}, io::Fidelity::Preview);
+  const io::EngineDeck guide =
+      io::loadEngineDeck(deck(), {"liner.model=ideal_guide", "simulation.integrator=rk_merson"},
+                         io::Fidelity::Preview);
   EXPECT_EQ(guide.fidelity, io::Fidelity::Preview);
   EXPECT_TRUE(guide.fidelityNote.empty());
   EXPECT_EQ(guide.overrides.size(), 2u);

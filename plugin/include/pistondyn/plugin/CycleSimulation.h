@@ -16,8 +16,8 @@
 //
 // Rows are taken at the crank angles start + k * step: with a constant-speed crank at
 // the matching times, with a free crank by iterating the time until the crank angle
-// is reached to 1e-12 rad (relative beyond 1 rad: 1e-12 |theta|). crank_angle_deg holds that nominal angle, unwrapped (it
-// keeps growing past 720 deg over several cycles).
+// is reached to 1e-12 rad (relative beyond 1 rad: 1e-12 |theta|). crank_angle_deg holds that
+// nominal angle, unwrapped (it keeps growing past 720 deg over several cycles).
 //
 // Periodic steady state (SimulationSettings::untilPeriodic): cycles are run until two
 // consecutive cycles agree - fmep (from the liner element's friction work, LinerElement.h)

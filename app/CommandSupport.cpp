@@ -110,9 +110,10 @@ void addFidelityOption(CLI::App& command, std::string& fidelity) {
   command
       .add_option("--fidelity", fidelity,
                   "full: the deck as written (default); preview: a quick look with the film "
-                  "grid halved each way (not below 16 x 12 nodes per side), recorded in "
-                  "summary.json (fidelity, fidelity_note, the grid among inputs and "
-                  "overrides); a liner without a film grid runs the same at both")
+                  "grid halved each way (not below 16 x 12 nodes per side), recorded among the "
+                  "overrides and inputs of summary.json (sweeps: of every case, and in "
+                  "sweep.json) and said by run's summary; a liner without a film grid runs "
+                  "the same at both")
       ->check(CLI::IsMember({"full", "preview"}))
       ->type_name("full|preview");
 }

@@ -46,6 +46,7 @@ class StudyCommand final : public Subcommand {
         ->check(CLI::PositiveNumber)
         ->type_name("N");
     addSetOption(*app_, options_.overrides);
+    addFidelityOption(*app_, options_.fidelity);
     app_->add_flag("--quiet", options_.quiet, "no progress lines (default: one line per case)");
     app_->add_flag("--no-plot", options_.noPlot,
                    "no comparison figures (default: drawn with gnuplot; a missing gnuplot is a "

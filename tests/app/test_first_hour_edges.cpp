@@ -445,6 +445,38 @@ TEST_F(FirstHourSkirtEdges, PreviewFidelityIsRecordedAndPrinted) {
   EXPECT_EQ(invokeInScratch("check " + deck() + " --fidelity coarse").exitCode, 2);
 }
 
+// sweep --fidelity preview: the preview grid joins the overrides every case shares (and so
+// the fingerprint); a sweep that varies the grid itself is refused.
+TEST_F(FirstHourSkirtEdges, PreviewSweepSharesThePreviewGrid) {
+  std::ofstream(dir_ / "sweep.yaml")
+      << "base_deck: engine.yaml\n"
+         "set:\n  liner.grid.nodes_circumferential: 32\n  liner.grid.nodes_axial: 24\n"
+         "  simulation.until_periodic: false\n  simulation.cycles: 1\n"
+         "  simulation.output_step_deg: 4\n"
+         "cases:\n  - {piston.mass_g: 210}\n";
+  const ProgramRun r =
+      invokeInScratch("sweep sweep.yaml --out preview --fidelity preview --quiet --no-plot");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto sweep = nlohmann::json::parse(readFile(dir_ / "preview" / "sweep.json"));
+  const std::string text = sweep.dump();
+  EXPECT_NE(text.find("liner.grid.nodes_circumferential=16"), std::string::npos) << text;
+  EXPECT_NE(text.find("liner.grid.nodes_axial=12"), std::string::npos) << text;
+  const auto summary =
+      nlohmann::json::parse(readFile(dir_ / "preview" / "case_0001" / "summary.json"));
+  EXPECT_EQ(summary["inputs"]["liner"]["grid"]["nodes_circumferential"], 16);
+  EXPECT_EQ(summary["inputs"]["liner"]["grid"]["nodes_axial"], 12);
+  // The full sweep into the same folder is another sweep: refused, never mixed.
+  EXPECT_EQ(invokeInScratch("sweep sweep.yaml --out preview --quiet --no-plot").exitCode, 2);
+  std::ofstream(dir_ / "grid.yaml") << "base_deck: engine.yaml\n"
+                                       "cartesian:\n  liner.grid.nodes_axial: [12, 24]\n";
+  const ProgramRun grid = invokeInScratch("sweep grid.yaml --list --fidelity preview");
+  EXPECT_EQ(grid.exitCode, 1);
+  EXPECT_NE(grid.err.find("--fidelity preview coarsens the film grid every case shares, but "
+                          "this sweep varies it"),
+            std::string::npos)
+      << grid.err;
+}
+
 // A compliance whose Matrix Market header claims 20000 x 20000 with one entry, beside a
 // node table of 4 nodes: refused from the size line, before the 3.2 GB matrix is
 // allocated - checked under a 1.5 GB address-space limit, where the allocation would fail

@@ -1,4 +1,5 @@
-// pistondyn check DECK.yaml [--set key.path=value]... [--log-level LEVEL]
+// pistondyn check DECK.yaml [--set key.path=value]... [--fidelity full|preview]
+//                 [--log-level LEVEL]
 
 #include <iostream>
 
@@ -18,6 +19,7 @@ class CheckCommand final : public Subcommand {
         ->required()
         ->type_name("DECK.yaml");
     addSetOption(*app_, overrides_);
+    addFidelityOption(*app_, fidelity_);
     addLogLevelOption(*app_, logLevel_);
     app_->set_help_flag("-h,--help", "print this help and exit");
     app_->footer(deckHelpFooter());
@@ -25,17 +27,19 @@ class CheckCommand final : public Subcommand {
 
   int execute() override {
     setUpLogging(logLevel_);
-    const auto deck = loadDeckOrReport(deck_, overrides_);
+    const auto deck = loadDeckOrReport(deck_, overrides_, toFidelity(fidelity_));
     if (!deck)
       return kExitBadInput;
     std::cout << "pistondyn: " << deck_
               << " is valid (imep from its pressure table: " << io::calcDeckImep_Pa(*deck) / 1e3
               << " kPa)\n";
+    if (!deck->fidelityNote.empty())
+      std::cout << "  fidelity preview: " << deck->fidelityNote << "\n";
     return kExitOk;
   }
 
  private:
-  std::string deck_, logLevel_ = "warn";
+  std::string deck_, logLevel_ = "warn", fidelity_ = "full";
   std::vector<std::string> overrides_;
 };
 

@@ -2,10 +2,15 @@
 
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
 
+#include "Subcommand.h"
 #include "pistondyn/io/DeckError.h"
 #include "pistondyn/io/DeckReference.h"
 #include "pistondyn/io/LinerRegistry.h"
@@ -13,9 +18,10 @@
 namespace pistondyn::app {
 
 std::optional<io::EngineDeck> loadDeckOrReport(const std::string& deckPath,
-                                               const std::vector<std::string>& overrides) {
+                                               const std::vector<std::string>& overrides,
+                                               io::Fidelity fidelity) {
   try {
-    return io::loadEngineDeck(deckPath, overrides);
+    return io::loadEngineDeck(deckPath, overrides, fidelity);
   } catch (const io::DeckError& e) {
     std::cerr << "pistondyn: the deck was rejected; nothing was simulated or written:\n"
               << e.what() << "\n";
@@ -53,8 +59,10 @@ std::string deckHelpFooter() {
          ".\nEvery key with its unit, default and range: `pistondyn keys`.\n"
          "liner.model (default ideal_guide):" +
          models +
-         "\nExit codes: 0 ok; 1 bad input, nothing written; 2 bad command line; 3 run failed, "
-         "nothing written.";
+         "\nExit codes: 0 ok; 1 bad input, nothing written; 2 bad command line, or an output\n"
+         "folder that is a file, not writable or in use by another pistondyn process, nothing\n"
+         "written; 3 run failed, nothing written; 130 / 143 interrupted by SIGINT / SIGTERM,\n"
+         "what was being written removed.";
 }
 
 std::string findOutputFolderProblem(const std::string& dir) {
@@ -74,7 +82,44 @@ std::string findOutputFolderProblem(const std::string& dir) {
     return "cannot be created: " + p.string() + " is a file, not a folder";
   if (::access(p.c_str(), W_OK | X_OK) != 0)
     return "cannot be written: no permission to write in " + p.string();
+  // access() says yes to root everywhere, and knows nothing of read-only or virtual file
+  // systems (/proc, /sys): a folder made and removed again answers for sure.
+  std::string probe = (p / ".pistondyn_probe_XXXXXX").string();
+  if (::mkdtemp(probe.data()) == nullptr)
+    return "cannot be written: no folder can be made in " + p.string() + " (" +
+           std::strerror(errno) + ")";
+  ::rmdir(probe.c_str());
   return {};
+}
+
+int lockOutputFolder(const std::string& dir, std::optional<io::OutputFolderLock>& lock,
+                     const std::string& option, const std::string& notDone) {
+  try {
+    lock.emplace(dir);
+    return kExitOk;
+  } catch (const io::OutputFolderBusy& e) {
+    std::cerr << "pistondyn: " << option << e.what() << "; " << notDone << "\n";
+  } catch (const std::exception& e) {
+    std::cerr << "pistondyn: " << option << dir << " cannot be written: " << e.what() << "; "
+              << notDone << "\n";
+  }
+  return kExitUsage;
+}
+
+void addFidelityOption(CLI::App& command, std::string& fidelity) {
+  command
+      .add_option("--fidelity", fidelity,
+                  "full: the deck as written (default); preview: a quick look with the film "
+                  "grid halved each way (not below 16 x 12 nodes per side), recorded among the "
+                  "overrides and inputs of summary.json (sweeps: of every case, and in "
+                  "sweep.json) and said by run's summary; a liner without a film grid runs "
+                  "the same at both")
+      ->check(CLI::IsMember({"full", "preview"}))
+      ->type_name("full|preview");
+}
+
+io::Fidelity toFidelity(const std::string& fidelity) {
+  return fidelity == "preview" ? io::Fidelity::Preview : io::Fidelity::Full;
 }
 
 void addSetOption(CLI::App& command, std::vector<std::string>& overrides) {

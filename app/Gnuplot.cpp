@@ -1,5 +1,7 @@
 #include "Gnuplot.h"
 
+#include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -10,6 +12,8 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include "pistondyn/common/Cancellation.h"
 
 extern char** environ;
 
@@ -58,9 +62,22 @@ void runGnuplot(const std::string& gnuplot, const std::string& scriptPath,
   posix_spawn_file_actions_destroy(&actions);
   if (rc != 0)
     throw std::runtime_error(gnuplot + ": cannot start gnuplot");
+  // Waited for in short polls, so that SIGINT / SIGTERM (common/Cancellation.h) stop it:
+  // gnuplot is ended too, and the caller's cleanup removes what it was drawing.
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0) {
+  for (;;) {
+    const pid_t done = ::waitpid(pid, &status, WNOHANG);
+    if (done == pid || (done < 0 && errno != EINTR))
+      break;
+    if (common::isCancellationRequested()) {
+      ::kill(pid, SIGTERM);
+      while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+      }
+      common::throwIfCancelled();
+    }
+    ::usleep(20000);
   }
+  common::throwIfCancelled();  // gnuplot ended by the same Ctrl-C (its process group's)
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     std::ifstream in(logPath);
     std::stringstream ss;

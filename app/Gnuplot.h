@@ -18,7 +18,8 @@ class GnuplotMissing : public std::runtime_error {
 std::string findGnuplot();
 
 // Runs `gnuplot scriptPath`, its output going to logPath. Throws std::runtime_error with
-// gnuplot's messages if it cannot start or exits with an error.
+// gnuplot's messages if it cannot start or exits with an error, common::Cancelled (after
+// ending gnuplot) when SIGINT / SIGTERM asked the program to stop meanwhile.
 void runGnuplot(const std::string& gnuplot, const std::string& scriptPath,
                 const std::string& logPath);
 

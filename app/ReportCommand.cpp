@@ -2,14 +2,17 @@
 
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include <spdlog/spdlog.h>
 
+#include "CommandSupport.h"
 #include "Gnuplot.h"
 #include "HtmlReport.h"
 #include "Logging.h"
 #include "ResultPlots.h"
 #include "Subcommand.h"
+#include "pistondyn/common/Cancellation.h"
 #include "pistondyn/io/ResultWriters.h"
 
 namespace pistondyn::app {
@@ -34,14 +37,22 @@ class ReportCommand final : public Subcommand {
         "and the resolved inputs in SI. The animation draws the\n"
         "piston over the last cycle, lateral motion, clearance and tilt exaggerated by the\n"
         "factor the page states. Exit codes: 0 ok; 1 DIR is not a result folder; 2 bad\n"
-        "command line; 3 writing failed.");
+        "command line, or another pistondyn process is writing DIR now; 3 writing failed.");
   }
 
   int execute() override {
     setUpLogging(logLevel_);
+    // One process at a time writes the folder (a run finishing there, another plot).
+    std::optional<io::OutputFolderLock> lock;
+    if (std::filesystem::is_directory(dir_)) {
+      if (const int refused = lockOutputFolder(dir_, lock, "", "nothing was written");
+          refused != kExitOk)
+        return refused;
+    }
     io::ResultFolder folder;
     try {
       folder = io::readResultFolder(dir_);
+      checkResultPlotColumns(folder);
     } catch (const std::exception& e) {
       std::cerr << "pistondyn: cannot write a report: " << e.what() << "\n";
       return kExitBadInput;
@@ -50,12 +61,17 @@ class ReportCommand final : public Subcommand {
     std::string note;
     try {
       pngs = writeResultPlots(folder);
+    } catch (const common::Cancelled&) {
+      throw;  // main reports it; no figure changed, no report written
     } catch (const std::exception& e) {
       note = std::string("No plots: ") + e.what();
       std::cerr << "pistondyn: the report has no plots: " << e.what() << "\n";
     }
     try {
+      common::throwIfCancelled();
       io::writeFilesAtomically(dir_, {{"report.html", makeHtmlReport(folder, pngs, note)}});
+    } catch (const common::Cancelled&) {
+      throw;
     } catch (const std::exception& e) {
       std::cerr << "pistondyn: the report could not be written: " << e.what() << "\n";
       return kExitFailed;

@@ -22,11 +22,19 @@ using namespace plot;
 
 // ---- figure descriptions ----------------------------------------------------------
 
+// Which runs a figure or series belongs to: every run, runs with a liner element (the
+// summary has side-force figures), or runs of one liner model (inputs.liner.model). A run
+// it belongs to must have its columns (checkResultPlotColumns).
+constexpr const char* kEveryRun = "";
+constexpr const char* kRunsWithALiner = "a liner element";
+constexpr const char* kSkirt = "lubricated_skirt";
+
 struct Series {
   std::string output;  // output name without unit
   std::string title;
   std::string colour;
   int dashType = 1;
+  std::string belongsTo = kEveryRun;
 };
 struct ReferenceLine {
   double value;
@@ -45,6 +53,7 @@ struct Figure {
   std::string title;
   std::string requiredOutput;  // the figure is drawn only if this output exists
   std::vector<Panel> panels;
+  std::string belongsTo = kEveryRun;
 };
 
 std::vector<Figure> describeFigures(const io::ResultFolder& f) {
@@ -57,7 +66,8 @@ std::vector<Figure> describeFigures(const io::ResultFolder& f) {
          "kN",
          {{"gas_force", "gas force on the crown (+ down)", kBlue},
           {"conrod_force", "conrod force (+ compression)", kOrange},
-          {"side_force", "side force on the liner (+ thrust)", kGreen}},
+          {"crank_train_side_force", "crank-train side force, from the rod (+ thrust)", kPurple},
+          {"side_force", "side force on the liner (+ thrust)", kGreen, 2, kRunsWithALiner}},
          {},
          0,
          ""},
@@ -75,20 +85,22 @@ std::vector<Figure> describeFigures(const io::ResultFolder& f) {
        {{"force",
          "N",
          {{"side_force", "side force on the liner (+ thrust)", "black"},
-          {"hydrodynamic_normal_force_thrust", "film, thrust side", kBlue},
-          {"hydrodynamic_normal_force_antithrust", "film, anti-thrust side", kOrange},
-          {"asperity_normal_force_thrust", "asperities, thrust side", kBlue, 2},
-          {"asperity_normal_force_antithrust", "asperities, anti-thrust side", kOrange, 2}},
+          {"hydrodynamic_normal_force_thrust", "film, thrust side", kBlue, 1, kSkirt},
+          {"hydrodynamic_normal_force_antithrust", "film, anti-thrust side", kOrange, 1, kSkirt},
+          {"asperity_normal_force_thrust", "asperities, thrust side", kBlue, 2, kSkirt},
+          {"asperity_normal_force_antithrust", "asperities, anti-thrust side", kOrange, 2,
+           kSkirt}},
          {},
          0,
          ""},
         {"moment on the liner about +z",
          "Nm",
-         {{"guide_moment", "guide moment (about the pin axis)", kPurple},
-          {"liner_moment", "skirt moment (about the pin axis)", kPurple}},
+         {{"guide_moment", "guide moment (about the pin axis)", kPurple, 1, "ideal_guide"},
+          {"liner_moment", "skirt moment (about the pin axis)", kPurple, 1, kSkirt}},
          {},
          0,
-         ""}}});
+         ""}},
+       kRunsWithALiner});
   std::vector<ReferenceLine> clearance;
   const std::string hot = f.getSummaryValue("results.hot_clearance_um");
   if (!hot.empty()) {
@@ -106,7 +118,8 @@ std::vector<Figure> describeFigures(const io::ResultFolder& f) {
                        clearance,
                        0,
                        ""},
-                      {"tilt", "mrad", {{"tilt", "tilt", kGreen}}, {}, 0, ""}}});
+                      {"tilt", "mrad", {{"tilt", "tilt", kGreen}}, {}, 0, ""}},
+                     kSkirt});
   figures.push_back({"friction",
                      "Skirt friction",
                      "friction_force",
@@ -119,7 +132,8 @@ std::vector<Figure> describeFigures(const io::ResultFolder& f) {
                        0,
                        ""},
                       {"friction power", "W", {{"friction_power", "friction power", kPurple}}, {},
-                       0, ""}}});
+                       0, ""}},
+                     kSkirt});
   figures.push_back(
       {"film_thickness",
        "Minimum film thickness and h/σ",
@@ -137,9 +151,10 @@ std::vector<Figure> describeFigures(const io::ResultFolder& f) {
           {"min_h_over_sigma_antithrust", "anti-thrust side", kOrange}},
          {{1.0, "h/σ = 1 and 3 (regime limits)"}, {3.0, ""}},
          0,
-         ""}}});
+         ""}},
+       kSkirt});
   Figure regimes{"regime_shares", "Lubrication regimes: area shares of each skirt side",
-                 "hydrodynamic_share_thrust", {}};
+                 "hydrodynamic_share_thrust", {}, kSkirt};
   for (const auto& [side, label] : {std::pair<std::string, std::string>{"thrust", "thrust side"},
                                     {"antithrust", "anti-thrust side"}}) {
     regimes.panels.push_back({"area share, " + label,
@@ -309,7 +324,56 @@ void writeFieldMap(double angle_deg, const std::vector<const io::FieldDumpFile*>
 
 }  // namespace
 
+void checkResultPlotColumns(const io::ResultFolder& folder) {
+  const std::string model = folder.getSummaryValue("inputs.liner.model");
+  const bool hasLiner = !folder.getSummaryValue("results.side_force_max_N").empty();
+  auto belongs = [&](const std::string& to) {
+    return to == kEveryRun || (to == kRunsWithALiner && hasLiner) || to == model;
+  };
+  const std::string csv = (fs::path(folder.directory) / "cycle.csv").string();
+  auto run = [&](const std::string& to) {
+    return to == kEveryRun ? std::string("every run")
+           : to == kRunsWithALiner ? "a run with a liner element"
+                                   : "a run of liner model " + to;
+  };
+  for (const Figure& fig : describeFigures(folder)) {
+    if (!belongs(fig.belongsTo))
+      continue;
+    for (const Panel& panel : fig.panels) {
+      for (const Series& s : panel.series) {
+        if (!belongs(s.belongsTo))
+          continue;
+        const std::string what = "the figure " + fig.name + ".png (" + panel.quantity +
+                                 ") of " + run(s.belongsTo.empty() ? fig.belongsTo : s.belongsTo);
+        if (!hasOutput(folder.cycle, s.output)) {
+          throw io::ResultFolderError(csv + ": no column " + s.output + "_<unit>, which " + what +
+                                      " needs; nothing was drawn");
+        }
+        if (!findOutput(folder.cycle, s.output, panel.unit)) {
+          throw io::ResultFolderError(csv + ": the column of " + s.output +
+                                      " is not in a unit of " + displayUnit(panel.unit) +
+                                      "'s kind, which " + what + " needs; nothing was drawn");
+        }
+      }
+    }
+  }
+  // The maps of the field dumps: their node coordinates and the three fields.
+  for (const io::FieldDumpFile& d : folder.fieldDumps) {
+    const io::CsvTable t = io::readCsvTable(d.path, {"phi_deg", "y_mm"});
+    for (const auto& [output, unit] : {std::pair<const char*, const char*>{"film_pressure", "MPa"},
+                                       {"fill_fraction", ""},
+                                       {"gap", "um"}}) {
+      if (!findOutput(t, output, unit)) {
+        throw io::ResultFolderError(d.path + ": no column " + output +
+                                    "_<unit> (or not in a unit of its kind), which its field map "
+                                    "needs; nothing was drawn");
+      }
+    }
+  }
+}
+
 std::vector<std::string> writeResultPlots(const io::ResultFolder& folder) {
+  checkResultPlotColumns(folder);
   const std::string gnuplot = findGnuplot();
   const io::CycleWindow window = io::selectLastCycle(folder.cycle);
   const fs::path plotDir = fs::path(folder.directory) / "plots";

@@ -1,7 +1,8 @@
 #pragma once
 // The figures of a run's result folder, drawn by gnuplot (pngcairo) into DIR/plots/:
 //
-//   crank_train_forces.png  gas, conrod and side force; crank and drive torque
+//   crank_train_forces.png  gas, conrod force, the crank train's side force (from the rod)
+//                           and the side force on the liner; crank and drive torque
 //   side_force.png          side force (and, for the lubricated skirt, film and asperity
 //                           normal forces per side); the liner's moment
 //   secondary_motion.png    lateral displacement at skirt top, pin and skirt bottom; tilt
@@ -23,9 +24,18 @@
 
 namespace pistondyn::app {
 
+// Checks that the folder has every column its figures need: the crank-train and gas
+// columns of every run, the side force of a run with a liner element (results has side-
+// force figures), the ideal guide's moment, the lubricated skirt's columns of the figures
+// above (inputs.liner.model), and the field dumps' coordinates and fields - each in a unit
+// the axis can convert. Throws io::ResultFolderError naming the file and the column (a
+// figure is never dropped silently because a column is missing).
+void checkResultPlotColumns(const io::ResultFolder& folder);
+
 // Writes the figures into <folder.directory>/plots/ all-or-nothing (earlier PNGs there are
 // replaced; figures this run has no data for are removed). Returns the paths written, in
-// the order above. Throws GnuplotMissing (Gnuplot.h) or std::runtime_error.
+// the order above. Throws io::ResultFolderError (checkResultPlotColumns), GnuplotMissing
+// (Gnuplot.h) or std::runtime_error.
 std::vector<std::string> writeResultPlots(const io::ResultFolder& folder);
 
 }  // namespace pistondyn::app

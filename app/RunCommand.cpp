@@ -1,10 +1,11 @@
-// pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--quiet] [--no-plot]
-//               [--log-level LEVEL]
+// pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--fidelity full|preview]
+//               [--quiet] [--no-plot] [--log-level LEVEL]
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include <unistd.h>
 
@@ -15,6 +16,8 @@
 #include "ProgressLine.h"
 #include "ResultPlots.h"
 #include "Subcommand.h"
+#include "pistondyn/common/Cancellation.h"
+#include "pistondyn/io/OutputFolderLock.h"
 #include "pistondyn/io/ResultFolder.h"
 #include "pistondyn/io/RunDeck.h"
 
@@ -67,6 +70,13 @@ void printSummary(const io::EngineDeck& deck, const io::RunOutcome& o, const std
   std::printf("  %d cycle(s) at %.0f rpm, %ld rows, %.3f s wall time, %ld integrator steps\n",
               o.stats.cyclesRun, deck.engine.drive.speed_radps * 30.0 / M_PI, o.rows,
               o.stats.wallTime_s, o.stats.integratorSteps);
+  if (deck.fidelity == io::Fidelity::Preview) {
+    std::printf("  fidelity preview: %s\n", deck.fidelityNote.empty()
+                                                ? "the same as full (the liner has no film grid)"
+                                                : deck.fidelityNote.c_str());
+  } else {
+    std::printf("  fidelity full: the deck as written\n");
+  }
   if (deck.simulation.untilPeriodic) {
     if (o.stats.converged) {
       std::printf("  periodic after %d cycles (of at most %d)\n", o.stats.cyclesToConverge,
@@ -78,13 +88,18 @@ void printSummary(const io::EngineDeck& deck, const io::RunOutcome& o, const std
   }
   std::printf("  imep %.1f kPa   peak cylinder pressure %.2f bar at %.1f deg\n", s.imep_Pa / 1e3,
               s.peakCylinderPressure_Pa / 1e5, s.peakCylinderPressureAngle_deg);
+  std::printf("  crank-train side force (from the rod) %+.0f N at %.1f deg, %+.0f N at %.1f deg\n",
+              s.crankTrainSideForceMax_N, s.crankTrainSideForceMaxAngle_deg,
+              s.crankTrainSideForceMin_N, s.crankTrainSideForceMinAngle_deg);
   if (s.liner) {
-    std::printf("  side force %+.0f N at %.1f deg (thrust), %+.0f N at %.1f deg (anti-thrust)\n",
-                s.liner->sideForceMax_N, s.liner->sideForceMaxAngle_deg, s.liner->sideForceMin_N,
-                s.liner->sideForceMinAngle_deg);
+    std::printf(
+        "  side force on the liner %+.0f N at %.1f deg (thrust), %+.0f N at %.1f deg "
+        "(anti-thrust)\n",
+        s.liner->sideForceMax_N, s.liner->sideForceMaxAngle_deg, s.liner->sideForceMin_N,
+        s.liner->sideForceMinAngle_deg);
     printLinerFigures(*s.liner, s, o.stats);
   } else {
-    std::printf("  side force: the model has no liner element\n");
+    std::printf("  side force on the liner: the model has no liner element\n");
   }
   std::printf("  conrod force %+.0f .. %+.0f N   mean crank torque %.2f N m   power %.2f kW\n",
               s.conrodForceMin_N, s.conrodForceMax_N, s.meanCrankTorque_Nm,
@@ -113,6 +128,7 @@ class RunCommand final : public Subcommand {
         ->required()
         ->type_name("DIR");
     addSetOption(*app_, overrides_);
+    addFidelityOption(*app_, fidelity_);
     app_->add_flag("--quiet", quiet_,
                    "no progress line on stderr; the summary on stdout, warnings and errors "
                    "stay (default: runs longer than 1 s show cycle, crank angle and the "
@@ -134,9 +150,15 @@ class RunCommand final : public Subcommand {
                 << "; nothing was simulated or written\n";
       return kExitUsage;
     }
-    const auto deck = loadDeckOrReport(deck_, overrides_);
+    const auto deck = loadDeckOrReport(deck_, overrides_, toFidelity(fidelity_));
     if (!deck)
       return kExitBadInput;
+    // One process at a time writes the folder, from here to the last figure.
+    std::optional<io::OutputFolderLock> lock;
+    if (const int refused =
+            lockOutputFolder(outDir_, lock, "--out ", "nothing was simulated or written");
+        refused != kExitOk)
+      return refused;
     spdlog::info("run: deck {} ({}), liner {}, {} cycle(s) of {} rows, results to {}", deck_,
                  deck->engine.name, deck->linerModel, deck->simulation.cycles,
                  deck->simulation.stepsPerCycle(), outDir_);
@@ -150,6 +172,9 @@ class RunCommand final : public Subcommand {
       const io::RunOutcome outcome = io::runDeck(*deck, outDir_, {}, sinks);
       progress.finish();
       printSummary(*deck, outcome, outDir_);
+    } catch (const common::Cancelled&) {
+      progress.finish();
+      throw;  // main reports it; the folder is as it was
     } catch (const std::exception& e) {
       progress.finish();
       std::cerr << "pistondyn: the run failed; no results were written: " << e.what() << "\n";
@@ -160,6 +185,8 @@ class RunCommand final : public Subcommand {
       try {
         const auto files = writeResultPlots(io::readResultFolder(outDir_));
         std::printf("  and %zu figures (%s/plots/*.png)\n", files.size(), outDir_.c_str());
+      } catch (const common::Cancelled&) {
+        throw;
       } catch (const std::exception& e) {
         std::fflush(stdout);
         std::cerr << "pistondyn: warning: no plots (the results are written; `pistondyn plot "
@@ -172,7 +199,7 @@ class RunCommand final : public Subcommand {
  private:
   std::string deck_, outDir_;
   std::vector<std::string> overrides_;
-  std::string logLevel_ = "warn";
+  std::string logLevel_ = "warn", fidelity_ = "full";
   bool quiet_ = false, noPlot_ = false;
 };
 

@@ -15,6 +15,7 @@
 #include "ComparisonPlots.h"
 #include "Subcommand.h"
 #include "SweepSupport.h"
+#include "pistondyn/common/Cancellation.h"
 #include "pistondyn/io/ResultWriters.h"
 #include "pistondyn/io/StudyComparison.h"
 
@@ -45,6 +46,7 @@ class StudyCommand final : public Subcommand {
         ->check(CLI::PositiveNumber)
         ->type_name("N");
     addSetOption(*app_, options_.overrides);
+    addFidelityOption(*app_, options_.fidelity);
     app_->add_flag("--quiet", options_.quiet, "no progress lines (default: one line per case)");
     app_->add_flag("--no-plot", options_.noPlot,
                    "no comparison figures (default: drawn with gnuplot; a missing gnuplot is a "
@@ -60,7 +62,9 @@ class StudyCommand final : public Subcommand {
         "and tilt (mrad), friction power (W), minimum film (um) and h/sigma per side.\n"
         "Exit codes: 0 every case ok; 1 bad input (study deck, a case's deck), nothing\n"
         "written; 2 bad command line or a refused --out, nothing written; 3 the folder or a\n"
-        "table could not be written; 4 some cases failed (listed, the others compared).");
+        "table could not be written; 4 some cases failed (listed, the others compared); 130 / 143\n"
+        "interrupted by SIGINT / SIGTERM (the running cases removed, the finished kept: rerun to\n"
+        "resume).");
   }
 
   int execute() override {
@@ -82,6 +86,8 @@ class StudyCommand final : public Subcommand {
                                 {"comparison.md", io::makeComparisonMarkdown(comparison)}});
       std::printf("  and %s/comparison.csv, %s/comparison.md (one row per case)\n",
                   options_.outDir.c_str(), options_.outDir.c_str());
+    } catch (const common::Cancelled&) {
+      throw;  // main reports it; the complete cases are kept, a rerun resumes
     } catch (const io::SweepOutputError& e) {
       std::cerr << "pistondyn: --out " << e.what() << "; nothing was simulated or written\n";
       return kExitUsage;

@@ -15,6 +15,7 @@
 #include "ComparisonPlots.h"
 #include "Subcommand.h"
 #include "SweepSupport.h"
+#include "pistondyn/common/Cancellation.h"
 #include "pistondyn/io/DeckError.h"
 
 namespace pistondyn::app {
@@ -32,9 +33,38 @@ int checkOutPath(const SweepOptions& options) {
   return kExitOk;
 }
 
+namespace {
+
+// The --set assignments of the base deck's preview grid (none when its liner has none).
+std::vector<std::string> previewOverrides(const io::SweepPlan& plan) {
+  const io::EngineDeck preview =
+      io::loadEngineDeck(plan.baseDeckPath, plan.fixedOverrides, io::Fidelity::Preview);
+  return {preview.overrides.begin() + static_cast<long>(plan.fixedOverrides.size()),
+          preview.overrides.end()};
+}
+
+}  // namespace
+
 std::optional<io::SweepPlan> loadSweepOrReport(const SweepOptions& options) {
   try {
-    return io::loadSweepDeck(options.sweepDeck, options.overrides);
+    io::SweepPlan plan = io::loadSweepDeck(options.sweepDeck, options.overrides);
+    if (toFidelity(options.fidelity) == io::Fidelity::Full)
+      return plan;
+    const std::vector<std::string> preview = previewOverrides(plan);
+    for (const auto& k : plan.sweptKeys) {
+      if (k.key.rfind("liner.grid.nodes_", 0) == 0) {
+        std::cerr << "pistondyn: the sweep was rejected; nothing was simulated or written:\n"
+                  << k.origin
+                  << ": --fidelity preview coarsens the film grid every case shares, but this "
+                     "sweep varies it: run it at --fidelity full\n";
+        return std::nullopt;
+      }
+    }
+    if (preview.empty())
+      return plan;  // no film grid: the same sweep
+    std::vector<std::string> overrides = options.overrides;
+    overrides.insert(overrides.end(), preview.begin(), preview.end());
+    return io::loadSweepDeck(options.sweepDeck, overrides);
   } catch (const io::DeckError& e) {
     std::cerr << "pistondyn: the sweep was rejected; nothing was simulated or written:\n"
               << e.what() << "\n";
@@ -215,6 +245,7 @@ class SweepCommand final : public Subcommand {
         ->check(CLI::PositiveNumber)
         ->type_name("N");
     addSetOption(*app_, options_.overrides);
+    addFidelityOption(*app_, options_.fidelity);
     app_->add_flag("--list", options_.list,
                    "check the sweep and every case, print the cases (CSV), run nothing");
     app_->add_flag("--quiet", options_.quiet, "no progress lines (default: one line per case)");
@@ -233,7 +264,8 @@ class SweepCommand final : public Subcommand {
         "line, or --out is a file, another sweep's folder or a non-empty folder without\n"
         "sweep.json, nothing written; 3 the sweep could not write its folder or sweep.csv; 4 "
         "some cases\nfailed (each listed in sweep.csv with its message, the others' results "
-        "written).");
+        "written); 130 / 143\ninterrupted by SIGINT / SIGTERM (the running cases removed, the "
+        "finished kept: rerun to resume).");
   }
 
   int execute() override {
@@ -277,6 +309,8 @@ class SweepCommand final : public Subcommand {
       if (!options_.noPlot)
         drawComparisonPlots(options_, io::makeStudyComparison(*plan, results));
       return code;
+    } catch (const common::Cancelled&) {
+      throw;  // main reports it; the complete cases are kept, a rerun resumes
     } catch (const io::SweepOutputError& e) {
       std::cerr << "pistondyn: --out " << e.what() << "; nothing was simulated or written\n";
       return kExitUsage;

@@ -18,13 +18,17 @@ struct SweepOptions {
   std::vector<std::string> overrides;  // --set, shared by every case
   int jobs = 0;                        // 0: the default (cores; 1 per MPI rank)
   bool list = false, quiet = false, noPlot = false;
+  std::string fidelity = "full";       // --fidelity full|preview (CommandSupport.h)
 };
 
 // kExitUsage after printing why if --out cannot be the sweep's folder (a file, a folder
 // that cannot be created or written: findOutputFolderProblem), else 0.
 int checkOutPath(const SweepOptions& options);
 // The sweep with every case checked, or nullopt after printing every problem on stderr
-// (the caller exits with kExitBadInput).
+// (the caller exits with kExitBadInput). --fidelity preview: the base deck's preview grid
+// (io::Fidelity, with the shared overrides) is added to the shared overrides, so every
+// case runs it and sweep.json's fingerprint tells the preview sweep from the full one; a
+// sweep that varies the film grid itself is refused.
 std::optional<io::SweepPlan> loadSweepOrReport(const SweepOptions& options);
 // --list: the cases as CSV on stdout (case, one column per swept key).
 void printCaseList(const io::SweepPlan& plan);

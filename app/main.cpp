@@ -3,8 +3,9 @@
 // ReportCommand.cpp, SweepCommand.cpp, StudyCommand.cpp, KeysCommand.cpp), each over
 // pistondyn::io.
 //
-//   pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--quiet] [--no-plot]
-//   pistondyn check DECK.yaml [--set key.path=value]...
+//   pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--fidelity full|preview]
+//                 [--quiet] [--no-plot]
+//   pistondyn check DECK.yaml [--set key.path=value]... [--fidelity full|preview]
 //   pistondyn plot DIR          (figures of a result folder, gnuplot)
 //   pistondyn report DIR        (DIR/report.html, self-contained)
 //   pistondyn sweep SWEEP.yaml --out DIR [--jobs N] [--set key.path=value]... [--list] [--quiet]
@@ -14,7 +15,8 @@
 //
 // Exit codes: 0 success; 1 bad input (deck, table, override) - nothing written;
 // 2 bad command line; 3 the simulation or writing failed - nothing written;
-// 4 (sweep) some cases failed - listed in sweep.csv, the others written.
+// 4 (sweep) some cases failed - listed in sweep.csv, the others written;
+// 130 / 143 interrupted by SIGINT / SIGTERM - what was being written removed (Signals.h).
 
 #include <CLI/CLI.hpp>
 
@@ -22,15 +24,18 @@
 #include <memory>
 #include <vector>
 
+#include "Signals.h"
 #include "Subcommand.h"
+#include "pistondyn/common/Cancellation.h"
 #include "pistondyn/io/Version.h"
 
 namespace {
 
 const char* kSynopsis =
-    "usage: pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--quiet] [--no-plot]\n"
-    "                     [--log-level LEVEL]\n"
-    "       pistondyn check DECK.yaml [--set key.path=value]... [--log-level LEVEL]\n"
+    "usage: pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--fidelity full|preview]\n"
+    "                     [--quiet] [--no-plot] [--log-level LEVEL]\n"
+    "       pistondyn check DECK.yaml [--set key.path=value]... [--fidelity full|preview]\n"
+    "                       [--log-level LEVEL]\n"
     "       pistondyn plot DIR [--log-level LEVEL]\n"
     "       pistondyn report DIR [--log-level LEVEL]\n"
     "       pistondyn sweep SWEEP.yaml --out DIR [--jobs N] [--set key.path=value]... [--list]\n"
@@ -56,8 +61,9 @@ int main(int argc, char** argv) {
                         "that command's options)");
   program.require_subcommand(1);
   program.footer(
-      "Exit codes: 0 ok; 1 bad input, nothing written; 2 bad command line; 3 run failed, "
-      "nothing written; 4 (sweep, study) some cases failed, listed in sweep.csv.");
+      "Exit codes: 0 ok; 1 bad input, nothing written; 2 bad command line or a refused --out;\n"
+      "3 run failed, nothing written; 4 (sweep, study) some cases failed, listed in sweep.csv;\n"
+      "130 / 143 interrupted by SIGINT / SIGTERM, what was being written removed.");
   std::vector<std::unique_ptr<Subcommand>> commands;
   commands.push_back(addRunCommand(program));
   commands.push_back(addCheckCommand(program));
@@ -86,8 +92,24 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
   for (const auto& c : commands) {
-    if (c->wasSelected())
-      return c->execute();
+    if (!c->wasSelected())
+      continue;
+    // Commands that write results stop cleanly on SIGINT / SIGTERM (Signals.h); check
+    // and keys write nothing and keep the default (the signal ends them at once).
+    const std::string name = c->getName();
+    const bool writes =
+        name == "run" || name == "plot" || name == "report" || name == "sweep" || name == "study";
+    if (writes)
+      installCancellationHandlers();
+    int code = kExitFailed;
+    try {
+      code = c->execute();
+    } catch (const pistondyn::common::Cancelled&) {
+      // reported below
+    }
+    if (const int signal = pistondyn::common::getCancellationSignal(); writes && signal > 0)
+      return reportCancellation(signal);
+    return code;
   }
   std::cerr << "pistondyn: missing command\n\n" << kSynopsis;
   return kExitUsage;

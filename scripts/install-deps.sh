@@ -1,9 +1,15 @@
 #!/usr/bin/env bash
 # Installs pistondyn's build dependencies from Debian 12 packages, only those missing.
 # Runs as root, or through sudo where not root.
+#
+#   install-deps.sh          everything: the program, the tests, benchmarks, MPI sweeps, CI
+#   install-deps.sh --main   what configuring the build and running the program need (the
+#                            quick start): no Chromium, MPI, clang or LLVM; a later call
+#                            without --main adds them to the same machine
 set -euo pipefail
 
-PACKAGES=(
+# Configure (tests and benchmarks are configured even when not built), build and run.
+MAIN_PACKAGES=(
   build-essential cmake pkg-config
   libsimbody-dev          # multibody engine (3.7)
   libeigen3-dev           # dense/sparse linear algebra for the numerics
@@ -13,13 +19,23 @@ PACKAGES=(
   libcli11-dev            # command line of the pistondyn program (app/, header-only)
   libspdlog-dev           # the program's log (app/, --log-level)
   gnuplot-nox             # figures: pistondyn plot / report / run (pngcairo, no X)
+  libgtest-dev googletest # test suite (found at configure time)
+  libbenchmark-dev        # bench/ (found at configure time)
+)
+# The rest of the test suite and CI.
+MORE_PACKAGES=(
   chromium                # tests: report.html rendered headless (skipped without it)
-  libgtest-dev googletest # test suite
-  libbenchmark-dev        # bench/
   doxygen graphviz        # API reference: cmake --build build --target docs, ctest -L docs
   libopenmpi-dev openmpi-bin  # optional: `mpirun -np K pistondyn sweep` (PISTONDYN_WITH_MPI)
   clang libclang-rt-14-dev llvm  # .ci: sanitizer suite, libFuzzer targets, symbolised stacks
 )
+
+PACKAGES=("${MAIN_PACKAGES[@]}")
+case "${1:-}" in
+  --main) ;;
+  "") PACKAGES+=("${MORE_PACKAGES[@]}") ;;
+  *) echo "usage: install-deps.sh [--main]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${PACKAGES[@]}"; do

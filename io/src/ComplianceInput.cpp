@@ -147,14 +147,12 @@ mapping::StructuralCompliance readStructuralCompliance(const std::string& matrix
         "options.symmetryTolerance >= 0, both finite");
   }
   NodeTable nodes = readNodeTable(nodeTablePath);
-  Eigen::MatrixXd c = readMatrixMarketDense(matrixPath) * options.matrixToSI;
+  // The node count sizes the matrix: a header claiming more is refused before allocating.
   const Eigen::Index n = nodes.phi_rad.size() * nodes.y_m.size();
-  if (c.rows() != n || c.cols() != n) {
-    throw DeckError(matrixPath + ": " + std::to_string(c.rows()) + " x " +
-                    std::to_string(c.cols()) + " matrix, expected " + std::to_string(n) + " x " +
-                    std::to_string(n) + " for the " + std::to_string(n) + " nodes of " +
-                    nodeTablePath);
-  }
+  Eigen::MatrixXd c =
+      readMatrixMarketDense(matrixPath, n,
+                            " for the " + std::to_string(n) + " nodes of " + nodeTablePath) *
+      options.matrixToSI;
   if (!c.allFinite()) {  // only reachable through matrixToSI overflow: entries are checked
     throw DeckError(matrixPath + ": entries overflow after the unit conversion");
   }

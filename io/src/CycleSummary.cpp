@@ -22,6 +22,7 @@ std::size_t crankTrainColumn(const std::string& name) {
 const std::size_t kAngle = crankTrainColumn("crank_angle_deg");
 const std::size_t kSpeed = crankTrainColumn("crank_speed_rpm");
 const std::size_t kConrod = crankTrainColumn("conrod_force_N");
+const std::size_t kCrankTrainSide = crankTrainColumn("crank_train_side_force_N");
 const std::size_t kCrankTorque = crankTrainColumn("crank_torque_Nm");
 const std::size_t kDriveTorque = crankTrainColumn("drive_torque_Nm");
 
@@ -58,9 +59,9 @@ void CycleSummarySink::beginRun(const std::vector<std::string>& columns) {
 
 void CycleSummarySink::resetCycle() {
   torque_ = drive_ = speed_ = 0.0;
-  conrodMax_ = sideMax_ = -INFINITY;
-  conrodMin_ = sideMin_ = INFINITY;
-  sideMaxAngle_ = sideMinAngle_ = 0.0;
+  conrodMax_ = sideMax_ = rodSideMax_ = -INFINITY;
+  conrodMin_ = sideMin_ = rodSideMin_ = INFINITY;
+  sideMaxAngle_ = sideMinAngle_ = rodSideMaxAngle_ = rodSideMinAngle_ = 0.0;
   filmThrust_ = filmAntiThrust_ = sigmaThrust_ = sigmaAntiThrust_ = FilmMinimum();
   slap_ = SlapEvents();
   maxLateral_ = maxTilt_ = 0.0;
@@ -152,6 +153,14 @@ void CycleSummarySink::consumeRow(const SimTK::State& state, const std::vector<d
   }
   conrodMax_ = std::max(conrodMax_, r[kConrod]);
   conrodMin_ = std::min(conrodMin_, r[kConrod]);
+  if (r[kCrankTrainSide] > rodSideMax_) {
+    rodSideMax_ = r[kCrankTrainSide];
+    rodSideMaxAngle_ = angle;
+  }
+  if (r[kCrankTrainSide] < rodSideMin_) {
+    rodSideMin_ = r[kCrankTrainSide];
+    rodSideMinAngle_ = angle;
+  }
   torque_ += r[kCrankTorque];
   drive_ += r[kDriveTorque];
   speed_ += r[kSpeed] * M_PI / 30.0;
@@ -166,6 +175,10 @@ void CycleSummarySink::endRun() {
   const double n = static_cast<double>(perCycle_);
   s.conrodForceMax_N = conrodMax_;
   s.conrodForceMin_N = conrodMin_;
+  s.crankTrainSideForceMax_N = rodSideMax_;
+  s.crankTrainSideForceMaxAngle_deg = rodSideMaxAngle_;
+  s.crankTrainSideForceMin_N = rodSideMin_;
+  s.crankTrainSideForceMinAngle_deg = rodSideMinAngle_;
   s.meanCrankTorque_Nm = torque_ / n;
   s.meanDriveTorque_Nm = drive_ / n;
   s.indicatedPower_W = s.meanCrankTorque_Nm * speed_ / n;

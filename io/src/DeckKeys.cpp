@@ -195,7 +195,7 @@ const DeckKeyTable& getEngineDeckKeys() {
       "too, with the unit slip it suggests (a bore of 0.0745 mm: given in m?), unless "
       "`checks.allow_implausible` lists the key.",
       {
-          K::text("engine.name").require().means("label in outputs"),
+          K::text("engine.name").require().means("label in outputs; not empty"),
           K::number("geometry.bore_mm", Q::Length)
               .require()
               .within(positive)
@@ -216,7 +216,8 @@ const DeckKeyTable& getEngineDeckKeys() {
           K::number("geometry.pin_offset_mm", Q::Length)
               .byDefault(0.0)
               .plausibleWithin(-50, 50)
-              .means("pin axis relative to the piston axis, + towards thrust"),
+              .means("pin axis relative to the piston axis, + towards thrust; |offset| below a "
+                     "quarter of the bore (the pin and its bosses inside the piston)"),
           K::number("geometry.crank_offset_mm", Q::Length)
               .byDefault(0.0)
               .plausibleWithin(-200, 200)
@@ -249,11 +250,12 @@ const DeckKeyTable& getEngineDeckKeys() {
           K::number("piston.com_above_pin_mm", Q::Length)
               .require()
               .plausibleWithin(-500, 500)
-              .means("centre of mass above the pin axis"),
+              .means("centre of mass above the pin axis; below the crown (compression_height_mm)"),
           K::number("piston.com_towards_thrust_mm", Q::Length)
               .byDefault(0.0)
               .plausibleWithin(-50, 50)
-              .means("centre of mass off the piston axis, + towards thrust"),
+              .means("centre of mass off the piston axis, + towards thrust; |offset| below half "
+                     "the bore"),
           K::number("piston.inertia_kg_mm2", Q::Inertia)
               .require()
               .within(positive)
@@ -287,7 +289,8 @@ const DeckKeyTable& getEngineDeckKeys() {
               .require()
               .within(nonNegative)
               .plausibleWithin(0, 6000)
-              .means("centre of mass along the rod from the big end"),
+              .means("centre of mass along the rod from the big end; less than "
+                     "conrod_length_mm"),
           K::number("crank.mass_g", Q::Mass)
               .require()
               .within(positive)
@@ -335,7 +338,7 @@ const DeckKeyTable& getEngineDeckKeys() {
           K::number("gas.stated_imep_kPa", Q::Pressure)
               .byDefault("none")
               .plausibleWithin(-1000, 5000)
-              .means("if given, the table's imep must be within 0.5 % of it"),
+              .means("if given (not 0), the table's imep must be within 0.5 % of it"),
           K::text("liner.model")
               .byDefault("ideal_guide")
               .unit("`ideal_guide`, `lubricated_skirt`, or a model the program registered")

@@ -1,5 +1,7 @@
 #include "pistondyn/io/DeckSection.h"
 
+#include "MessageText.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -242,7 +244,7 @@ std::optional<std::string> DeckSection::readChoice(const std::string& key,
   std::string list;
   for (const auto& c : choices)
     list += (list.empty() ? "" : ", ") + c;
-  addProblem(key, "'" + *v + "' is not one of: " + list);
+  addProblem(key, detail::quoteValue(*v) + " is not one of: " + list);
   return std::nullopt;
 }
 
@@ -362,8 +364,8 @@ std::optional<std::string> DeckSection::getOptionalFilePath(const std::string& k
   const std::string path = deck_->resolvePath(*v);
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
-    addProblem(key, "'" + path +
-                        "' is a folder, not a file (relative paths start at the deck's "
+    addProblem(key, detail::quoteValue(path) +
+                        " is a folder, not a file (relative paths start at the deck's "
                         "folder)");
     return std::nullopt;
   }

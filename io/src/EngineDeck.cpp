@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <variant>
 
 #include "pistondyn/common/Validation.h"
 #include "pistondyn/io/DeckError.h"
@@ -146,6 +147,45 @@ mbd::CylinderPressureCurve readCylinderPressure(const YamlDeck& d, const std::st
   return std::move(*curve);
 }
 
+// Positions that put a point of a body outside the body: the pin axis must lie well inside
+// the piston, and a centre of mass inside the body's extent (it lies in the body's convex
+// hull). Rules (README's deck reference states them with the keys):
+//   |pin offset| < bore / 4: the pin, about a quarter of the bore in diameter in engines
+//     of every size, and its bosses must fit inside the piston (real offsets are 0-3 % of
+//     the bore);
+//   |piston centre of mass off the axis| < bore / 2, and below the crown top;
+//   conrod centre of mass between the big-end and small-end centres (< the rod length).
+void checkInsideTheBodies(YamlDeck& d, const mbd::EngineDescription& e) {
+  const double bore_m = e.piston.bore_m;
+  auto mm = [](double m) { return common::formatNumber(m / kMm) + " mm"; };
+  if (!(std::abs(e.geometry.pinOffset_m) < 0.25 * bore_m)) {
+    d.addProblem("geometry.pin_offset_mm",
+                 "the pin axis must lie well inside the piston: |pin offset| below a quarter of "
+                 "the bore, " +
+                     mm(0.25 * bore_m) +
+                     " here (the pin and its bosses must fit inside the piston; real offsets "
+                     "are 0-3 % of the bore), got " +
+                     mm(e.geometry.pinOffset_m));
+  }
+  if (!(std::abs(e.mass.piston.comX_m) < 0.5 * bore_m)) {
+    d.addProblem("piston.com_towards_thrust_mm",
+                 "the centre of mass lies inside the piston: |offset| below half the bore (" +
+                     mm(0.5 * bore_m) + "), got " + mm(e.mass.piston.comX_m));
+  }
+  if (!(e.mass.piston.comY_m < e.piston.compressionHeight_m)) {
+    d.addProblem("piston.com_above_pin_mm",
+                 "the centre of mass lies inside the piston: below the crown top "
+                 "(piston.compression_height_mm = " +
+                     mm(e.piston.compressionHeight_m) + "), got " + mm(e.mass.piston.comY_m));
+  }
+  if (!(e.mass.conrod.comY_m < e.geometry.conrodLength_m)) {
+    d.addProblem("conrod.com_from_big_end_mm",
+                 "the centre of mass lies between the big-end and small-end centres: less than "
+                 "geometry.conrod_length_mm (" +
+                     mm(e.geometry.conrodLength_m) + "), got " + mm(e.mass.conrod.comY_m));
+  }
+}
+
 using Settings = plugin::SimulationSettings;
 
 // The simulation section, and its checks against the liner model's needs.
@@ -249,6 +289,11 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
   DeckSection root = d.getSection("");
   mbd::EngineDescription& e = deck.engine;
   e.name = root.getString(key("engine.name"));
+  if (d.has("engine.name") && e.name.find_first_not_of(" \t\r\n") == std::string::npos) {
+    d.addProblem("engine.name",
+                 "is empty: give the engine a name (it labels the summary, the figures and the "
+                 "report)");
+  }
 
   mbd::CrankTrainGeometry& g = e.geometry;
   e.piston.bore_m = root.getSI(key("geometry.bore_mm"));
@@ -284,8 +329,16 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
   // is a problem of the key, reported with the others.
   deck.cylinderPressureFile = root.getFilePath(key("gas.cylinder_pressure_file").path);
   deck.crankcasePressure_Pa = root.getSI(key("gas.crankcase_pressure_bar"));
-  if (const auto imep = root.getOptionalSI(key("gas.stated_imep_kPa")))
+  if (const auto imep = root.getOptionalSI(key("gas.stated_imep_kPa"))) {
     deck.statedImep_Pa = *imep;
+    // The table's imep is compared relative to it: 0 leaves nothing to compare with.
+    if (*imep == 0.0) {
+      d.addProblem("gas.stated_imep_kPa",
+                   "0 is not a valid stated imep: the pressure table's imep is checked to "
+                   "within 0.5 % of it; give the imep the table was made for, or leave the key "
+                   "out");
+    }
+  }
 
   // Cross-key checks of the engine, only on values that are individually valid (a failed
   // read leaves a placeholder that would only produce a second, confusing message).
@@ -301,6 +354,7 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
       d.addProblem("piston.skirt_top_above_pin_mm",
                    "the skirt top cannot be above the crown (compression_height_mm)");
     }
+    checkInsideTheBodies(d, e);
   }
 
   LinerDeckContext liner;
@@ -362,6 +416,50 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
                     "' rejected its parameters for this engine: " + ex.what());
   }
   return deck;
+}
+
+const char* getFidelityName(Fidelity fidelity) {
+  return fidelity == Fidelity::Preview ? "preview" : "full";
+}
+
+namespace {
+
+// The whole-number input `path` of a loaded deck, if it read one.
+std::optional<long> findWholeInput(const EngineDeck& deck, const std::string& path) {
+  for (const ResolvedInput& in : deck.inputs) {
+    if (in.path == path && std::holds_alternative<long>(in.value))
+      return std::get<long>(in.value);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::string>& overrides,
+                          Fidelity fidelity, const LinerRegistry& registry) {
+  EngineDeck full = loadEngineDeck(deckPath, overrides, registry);
+  if (fidelity == Fidelity::Full)
+    return full;
+  const char* kPhi = "liner.grid.nodes_circumferential";
+  const char* kY = "liner.grid.nodes_axial";
+  const std::optional<long> nPhi = findWholeInput(full, kPhi), nY = findWholeInput(full, kY);
+  if (!nPhi || !nY) {
+    full.fidelity = Fidelity::Preview;  // nothing to coarsen: the same run
+    return full;
+  }
+  // Half each way (rounded up), not below 16 x 12, never finer than the deck's.
+  auto coarser = [](long n, long floor) { return std::min(n, std::max(floor, (n + 1) / 2)); };
+  const long pPhi = coarser(*nPhi, 16), pY = coarser(*nY, 12);
+  std::vector<std::string> previewOverrides = overrides;
+  previewOverrides.push_back(std::string(kPhi) + "=" + std::to_string(pPhi));
+  previewOverrides.push_back(std::string(kY) + "=" + std::to_string(pY));
+  EngineDeck preview = loadEngineDeck(deckPath, previewOverrides, registry);
+  preview.fidelity = Fidelity::Preview;
+  preview.fidelityNote = "film grid " + std::to_string(pPhi) + " x " + std::to_string(pY) +
+                         " nodes per side, the deck's " + std::to_string(*nPhi) + " x " +
+                         std::to_string(*nY) +
+                         " halved (not below 16 x 12); --fidelity full runs the deck as written";
+  return preview;
 }
 
 double calcDeckImep_Pa(const EngineDeck& deck) {

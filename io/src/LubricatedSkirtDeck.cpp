@@ -1,5 +1,7 @@
 #include "pistondyn/io/LubricatedSkirtDeck.h"
 
+#include "MessageText.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -328,7 +330,7 @@ void readOil(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
       p.oil = lubrication::makeSaeGradeOilSpec(lubrication::parseSaeGrade(text));
       haveSpec = true;
     } catch (const std::invalid_argument&) {
-      oil.addProblem("grade", "'" + text + "' is not one of: " + list(gradeNames()) +
+      oil.addProblem("grade", detail::quoteValue(text) + " is not one of: " + list(gradeNames()) +
                                   " (or give the oil by two kinematic viscosities)");
     }
     if (user) {

@@ -76,7 +76,8 @@ double parseValue(const std::string& text, const std::string& where) {
 
 }  // namespace
 
-Eigen::MatrixXd readMatrixMarketDense(const std::string& filePath) {
+Eigen::MatrixXd readMatrixMarketDense(const std::string& filePath, Eigen::Index expectedSize,
+                                      const std::string& sizeReason) {
   std::ifstream in(filePath);
   if (!in) {
     throw DeckError(filePath + ": cannot open the Matrix Market file");
@@ -132,6 +133,13 @@ Eigen::MatrixXd readMatrixMarketDense(const std::string& filePath) {
   if (symmetric && rows != cols) {
     throw DeckError(src.where() + ": a symmetric matrix must be square, found " + w[0] + " x " +
                     w[1]);
+  }
+  // The caller's size, before the matrix (and, for coordinates, its map of entries seen) is
+  // allocated from what the header claims.
+  if (expectedSize >= 0 && (rows != expectedSize || cols != expectedSize)) {
+    const std::string n = std::to_string(expectedSize);
+    throw DeckError(filePath + ": " + std::to_string(rows) + " x " + std::to_string(cols) +
+                    " matrix, expected " + n + " x " + n + sizeReason);
   }
   Eigen::MatrixXd m = Eigen::MatrixXd::Zero(rows, cols);
 

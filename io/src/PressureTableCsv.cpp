@@ -1,5 +1,7 @@
 #include "pistondyn/io/PressureTableCsv.h"
 
+#include "MessageText.h"
+
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -70,9 +72,9 @@ mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath,
     double a = 0.0, p = 0.0;
     const bool angleOk = parseDouble(f[0], a), pressureOk = parseDouble(f[1], p);
     if (!angleOk)
-      problems.push_back(at + "crank angle '" + f[0] + "' is not a number");
+      problems.push_back(at + "crank angle " + detail::quoteValue(f[0]) + " is not a number");
     if (!pressureOk)
-      problems.push_back(at + "pressure '" + f[1] + "' is not a number");
+      problems.push_back(at + "pressure " + detail::quoteValue(f[1]) + " is not a number");
     if (!angleOk || !pressureOk)
       continue;
     // Compared with the last good row, so one bad row gives one message.

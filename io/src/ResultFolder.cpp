@@ -21,7 +21,7 @@ using Json = nlohmann::ordered_json;
 std::string readText(const fs::path& p) {
   std::optional<std::string> bytes = detail::readFileBytes(p.string());
   if (!bytes)
-    throw std::runtime_error(p.string() + ": cannot open (is this a pistondyn run's folder?)");
+    throw ResultFolderError(p.string() + ": cannot open (is this a pistondyn run's folder?)");
   return std::move(*bytes);
 }
 
@@ -38,6 +38,78 @@ void flatten(const Json& j, const std::string& prefix, std::vector<SummaryEntry>
     out.push_back({prefix, text + "]"});
   } else {
     out.push_back({prefix, j.dump()});
+  }
+}
+
+// What a JSON value is, for messages ("the text \"abc\"", "an array", ...).
+std::string describe(const Json& j) {
+  if (j.is_string()) {
+    std::string text = j.get<std::string>();
+    if (text.size() > 40)
+      text = text.substr(0, 40) + "...";
+    return "the text \"" + text + "\"";
+  }
+  if (j.is_array())
+    return "an array";
+  if (j.is_object())
+    return "an object";
+  if (j.is_boolean())
+    return j.get<bool>() ? "true" : "false";
+  return j.dump();
+}
+
+bool isNumberOrNull(const Json& j) {
+  return j.is_number() || j.is_null();
+}
+
+bool isNumberList(const Json& j) {
+  return j.is_array() &&
+         std::all_of(j.begin(), j.end(), [](const Json& e) { return e.is_number(); });
+}
+
+// The shape summary.json has when `pistondyn run` wrote it, as far as the figures and the
+// report read it: an object with a "results" object whose figures are numbers (true or
+// false, null, or a list of numbers; "note" is text), inputs whose SI key names a unit
+// holding numbers, and the run's own counts. The first departure, as "what: found what".
+void checkSummaryShape(const Json& j, const std::string& file) {
+  auto fail = [&](const std::string& what) {
+    throw ResultFolderError(file + ": " + what + " (not a summary.json that pistondyn run wrote)");
+  };
+  if (!j.is_object())
+    fail("expected a JSON object, found " + describe(j));
+  if (!j.contains("results"))
+    fail("no \"results\" object");
+  const Json& results = j.at("results");
+  if (!results.is_object())
+    fail("\"results\" is " + describe(results) + ", expected an object");
+  for (auto it = results.begin(); it != results.end(); ++it) {
+    const Json& v = it.value();
+    if (it.key() == "note" ? !v.is_string()
+                           : !(isNumberOrNull(v) || v.is_boolean() || isNumberList(v)))
+      fail("results." + it.key() + ": expected " + (it.key() == "note" ? "text" : "a number") +
+           ", found " + describe(v));
+  }
+  for (const char* key : {"wall_time_s", "integrator_steps"}) {
+    if (j.contains(key) && !isNumberOrNull(j.at(key)))
+      fail(std::string(key) + ": expected a number, found " + describe(j.at(key)));
+  }
+  if (!j.contains("inputs"))
+    return;
+  if (!j.at("inputs").is_object())
+    fail("\"inputs\" is " + describe(j.at("inputs")) + ", expected an object");
+  // A key with a unit in its name (bore_m, speed_rad_per_s, crank_angles_deg) holds numbers.
+  std::vector<std::pair<std::string, const Json*>> todo{{"inputs", &j.at("inputs")}};
+  while (!todo.empty()) {
+    const auto [path, node] = todo.back();
+    todo.pop_back();
+    for (auto it = node->begin(); it != node->end(); ++it) {
+      const std::string key = path + "." + it.key();
+      if (it.value().is_object())
+        todo.emplace_back(key, &it.value());
+      else if (!getColumnUnit(it.key()).empty() &&
+               !(isNumberOrNull(it.value()) || isNumberList(it.value())))
+        fail(key + ": expected a number, found " + describe(it.value()));
+    }
   }
 }
 
@@ -66,20 +138,23 @@ ResultFolder readResultFolder(const std::string& directory) {
   const fs::path dir(directory);
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
-    throw std::runtime_error(directory + ": not a folder (give the --out folder of a run)");
+    throw ResultFolderError(directory + ": not a folder (give the --out folder of a run)");
   ResultFolder r;
   r.directory = directory;
   const fs::path csv = dir / "cycle.csv", json = dir / "summary.json";
   if (!fs::exists(csv, ec))
-    throw std::runtime_error(csv.string() + ": missing (is this a pistondyn run's folder?)");
+    throw ResultFolderError(csv.string() + ": missing (is this a pistondyn run's folder?)");
   r.cycle = readCsvTable(csv.string(), {"time_s", "crank_angle_deg"});
   r.cycleComments = commentLines(csv);
   r.summaryJson = readText(json);
+  Json parsed;
   try {
-    flatten(Json::parse(r.summaryJson), "", r.summary);
+    parsed = Json::parse(r.summaryJson);
   } catch (const Json::exception& e) {
-    throw std::runtime_error(json.string() + ": not valid JSON: " + e.what());
+    throw ResultFolderError(json.string() + ": not valid JSON: " + e.what());
   }
+  checkSummaryShape(parsed, json.string());
+  flatten(parsed, "", r.summary);
   // field_dump_<angle>deg_<side>.csv, the names SkirtFieldDumpSink writes.
   const std::regex name(R"(field_dump_([0-9.eE+-]+)deg_(thrust|antithrust)\.csv)");
   for (const auto& entry : fs::directory_iterator(dir)) {

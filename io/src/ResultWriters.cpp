@@ -18,10 +18,42 @@ std::string formatNumber(double v) {
   return std::string(buf.data(), res.ptr);
 }
 
+std::string escapeForCommentLine(const std::string& text) {
+  static const char* const kHex = "0123456789abcdef";
+  std::string out;
+  out.reserve(text.size());
+  for (const char ch : text) {
+    const auto c = static_cast<unsigned char>(ch);
+    switch (c) {
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      default:
+        if (c < 0x20 || c == 0x7f) {
+          out += "\\x";
+          out += kHex[c >> 4];
+          out += kHex[c & 0xf];
+        } else {
+          out += ch;
+        }
+    }
+  }
+  return out;
+}
+
 void writeCsvHeader(std::ostream& out, const std::vector<std::string>& columns,
                     const std::vector<std::string>& commentLines) {
   for (const auto& c : commentLines)
-    out << "# " << c << '\n';
+    out << "# " << escapeForCommentLine(c) << '\n';
   for (std::size_t j = 0; j < columns.size(); ++j) {
     out << (j ? "," : "") << columns[j];
   }

@@ -62,6 +62,11 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
   const std::filesystem::path deckFile = std::filesystem::absolute(deck.deckPath, ec);
   j["deck_file"] = ec ? deck.deckPath : deckFile.lexically_normal().string();
   j["overrides"] = deck.overrides;
+  // full: the deck as written; preview: a coarser film grid for a quick look (EngineDeck.h),
+  // its assignments among the overrides above and its grid among the inputs below.
+  j["fidelity"] = getFidelityName(deck.fidelity);
+  if (!deck.fidelityNote.empty())
+    j["fidelity_note"] = deck.fidelityNote;
 
   j["inputs"] = nestedInputs(deck.inputs);
   // What the model uses besides the deck's keys.
@@ -147,13 +152,19 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
   }
   r["conrod_force_max_N"] = s.conrodForceMax_N;
   r["conrod_force_min_N"] = s.conrodForceMin_N;
+  // The crank train's own side force (from the rod), beside the liner's side_force_*.
+  r["crank_train_side_force_max_N"] = s.crankTrainSideForceMax_N;
+  r["crank_train_side_force_max_angle_deg"] = s.crankTrainSideForceMaxAngle_deg;
+  r["crank_train_side_force_min_N"] = s.crankTrainSideForceMin_N;
+  r["crank_train_side_force_min_angle_deg"] = s.crankTrainSideForceMinAngle_deg;
   r["mean_crank_torque_Nm"] = s.meanCrankTorque_Nm;
   r["mean_drive_torque_Nm"] = s.meanDriveTorque_Nm;
   r["indicated_power_W"] = s.indicatedPower_W;
   // The run itself (SimulationStats).
   r["cycles_run"] = o.stats.cyclesRun;
   r["converged"] = o.stats.converged;                  // until_periodic: the last two agreed
-  r["cycles_to_converge"] = o.stats.cyclesToConverge;  // 0 unless converged
+  // null unless converged: no number of cycles to converge is claimed for a run that did not.
+  r["cycles_to_converge"] = o.stats.converged ? Json(o.stats.cyclesToConverge) : Json(nullptr);
   r["rejected_steps"] = o.stats.rejectedSteps;         // linearly_implicit_bdf2's error test
   // linearly_implicit_bdf2: steps retried because an element threw, e.g. a film solve or an
   // elastic coupling that did not converge on a trial step (never silent, issue 12).

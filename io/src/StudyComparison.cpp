@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "CsvText.h"
+#include "pistondyn/io/ResultWriters.h"
 #include "pistondyn/io/Version.h"
 
 namespace pistondyn::io {
@@ -155,8 +156,9 @@ StudyComparison makeStudyComparison(const SweepPlan& plan,
 std::string makeComparisonCsv(const StudyComparison& c) {
   std::ostringstream out;
   out << "# pistondyn " << getVersion() << " study comparison"
-      << (c.name.empty() ? std::string() : ": " + c.name) << "\n";
-  out << "# study deck " << c.studyDeckPath << "; base deck " << c.baseDeckPath << "\n";
+      << (c.name.empty() ? std::string() : ": " + escapeForCommentLine(c.name)) << "\n";
+  out << "# study deck " << escapeForCommentLine(c.studyDeckPath) << "; base deck "
+      << escapeForCommentLine(c.baseDeckPath) << "\n";
   out << "# crank angle 0 deg = firing TDC; figures of the last simulated 720 deg cycle of "
          "each case (its summary.json); empty: the case has no such figure\n";
   out << "case";

@@ -1,5 +1,7 @@
 #include "pistondyn/io/SweepDeck.h"
 
+#include "MessageText.h"
+
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -316,7 +318,8 @@ std::optional<std::vector<PartialCase>> SweepDeckReader::readLatinHypercube(
                 "expected a whole number between " +
                     std::to_string(static_cast<long long>(minimum)) + " and " +
                     std::to_string(static_cast<long long>(maximum)) +
-                    (value.IsScalar() ? " (got " + value.Scalar() + ")" : std::string()) +
+                    (value.IsScalar() ? " (got " + detail::shortenValue(value.Scalar()) + ")"
+                                      : std::string()) +
                     (key == "samples" && number && v == 0.0
                          ? ": a Latin hypercube needs at least one sample"
                          : ""));

@@ -20,6 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pistondyn/common/Cancellation.h"
 #include "pistondyn/io/EngineDeck.h"
 #include "pistondyn/io/ResultWriters.h"
 #include "pistondyn/io/RunDeck.h"
@@ -240,8 +241,9 @@ std::string csvFromRows(const SweepPlan& plan,
     }
   }
   std::ostringstream out;
-  out << "# pistondyn " << getVersion() << " sweep results for " << plan.sweepDeckPath
-      << " (base deck " << plan.baseDeckPath << ")\n";
+  out << "# pistondyn " << getVersion() << " sweep results for "
+      << escapeForCommentLine(plan.sweepDeckPath) << " (base deck "
+      << escapeForCommentLine(plan.baseDeckPath) << ")\n";
   out << "# sweep fingerprint " << plan.fingerprint << "; " << plan.cases.size()
       << " cases, run folders " << plan.getCaseFolderName(1) << "/ .. "
       << plan.getCaseFolderName(static_cast<int>(plan.cases.size()))
@@ -420,6 +422,7 @@ SweepCaseResult runSweepCase(const SweepPlan& plan, const std::string& dir, int 
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   try {
+    common::throwIfCancelled();  // queued cases after SIGINT / SIGTERM do not start
     const SweepCase& c = plan.getCase(index);
     const fs::path folder = fs::path(dir) / plan.getCaseFolderName(index);
     std::error_code ec;
@@ -436,6 +439,9 @@ SweepCaseResult runSweepCase(const SweepPlan& plan, const std::string& dir, int 
     writeFilesAtomically(folder.string(), {{kCaseJson, caseJson(plan, c)}});
     r.ok = true;
     r.summaryJson = *summary;
+  } catch (const common::Cancelled&) {
+    r.cancelled = true;  // its folder was removed with what it had written
+    r.message = "cancelled";
   } catch (const std::exception& e) {
     r.ok = false;
     r.message = oneLine(e.what());
@@ -556,8 +562,11 @@ SweepOutcome runSweep(const SweepPlan& plan, const std::string& dir, const Sweep
     for (const int index : state.toRun)
       pool.push(index);
     pool.close();
-    while (outcome.ran < toRun) {
+    for (int taken = 0; taken < toRun;) {
       for (auto& r : pool.takeFinished(std::chrono::seconds(1))) {
+        ++taken;
+        if (r.cancelled)
+          continue;  // neither run nor failed: a rerun of the sweep runs it
         ++outcome.ran;
         if (!r.ok)
           ++outcome.failed;
@@ -568,6 +577,7 @@ SweepOutcome runSweep(const SweepPlan& plan, const std::string& dir, const Sweep
     }
   }
   recorder.finish();
+  common::throwIfCancelled();  // sweep.csv holds the cases that finished
   return outcome;
 }
 

@@ -1,5 +1,7 @@
 #include "pistondyn/io/YamlDeck.h"
 
+#include "MessageText.h"
+
 #include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
@@ -383,7 +385,9 @@ std::string formatBound(double v) {
 }
 
 // The problem with a number outside `bounds`, in the words the deck has always used.
-std::string boundsMessage(const Bounds& b, const std::string& text, const std::string& unit) {
+std::string boundsMessage(const Bounds& b, const std::string& given, const std::string& unit) {
+  // The value as written (a number of 100,000 digits is still one line).
+  const std::string text = detail::shortenValue(given);
   const bool lower = std::isfinite(b.minimum), upper = std::isfinite(b.maximum);
   const std::string u = unit.empty() ? std::string() : " " + unit;
   if (lower && !upper && b.minimum == 0.0)
@@ -412,11 +416,11 @@ std::optional<double> scalarToNumber(const YAML::Node& n, std::string& problem) 
   try {
     v = n.as<double>();
   } catch (const YAML::Exception&) {
-    problem = "'" + n.Scalar() + "' is not a number";
+    problem = detail::quoteValue(n.Scalar()) + " is not a number";
     return std::nullopt;
   }
   if (!std::isfinite(v)) {
-    problem = "'" + n.Scalar() + "' is not a finite number";
+    problem = detail::quoteValue(n.Scalar()) + " is not a finite number";
     return std::nullopt;
   }
   return v;
@@ -520,7 +524,7 @@ std::optional<bool> YamlDeck::readBool(const std::string& path, bool required) {
       return true;
     if (t == "false" || t == "False" || t == "FALSE")
       return false;
-    addProblem(path, "expected true or false, found '" + t + "'");
+    addProblem(path, "expected true or false, found " + detail::quoteValue(t));
   } else {
     addProblem(path, "expected true or false, found a " + foundKind(n));
   }
@@ -623,8 +627,8 @@ void YamlDeck::readAllowedImplausible(const std::vector<const DeckKeyTable*>& ta
       key = key != nullptr ? key : t->find(item.Scalar());
     if (key == nullptr || !key->plausible) {
       addProblem(kAllowImplausibleKey,
-                 which + "'" + item.Scalar() +
-                     "' is not a key with a plausible range (`pistondyn keys` lists them)");
+                 which + detail::quoteValue(item.Scalar()) +
+                     " is not a key with a plausible range (`pistondyn keys` lists them)");
       continue;
     }
     impl_->allowImplausible.insert(item.Scalar());
@@ -663,7 +667,7 @@ std::string YamlDeck::getChoiceOr(const std::string& path, const std::vector<std
   std::string list;
   for (const auto& c : choices)
     list += (list.empty() ? "" : ", ") + c;
-  addProblem(path, "'" + v + "' is not one of: " + list);
+  addProblem(path, detail::quoteValue(v) + " is not one of: " + list);
   return fallback;
 }
 

@@ -264,6 +264,10 @@ double CrankTrain::getConrodAxialForce_N(const SimTK::State& s) const {
   return SimTK::dot(onPin[1], rodAxis);
 }
 
+double CrankTrain::getConrodLateralForce_N(const SimTK::State& s) const {
+  return getSmallEndSlider().findMobilizerReactionOnBodyAtOriginInGround(s)[1][0];
+}
+
 double CrankTrain::getCrankTorqueFromConrod_Nm(const SimTK::State& s) const {
   const SimTK::SpatialVec onCrank = conrod_.findMobilizerReactionOnParentAtFInGround(s);
   const SimTK::Vec3 crankPin = conrod_.getBodyOriginLocation(s);  // rod origin = big-end centre

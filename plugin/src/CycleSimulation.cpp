@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "pistondyn/common/Cancellation.h"
 #include "pistondyn/common/Validation.h"
 #include "pistondyn/mbd_models/SliderCrank.h"
 #include "pistondyn/plugin/LinearlyImplicitStepper.h"
@@ -164,6 +165,7 @@ class SimbodyAdvancer final : public Advancer {
   }
   void advanceTo(double tOut) override {
     while (integ_->getTime() < tOut) {
+      common::throwIfCancelled();
       if (getSteps() >= maxSteps_) {
         throw std::runtime_error("the step budget of " + std::to_string(maxSteps_) +
                                  " integrator steps is used up");
@@ -289,9 +291,19 @@ std::vector<std::string> CycleSimulation::getColumns() const {
 }
 
 std::vector<std::string> CycleSimulation::crankTrainColumns() {
-  return {"time_s",        "crank_angle_deg", "crank_speed_rpm", "piston_y_m",
-          "piston_vy_mps", "piston_ay_mps2",  "u_lat_um",        "tilt_mrad",
-          "u_tran_um",     "conrod_force_N",  "crank_torque_Nm", "drive_torque_Nm"};
+  return {"time_s",
+          "crank_angle_deg",
+          "crank_speed_rpm",
+          "piston_y_m",
+          "piston_vy_mps",
+          "piston_ay_mps2",
+          "u_lat_um",
+          "tilt_mrad",
+          "u_tran_um",
+          "conrod_force_N",
+          "crank_train_side_force_N",
+          "crank_torque_Nm",
+          "drive_torque_Nm"};
 }
 
 void CycleSimulation::calcCrankTrainRow(const mbd::CrankTrain& ct, const SimTK::State& s,
@@ -307,6 +319,7 @@ void CycleSimulation::calcCrankTrainRow(const mbd::CrankTrain& ct, const SimTK::
   v.push_back(ct.getTilt_rad(s) * 1e3);
   v.push_back(ct.getTransverseDisplacement_m(s) * 1e6);
   v.push_back(ct.getConrodAxialForce_N(s));
+  v.push_back(ct.getConrodLateralForce_N(s));
   v.push_back(ct.getCrankTorqueFromConrod_Nm(s));
   v.push_back(ct.getDriveTorque_Nm(s));
 }
@@ -381,6 +394,7 @@ void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& pr
   long k = 0;
   try {
     for (k = 0; k < nRows; ++k) {
+      common::throwIfCancelled();
       const double thetaTarget = theta0 + static_cast<double>(k) * dTheta;
       if (k > 0) {
         if (prescribed) {
@@ -451,6 +465,8 @@ void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& pr
       if (stop)
         break;
     }
+  } catch (const common::Cancelled&) {
+    throw;  // not a failure of the simulation: the caller asked it to stop
   } catch (const std::exception& e) {
     const double reached = settings_.startAngle_deg +
                            static_cast<double>(std::max(k - 1, 0L)) * settings_.outputStep_deg;

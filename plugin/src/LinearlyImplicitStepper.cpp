@@ -65,7 +65,9 @@ struct LinearlyImplicitStepper::Impl {
   int failuresInRow = 0;
   int jacobianAge = 0;             // accepted steps since C was evaluated
   bool freshJacobianNext = false;  // a step failed since: evaluate C again
-  std::string lastFailure;  // why the last step failed (for the message when the step collapses)
+  // Why the last step failed, since the last accepted one ("" if none did): for the message
+  // when the step collapses.
+  std::string lastFailure;
 
   // Workspaces (sized at initialize).
   Eigen::VectorXd yp, fpred, ft, base, r, delta, y, weights;
@@ -459,6 +461,7 @@ struct LinearlyImplicitStepper::Impl {
 
     // Accept the evaluated iterate with the history of this step installed.
     failuresInRow = 0;
+    lastFailure.clear();
     ++stats.steps;
     ++jacobianAge;
     trial.autoUpdateDiscreteVariables();
@@ -513,9 +516,17 @@ struct LinearlyImplicitStepper::Impl {
         h = 0.5 * remaining;  // two even steps rather than a long one and a sliver
       }
       if (h < options.minStep_s) {
+        // Either steps kept failing, or the caller asked for a time closer than the minimum
+        // step (a free crank landing on an output crank angle iterates the time that finely).
+        const std::string why =
+            !lastFailure.empty()
+                ? "the last failed step: " + lastFailure
+                : "no step failed since the last accepted one: the time asked for, t = " +
+                      formatTime(tOut) + " s, is only " + formatTime(remaining) +
+                      " s ahead of it (a free crank landing on an output crank angle asks for "
+                      "such times)";
         fail(history[0].t, "the step size fell to " + formatTime(h) + " s (below the minimum " +
-                               formatTime(options.minStep_s) + " s); the last failed step: " +
-                               lastFailure);
+                               formatTime(options.minStep_s) + " s); " + why);
       }
       // Land exactly on tOut (no rounding drift of the time).
       tryStep(h == remaining ? tOut : history[0].t + h);

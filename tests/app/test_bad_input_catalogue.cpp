@@ -120,6 +120,48 @@ TEST_F(BadInputCatalogue, EachCaseExitsNamingWhereAndWhatAndWritesNothing) {
        "--set geometry.conrod_length_mm=30",
        1,
        {"--set geometry.conrod_length_mm: the rod must be longer than half the stroke"}},
+      // Impossible bodies (issue 37): a pin axis or a centre of mass outside its body.
+      {"cross-key: pin axis outside the piston",
+       [](auto&) {},
+       "--set geometry.pin_offset_mm=50",
+       1,
+       {"--set geometry.pin_offset_mm: the pin axis must lie well inside the piston: |pin "
+        "offset| below a quarter of the bore, 18.625 mm here",
+        "got 50 mm"}},
+      {"cross-key: rod centre of mass beyond the small end",
+       [](auto&) {},
+       "--set conrod.com_from_big_end_mm=500",
+       1,
+       {"--set conrod.com_from_big_end_mm: the centre of mass lies between the big-end and "
+        "small-end centres: less than geometry.conrod_length_mm (140 mm), got 500 mm"}},
+      {"cross-key: piston centre of mass beside the bore",
+       [](auto&) {},
+       "--set piston.com_towards_thrust_mm=-40",
+       1,
+       {"--set piston.com_towards_thrust_mm: the centre of mass lies inside the piston: "
+        "|offset| below half the bore (37.25 mm), got -40 mm"}},
+      {"cross-key: piston centre of mass above the crown",
+       [](auto&) {},
+       "--set piston.com_above_pin_mm=30",
+       1,
+       {"--set piston.com_above_pin_mm: the centre of mass lies inside the piston: below the "
+        "crown top (piston.compression_height_mm = 28 mm), got 30 mm"}},
+      {"empty engine name",
+       [](auto& f) { f.editDeck("  name: \"", "  name: \"\"  # \""); },
+       "",
+       1,
+       {"<deck>:@name@: engine.name: is empty: give the engine a name"}},
+      {"stated imep of 0",
+       [](auto&) {},
+       "--set gas.stated_imep_kPa=0",
+       1,
+       {"--set gas.stated_imep_kPa: 0 is not a valid stated imep", "or leave the key out"}},
+      {"a 100 kB value is echoed shortened",
+       [](auto&) {},
+       "--set geometry.bore_mm=" + std::string(100000, '7') + "x",
+       1,
+       {"--set geometry.bore_mm: '" + std::string(80, '7') +
+        "...' (100001 characters, shown shortened) is not a number"}},
       // The elastic skirt's compliance (liner.elastic_skirt.*): a 2 x 2 node table with a
       // matrix of the wrong size, and with one that breaks Maxwell-Betti reciprocity.
       complianceCase("compliance of the wrong size for its node table",
@@ -130,6 +172,10 @@ TEST_F(BadInputCatalogue, EachCaseExitsNamingWhereAndWhatAndWritesNothing) {
                      "4 4\n4e-9\n3e-9\n0\n0\n1e-9\n4e-9\n0\n0\n0\n0\n4e-9\n0\n0\n0\n0\n4e-9\n",
                      {"liner.elastic_skirt.compliance_file", "c.mtx: not symmetric: entry (2, 1)",
                       "Maxwell-Betti"}),
+      complianceCase("compliance header claiming a huge matrix (refused before allocating)",
+                     "20000 20000\n4e-9\n",
+                     {"liner.elastic_skirt.compliance_file",
+                      "c.mtx: 20000 x 20000 matrix, expected 4 x 4", "nodes.csv"}),
       {"pressure table: angles not increasing",
        [table](auto& f) {
          f.writeTable("crank_angle_deg,pressure_bar\n0,40\n10,30\n5,20\n720,40\n");
@@ -271,6 +317,8 @@ TEST_F(BadInputCatalogue, EachCaseExitsNamingWhereAndWhatAndWritesNothing) {
       EXPECT_NE(err.find(e), std::string::npos) << "expected: " << e << "\nstderr:\n" << err;
     }
     EXPECT_EQ(err.find("nan kPa"), std::string::npos) << err;
+    EXPECT_EQ(err.find("inf %"), std::string::npos) << err;
+    EXPECT_LT(err.size(), 2000u) << "a message of " << err.size() << " characters";
     // Nothing written: no output folder, or the file that was there untouched.
     if (outExisted)
       EXPECT_EQ(readFile(out), before);

@@ -217,8 +217,8 @@ TEST_F(SkirtScratchDeck, AShortRunWritesEverySkirtFigure) {
        {"fmep_kPa", "friction_power_mean_W", "min_h_over_sigma_thrust",
         "min_h_over_sigma_antithrust", "min_film_thickness_thrust_um",
         "min_film_thickness_antithrust_um", "max_abs_u_lat_um", "max_abs_tilt_deg",
-        "slap_energy_max_mJ", "hot_clearance_um", "cycles_run", "cycles_to_converge", "film_solves",
-        "film_fallbacks", "film_derivative_failures", "rejected_steps", "wall_time_s"})
+        "slap_energy_max_mJ", "hot_clearance_um", "cycles_run", "film_solves", "film_fallbacks",
+        "film_derivative_failures", "rejected_steps", "wall_time_s"})
     finiteNumber(r, key);
   for (const char* key :
        {"min_h_over_sigma_thrust_crank_angle_deg", "min_h_over_sigma_antithrust_crank_angle_deg",
@@ -231,7 +231,7 @@ TEST_F(SkirtScratchDeck, AShortRunWritesEverySkirtFigure) {
   ASSERT_TRUE(r["converged"].is_boolean());
   EXPECT_FALSE(r["converged"].get<bool>());
   EXPECT_EQ(r["cycles_run"].get<int>(), 1);
-  EXPECT_EQ(r["cycles_to_converge"].get<int>(), 0);
+  EXPECT_TRUE(r["cycles_to_converge"].is_null()) << "a run that did not converge claims no count";
   ASSERT_TRUE(r["cycle_fmep_kPa"].is_array());
   ASSERT_EQ(r["cycle_fmep_kPa"].size(), 1u);
   EXPECT_EQ(r["cycle_fmep_kPa"][0].get<double>(), r["fmep_kPa"].get<double>());
@@ -239,8 +239,11 @@ TEST_F(SkirtScratchDeck, AShortRunWritesEverySkirtFigure) {
   // A healthy run: every film solve also returned its squeeze derivatives.
   EXPECT_EQ(r["film_derivative_failures"].get<long>(), 0);
   EXPECT_EQ(r["hot_clearance_um"].get<double>(), 40.0);  // no thermal growth: c0 at -6 mm
-  // No null anywhere (nlohmann writes NaN and infinities as null).
-  EXPECT_EQ(summary.dump().find("null"), std::string::npos);
+  // No null anywhere (nlohmann writes NaN and infinities as null) but the one documented:
+  // cycles_to_converge of a run that did not converge.
+  nlohmann::json withoutCount = summary;
+  withoutCount["results"].erase("cycles_to_converge");
+  EXPECT_EQ(withoutCount.dump().find("null"), std::string::npos);
 
   // fmep = the last cycle's friction work over the displacement, both computed here: the
   // work from cycle.csv's friction_work_J column (rows 0 and 720 deg), the displacement

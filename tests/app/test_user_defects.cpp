@@ -89,9 +89,10 @@ TEST_F(UserDefects, CheckAndRunRejectTheSameDecksNamingTheKey) {
     EXPECT_NE(run.err.find(expected), std::string::npos) << args << "\n" << run.err;
     EXPECT_FALSE(fs::exists(dir_ / "results")) << args;
   }
-  // A bore allowed as implausible whose imep cannot be computed: still bad input, named.
+  // A bore allowed as implausible whose imep cannot be computed: still bad input, named
+  // (the pin on the axis: an offset of 0.5 mm would be outside a bore of 1e-300 mm).
   const Result nan = program(
-      "check engine.yaml --set geometry.bore_mm=1e-300 "
+      "check engine.yaml --set geometry.bore_mm=1e-300 --set geometry.pin_offset_mm=0 "
       "--set 'checks.allow_implausible=[geometry.bore_mm]'");
   EXPECT_EQ(nan.exitCode, 1);
   EXPECT_NE(nan.err.find("gas.cylinder_pressure_file: the imep of the pressure table cannot"),

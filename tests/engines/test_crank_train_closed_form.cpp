@@ -273,6 +273,17 @@ TEST_P(ClosedFormEngines, KinematicsLoadsAndPowerOver720Degrees) {
   checkRelative("piston_vy", vy, vRef);
   checkRelative("piston_ay", ay, aRef);
   checkRelative("side_force", side, sideRef);
+  // The crank train's own side force (the rod's lateral force across the small end) is
+  // the same free-body X: on the ideal guide it is what the guide carries, so the two
+  // columns agree to rounding.
+  const auto crankTrainSide = table.column("crank_train_side_force_N");
+  checkRelative("crank_train_side", crankTrainSide, sideRef);
+  double worstAgreement = 0.0;
+  for (std::size_t i = 0; i < side.size(); ++i)
+    worstAgreement = std::max(worstAgreement, std::abs(crankTrainSide[i] - side[i]));
+  std::printf("  crank-train vs liner side force: max |difference| %.3e N of %.3e N\n",
+              worstAgreement, maxAbs(side));
+  EXPECT_LE(worstAgreement, 1e-9 * maxAbs(side));
   checkRelative("conrod_force", rod, rodRef);
   checkRelative("crank_torque", torque, torqueRef);
   checkRelative("drive_torque", drive, driveRef);
@@ -364,6 +375,45 @@ TEST(FreeCrank, CycleEnergyBalanceWithGasAndLoad) {
   // The rows really are at the nominal angles (landing to 1e-12 rad).
   const auto angle = table.column("crank_angle_deg");
   EXPECT_DOUBLE_EQ(angle.back(), 720.0);
+}
+
+// The textbook slider-crank side force: with a rod of no mass, the small end carries the
+// force along the rod only, so its lateral part is the piston side's axial load (gas force
+// + inertia + weight) times tan(rod angle) - the form of every engine-dynamics text. The
+// gasoline deck with a rod of 1e-6 g (allowed as implausible) on the ideal guide; the rod
+// angle from the closed-form kinematics above (tan = (P - C).x / (P - C).y).
+TEST(CrankTrainSideForce, IsTheAxialLoadTimesTanRodAngleForAMasslessRod) {
+  const EngineDeck deck =
+      loadGasolineDeck({"conrod.mass_g=1e-6", "conrod.inertia_kg_mm2=1e-9",
+                        "checks.allow_implausible=[conrod.mass_g, conrod.inertia_kg_mm2]"});
+  auto model = pistondyn::io::buildModel(deck);
+  pistondyn::plugin::SimulationSettings settings = deck.simulation;
+  pistondyn::plugin::CycleSimulation sim(*model, settings);
+  const auto table = sim.run();
+  const auto& g = deck.engine.geometry;
+  const ClosedForm cf{g.crankRadius_m, g.conrodLength_m, g.crankOffset_m + g.pinOffset_m,
+                      deck.engine.drive.speed_radps};
+  const double phiTdc = cf.tdcPhi();
+  const auto& m = deck.engine.mass;
+  const double pistonSide_kg = m.piston.mass_kg + m.pin.mass_kg;  // floating pin
+  const auto angle = table.column("crank_angle_deg"), gas = table.column("gas_force_N"),
+             side = table.column("crank_train_side_force_N");
+  std::vector<double> ref;
+  for (std::size_t i = 0; i < angle.size(); ++i) {
+    const auto k = cf.at(angle[i] * M_PI / 180.0 + phiTdc);
+    const V2 rod = k.P - k.C;
+    const double axial = gas[i] + pistonSide_kg * (k.Pdd.y + deck.engine.gravity_mps2);
+    ref.push_back(axial * rod.x / rod.y);
+  }
+  const double scale = maxAbs(ref);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < ref.size(); ++i) {
+    if (std::abs(ref[i]) >= 1e-3 * scale)
+      worst = std::max(worst, std::abs(side[i] - ref[i]) / std::abs(ref[i]));
+  }
+  std::printf("  crank-train side force vs (gas + inertia) tan(rod angle): max rel. error %.3e\n",
+              worst);
+  EXPECT_LE(worst, 1e-6);
 }
 
 }  // namespace

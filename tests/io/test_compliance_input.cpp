@@ -150,6 +150,26 @@ TEST_F(ComplianceInput, WrongSizeForTheNodeTable) {
               {"c.mtx", "2 x 2 matrix, expected 4 x 4", "nodes.csv"});
 }
 
+// The size line is checked against the size the caller expects before the matrix is
+// allocated: a header claiming 20000 x 20000 (3.2 GB dense) with one entry is refused
+// at once (tests/app FirstHourEdges.HugeMatrixMarketHeaderIsRefusedBeforeAllocating runs it
+// under a memory limit).
+TEST_F(ComplianceInput, DeclaredSizeIsCheckedBeforeAllocating) {
+  const std::string huge =
+      write("h.mtx", "%%MatrixMarket matrix coordinate real symmetric\n20000 20000 1\n1 1 4e-9\n");
+  expectError([&] { pio::readMatrixMarketDense(huge, 4, " for the 4 nodes of n.csv"); },
+              {"h.mtx: 20000 x 20000 matrix, expected 4 x 4 for the 4 nodes of n.csv"});
+  expectError([&] { pio::readStructuralCompliance(huge, nodes2x2()); },
+              {"h.mtx: 20000 x 20000 matrix, expected 4 x 4", "nodes.csv"});
+  // Beyond 20000 rows the header is refused whatever the caller expects.
+  expectError(
+      [&] {
+        pio::readMatrixMarketDense(
+            write("g.mtx", "%%MatrixMarket matrix array real general\n20001 1\n1\n"));
+      },
+      {"g.mtx:2", "expected 1 to 20000 rows and columns"});
+}
+
 TEST_F(ComplianceInput, NaNAndNonNumbersAreRejectedWithTheLine) {
   std::string text = spdArray();
   text.replace(text.find("0.5e-9\n0\n1e-9"), 6, "nan");  // entry (3, 1), line 6

@@ -107,4 +107,43 @@ TEST(ResultFolder, ReadsCsvSummaryAndFieldDumps) {
   fs::remove_all(dir);
 }
 
+// A summary.json that is not as run writes it is refused naming the file and the first
+// thing wrong; null (a figure run did not reach, e.g. cycles_to_converge) is a number's place.
+TEST(ResultFolder, SummaryNotAsRunWritesItIsRefused) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("pistondyn_rf_shape_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "cycle.csv") << "time_s,crank_angle_deg\n0,0\n1,720\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"[]", "expected a JSON object, found an array"},
+      {"{}", "no \"results\" object"},
+      {R"({"results": [1]})", "\"results\" is an array, expected an object"},
+      {R"({"results": {"fmep_kPa": "abc"}})",
+       "results.fmep_kPa: expected a number, found the text \"abc\""},
+      {R"({"results": {"note": 3}})", "results.note: expected text, found 3"},
+      {R"({"results": {}, "wall_time_s": "fast"})", "wall_time_s: expected a number"},
+      {R"({"results": {}, "inputs": {"geometry": {"bore_m": "wide"}}})",
+       "inputs.geometry.bore_m: expected a number, found the text \"wide\""},
+  };
+  for (const auto& [text, expected] : cases) {
+    SCOPED_TRACE(text);
+    std::ofstream(dir / "summary.json") << text;
+    try {
+      io::readResultFolder(dir.string());
+      ADD_FAILURE() << "accepted";
+    } catch (const io::ResultFolderError& e) {
+      EXPECT_NE(std::string(e.what()).find((dir / "summary.json").string() + ": " + expected),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  std::ofstream(dir / "summary.json")
+      << R"({"results": {"cycles_to_converge": null, "converged": false, "note": "n",
+                         "cycle_fmep_kPa": [1, 2]},
+             "inputs": {"liner": {"model": "ideal_guide", "field_dumps": {"crank_angles_deg": [20]}},
+                        "gas": {"cylinder_pressure_file": "/a/b.csv"}}})";
+  EXPECT_NO_THROW(io::readResultFolder(dir.string()));
+  fs::remove_all(dir);
+}
+
 }  // namespace

@@ -188,11 +188,14 @@ TEST_F(ScratchDeck, EveryNumberInSummaryJsonIsTheComputedDouble) {
       {"/results/side_force_min_angle_deg", s.liner->sideForceMinAngle_deg},
       {"/results/conrod_force_max_N", s.conrodForceMax_N},
       {"/results/conrod_force_min_N", s.conrodForceMin_N},
+      {"/results/crank_train_side_force_max_N", s.crankTrainSideForceMax_N},
+      {"/results/crank_train_side_force_max_angle_deg", s.crankTrainSideForceMaxAngle_deg},
+      {"/results/crank_train_side_force_min_N", s.crankTrainSideForceMin_N},
+      {"/results/crank_train_side_force_min_angle_deg", s.crankTrainSideForceMinAngle_deg},
       {"/results/mean_crank_torque_Nm", s.meanCrankTorque_Nm},
       {"/results/mean_drive_torque_Nm", s.meanDriveTorque_Nm},
       {"/results/indicated_power_W", s.indicatedPower_W},
       {"/results/cycles_run", static_cast<double>(o.stats.cyclesRun)},
-      {"/results/cycles_to_converge", static_cast<double>(o.stats.cyclesToConverge)},
       {"/results/rejected_steps", static_cast<double>(o.stats.rejectedSteps)},
       {"/results/failed_evaluations", static_cast<double>(o.stats.failedEvaluations)},
       {"/results/wall_time_s", o.stats.wallTime_s},
@@ -217,6 +220,9 @@ TEST_F(ScratchDeck, EveryNumberInSummaryJsonIsTheComputedDouble) {
       };
   walk(j, "");
   EXPECT_EQ(seen, expected.size());
+  // One cycle, not run to periodic steady state: no number of cycles to converge.
+  ASSERT_FALSE(o.stats.converged);
+  EXPECT_TRUE(j["results"]["cycles_to_converge"].is_null());
 }
 
 }  // namespace

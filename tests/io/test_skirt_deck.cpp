@@ -240,6 +240,51 @@ TEST_F(SkirtScratchDeck, TheIdealGuideIsSelectableFromTheSkirtDeck) {
               "linearly_implicit_bdf2 integrates models without constraints");
 }
 
+// --fidelity preview: the film grid halved each way (rounded up), not below 16 x 12, never
+// finer than the deck's; the preview's assignments follow the user's overrides, its grid is
+// what the element gets, and the note says what changed. The ideal guide has no grid.
+TEST_F(SkirtScratchDeck, PreviewFidelityHalvesTheFilmGridNotBelowSixteenByTwelve) {
+  struct Case {
+    int phi, y, previewPhi, previewY;
+  };
+  for (const Case& c : {Case{64, 48, 32, 24}, Case{32, 24, 16, 12}, Case{33, 25, 17, 13},
+                        Case{20, 14, 16, 12}, Case{10, 8, 10, 8}}) {
+    SCOPED_TRACE(std::to_string(c.phi) + " x " + std::to_string(c.y));
+    const std::vector<std::string> user = {
+        "liner.grid.nodes_circumferential=" + std::to_string(c.phi),
+        "liner.grid.nodes_axial=" + std::to_string(c.y)};
+    const io::EngineDeck full = io::loadEngineDeck(deck(), user, io::Fidelity::Full);
+    EXPECT_EQ(full.fidelity, io::Fidelity::Full);
+    EXPECT_EQ(full.overrides, user);
+    EXPECT_TRUE(full.fidelityNote.empty());
+    const io::EngineDeck preview = io::loadEngineDeck(deck(), user, io::Fidelity::Preview);
+    EXPECT_EQ(preview.fidelity, io::Fidelity::Preview);
+    std::vector<std::string> expected = user;
+    expected.push_back("liner.grid.nodes_circumferential=" + std::to_string(c.previewPhi));
+    expected.push_back("liner.grid.nodes_axial=" + std::to_string(c.previewY));
+    EXPECT_EQ(preview.overrides, expected);
+    auto model = io::buildModel(preview);
+    model->buildSystem();
+    const auto& grid = model->getElementAs<plugin::LubricatedSkirtElement>("lubricated_skirt")
+                           .getParameters()
+                           .grid;
+    EXPECT_EQ(grid.nPhi, c.previewPhi);
+    EXPECT_EQ(grid.nY, c.previewY);
+    EXPECT_NE(
+        preview.fidelityNote.find("film grid " + std::to_string(c.previewPhi) + " x " +
+                                  std::to_string(c.previewY) + " nodes per side, the deck's " +
+                                  std::to_string(c.phi) + " x " + std::to_string(c.y)),
+        std::string::npos)
+        << preview.fidelityNote;
+  }
+  const io::EngineDeck guide =
+      io::loadEngineDeck(deck(), {"liner.model=ideal_guide", "simulation.integrator=rk_merson"},
+                         io::Fidelity::Preview);
+  EXPECT_EQ(guide.fidelity, io::Fidelity::Preview);
+  EXPECT_TRUE(guide.fidelityNote.empty());
+  EXPECT_EQ(guide.overrides.size(), 2u);
+}
+
 // The skirt's film is stiff: Simbody's explicit integrators are rejected, saying why.
 TEST_F(SkirtScratchDeck, AnExplicitIntegratorIsRejectedForTheSkirt) {
   for (const char* integrator : {"rk_merson", "rk_feldberg"}) {

@@ -388,6 +388,26 @@ TEST(LinearlyImplicitStepper, RefusesConstraintsAndReportsFailures) {
   }
 }
 
+// A time asked for closer than the minimum step (a free crank landing on its output angle
+// iterates the time that finely) is refused with that reason, not with an empty "the last
+// failed step: " (issue 37): no step had failed.
+TEST(LinearlyImplicitStepper, SaysWhyTheStepFellBelowTheMinimum) {
+  Model m;
+  plugin::LinearlyImplicitStepperOptions o;
+  plugin::LinearlyImplicitStepper stepper(m.model, o);
+  stepper.initialize(m.start);
+  stepper.stepTo(m.start.getTime() + 1e-4);
+  try {
+    stepper.stepTo(stepper.getTime() + 0.25 * o.minStep_s);
+    FAIL() << "expected the step below the minimum to be refused";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("no step failed since the last accepted one"), std::string::npos) << what;
+    EXPECT_NE(what.find("is only"), std::string::npos) << what;
+    EXPECT_EQ(what.find("the last failed step: "), std::string::npos) << what;
+  }
+}
+
 // CycleSimulation with the stepper runs to a periodic steady state and keeps the last cycle.
 TEST(LinearlyImplicitStepper, CycleSimulationRunsToPeriodicSteadyStateAndKeepsTheLastCycle) {
   Model m;

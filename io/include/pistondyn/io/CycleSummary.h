@@ -13,8 +13,9 @@
 ///     does not report, like the ideal guide's film) these figures are absent, never
 ///     invented from a column;
 ///   - the largest |lateral displacement| and |tilt|: the crank train, at each row's state;
-///   - conrod force, crank and drive torque, crank speed: the crank-train columns, which
-///     CycleSimulation::crankTrainColumns() fixes, found by their index in that list.
+///   - conrod force, crank-train side force, crank and drive torque, crank speed: the
+///     crank-train columns, which CycleSimulation::crankTrainColumns() fixes, found by their
+///     index in that list.
 
 #include <optional>
 #include <vector>
@@ -82,6 +83,12 @@ struct CycleSummary {
 
   double conrodForceMax_N = 0.0;    ///< largest conrod force, compression > 0 [N]
   double conrodForceMin_N = 0.0;    ///< smallest conrod force [N]
+  /// The crank train's own side force (crank_train_side_force_N: the rod's lateral force
+  /// across the small end), every model: largest towards thrust [N] ...
+  double crankTrainSideForceMax_N = 0.0;
+  double crankTrainSideForceMaxAngle_deg = 0.0;  ///< ... its crank angle in [0, 720) [deg]
+  double crankTrainSideForceMin_N = 0.0;  ///< largest towards anti-thrust (< 0) [N]
+  double crankTrainSideForceMinAngle_deg = 0.0;  ///< its crank angle in [0, 720) [deg]
   double meanCrankTorque_Nm = 0.0;  ///< rod on crank, cycle mean [N m]
   double meanDriveTorque_Nm = 0.0;  ///< drive on crank, cycle mean [N m]
   double indicatedPower_W = 0.0;    ///< mean crank torque x mean speed
@@ -134,6 +141,7 @@ class CycleSummarySink final : public plugin::RowSink {
   /// Running figures of the current cycle.
   double torque_ = 0.0, drive_ = 0.0, speed_ = 0.0;
   double conrodMax_ = 0.0, conrodMin_ = 0.0;
+  double rodSideMax_ = 0.0, rodSideMaxAngle_ = 0.0, rodSideMin_ = 0.0, rodSideMinAngle_ = 0.0;
   double sideMax_ = 0.0, sideMaxAngle_ = 0.0, sideMin_ = 0.0, sideMinAngle_ = 0.0;
   FilmMinimum filmThrust_, filmAntiThrust_, sigmaThrust_, sigmaAntiThrust_;
   SlapEvents slap_;

@@ -17,7 +17,17 @@
 
 namespace pistondyn::io {
 
-/// An engine deck as loaded and checked: everything a run needs, in SI.
+/// How finely a run resolves the liner (`pistondyn run --fidelity`). Full: the deck as
+/// written. Preview: a quick look - the film grid of a liner that has one
+/// (liner.grid.nodes_circumferential x liner.grid.nodes_axial, the lubricated skirt's)
+/// halved each way, rounded up, but not below 16 x 12 nodes per side and never finer than
+/// the deck's (64 x 48 -> 32 x 24, 32 x 24 -> 16 x 12); everything else as written. A
+/// liner without a film grid (the ideal guide) runs the same at both.
+enum class Fidelity { Full, Preview };
+
+/// "full" / "preview".
+const char* getFidelityName(Fidelity fidelity);
+
 struct EngineDeck {
   std::string deckPath;                ///< the deck file as given
   std::vector<std::string> overrides;  ///< the --set assignments applied, in order
@@ -38,7 +48,12 @@ struct EngineDeck {
   /// Crank angles [deg, in [0, 720)] of the last cycle at which a run writes the liner's
   /// nodal fields (liner.field_dumps.crank_angles_deg of the lubricated skirt); output rows.
   std::vector<double> fieldDumpAngles_deg;
-  plugin::SimulationSettings simulation;  ///< the simulation.* keys
+  plugin::SimulationSettings simulation;
+  /// What the deck was loaded for, and what the preview changed in words ("" when nothing:
+  /// full, or a liner without a film grid). The preview's changes are also among
+  /// `overrides` (as --set assignments after the user's) and `inputs`.
+  Fidelity fidelity = Fidelity::Full;
+  std::string fidelityNote;
 };
 
 /// Reads, overrides and checks a deck; the liner model comes from `registry`. Throws
@@ -49,6 +64,14 @@ struct EngineDeck {
 /// integrator fits it (explicit ones are rejected for a stiff liner, linearly_implicit_bdf2
 /// for one held by constraints).
 EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::string>& overrides,
+                          const LinerRegistry& registry = LinerRegistry::getGlobal());
+
+/// The same for a fidelity: Full is the deck as written; Preview loads it, and when its
+/// liner has a film grid loads it again with that grid coarsened (Fidelity above) by
+/// --set assignments appended to `overrides`, so the preview's grid is what the inputs and
+/// overrides of its summary say. Throws DeckError as above.
+EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::string>& overrides,
+                          Fidelity fidelity,
                           const LinerRegistry& registry = LinerRegistry::getGlobal());
 
 /// The deck's imep from its pressure table [Pa].

@@ -22,7 +22,12 @@
 namespace pistondyn::io {
 
 /// Reads the whole matrix into a dense Eigen matrix (as the file states it; no checks beyond
-/// the format: the caller checks size, symmetry, definiteness).
-Eigen::MatrixXd readMatrixMarketDense(const std::string& filePath);
+/// the format: the caller checks symmetry, definiteness). A size line beyond 20000 rows or
+/// columns is refused before anything is allocated. expectedSize >= 0: the matrix must be
+/// expectedSize x expectedSize, checked on the size line before the matrix is allocated (a
+/// header that claims 20000 x 20000 costs nothing); the DeckError says
+/// "<file>: R x C matrix, expected n x n<sizeReason>".
+Eigen::MatrixXd readMatrixMarketDense(const std::string& filePath, Eigen::Index expectedSize = -1,
+                                      const std::string& sizeReason = "");
 
 }  // namespace pistondyn::io

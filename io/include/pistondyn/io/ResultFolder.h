@@ -10,6 +10,7 @@
 ///   for (std::size_t i = 0; i < w.rows.size(); ++i)
 ///     use(w.angle_deg[i], r.cycle.rows[w.rows[i]][r.cycle.columnIndex("side_force_N")]);
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -46,9 +47,18 @@ struct ResultFolder {
   std::string getSummaryValue(const std::string& key) const;
 };
 
+/// A folder that is not a result folder of `pistondyn run`, or a file in it that is not as
+/// run writes it (the message names the file and what is wrong).
+class ResultFolderError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 /// Reads DIR/cycle.csv and DIR/summary.json (both required) and lists DIR's field dumps.
-/// Throws std::runtime_error naming the file and what is wrong (DeckError for a malformed
-/// cycle.csv, naming its line).
+/// summary.json must be a JSON object with a "results" object whose figures are numbers
+/// (or true / false, null, a list of numbers; "note" is text), its inputs whose key names a
+/// unit numbers, and wall_time_s and integrator_steps numbers. Throws ResultFolderError
+/// naming the file and what is wrong (DeckError for a malformed cycle.csv, naming its line).
 ResultFolder readResultFolder(const std::string& directory);
 
 /// The rows of the last 720 deg cycle of a cycle table (see selectLastCycle()).

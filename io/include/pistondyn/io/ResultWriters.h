@@ -22,7 +22,13 @@ namespace pistondyn::io {
 /// result file writes numbers.
 std::string formatNumber(double value);
 
-/// '#'-prefixed comment lines, then a header of column names (with units), then rows.
+/// `text` made fit for one '#' comment line of a result file: a control character (a newline
+/// in a deck's path, a tab, ...) written as a C escape (\n, \r, \t, \xNN) and a backslash
+/// as \\, so that the line ends where it should and the text can be read back exactly.
+std::string escapeForCommentLine(const std::string& text);
+
+/// '#'-prefixed comment lines (escapeForCommentLine), then a header of column names (with
+/// units), then rows.
 void writeCsv(std::ostream& out, const plugin::ResultTable& table,
               const std::vector<std::string>& commentLines);
 /// The two parts of writeCsv, for writers that stream rows.

@@ -48,6 +48,9 @@ struct SweepCaseResult {
   int index = 0;                ///< the case (1-based)
   bool ok = false;              ///< the case ran and wrote its results
   bool fromEarlierRun = false;  ///< found complete in the folder, not run now
+  /// Stopped by SIGINT / SIGTERM (common/Cancellation.h), or not started after one: not
+  /// recorded in sweep.csv, rerun when the sweep is resumed.
+  bool cancelled = false;
   std::string message;          ///< why the case failed (one line)
   std::string summaryJson;      ///< ok: the text of the case's summary.json
   double wallTime_s = 0.0;      ///< of the run now, deck reading included [s]
@@ -168,6 +171,9 @@ struct SweepOutcome {
 /// The whole sweep in this process: openSweepOutput(), the remaining cases on `jobs`
 /// threads (each case its own model), sweep.csv. Throws SweepOutputError (folder refused,
 /// nothing written) or std::runtime_error (the folder or sweep.csv cannot be written).
+/// After a cancellation request (common/Cancellation.h) the running cases stop, queued ones
+/// do not start, sweep.csv is written with the cases that finished, and common::Cancelled
+/// is thrown: the folder is left to be resumed.
 SweepOutcome runSweep(const SweepPlan& plan, const std::string& dir, int jobs,
                       const SweepProgress& progress = {},
                       const LinerRegistry& registry = LinerRegistry::getGlobal());

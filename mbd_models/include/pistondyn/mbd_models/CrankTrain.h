@@ -91,6 +91,12 @@ class CrankTrain {
   /// in the piston (force of the rod on the pin) and to the rod side when it is fixed in
   /// the rod (force of the pin on the piston bosses). Stage::Acceleration.
   double getConrodAxialForce_N(const SimTK::State& s) const;
+  /// Lateral force across the small end [N], + towards thrust: the x component (ground) of
+  /// the same force of the rod side on the piston side. The crank train's own side force -
+  /// what an ideal guide carries, the piston held centred and upright (with the pin in the
+  /// piston side, x: 0 = F_x + N); a liner that lets the piston move adds the piston side's
+  /// lateral inertia to it. Stage::Acceleration.
+  double getConrodLateralForce_N(const SimTK::State& s) const;
   /// Torque the connecting rod exerts on the crank about the crank axis [N m], + in the
   /// direction of rotation (the engine's indicated torque at the crank pin).
   /// Stage::Acceleration.

@@ -10,6 +10,8 @@
 ///   piston_y_m (height of the piston axis at pin height above the crank axis),
 ///   piston_vy_mps, piston_ay_mps2, u_lat_um (+ thrust), tilt_mrad (+ crown towards
 ///   thrust), u_tran_um (+ along pin axis z), conrod_force_N (+ compression),
+///   crank_train_side_force_N (the rod's lateral force across the small end, + towards
+///   thrust: what an ideal guide carries; CrankTrain::getConrodLateralForce_N),
 ///   crank_torque_Nm (rod on crank, + along rotation), drive_torque_Nm (drive on crank,
 ///   + along rotation).
 ///
@@ -25,6 +27,11 @@
 /// `cycles` cycles are done; only the last cycle's rows are kept (the sinks are told to
 /// discard the earlier ones), and the stats say whether and after how many cycles the run
 /// converged.
+///
+/// Cancellation (common/Cancellation.h): a run checks the process's cancellation request
+/// before every output row (and every step of Simbody's integrators) and stops by throwing
+/// common::Cancelled, which leaves run() as it is (not wrapped in a runtime_error); the
+/// sinks see it as any failure (no endRun()).
 
 #include <functional>
 #include <string>

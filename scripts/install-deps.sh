@@ -17,6 +17,7 @@ PACKAGES=(
   libgtest-dev googletest # test suite
   libbenchmark-dev        # bench/
   libopenmpi-dev openmpi-bin  # optional: `mpirun -np K pistondyn sweep` (PISTONDYN_WITH_MPI)
+  libnlopt-cxx-dev        # the design loop's optimiser (pistondyn::design; NLopt 2.7)
   clang libclang-rt-14-dev llvm  # .ci: sanitizer suite, libFuzzer targets, symbolised stacks
 )
 

@@ -213,7 +213,7 @@ std::string makeOptimizeReport(const design::OptimizeSpec& spec, const design::O
           "failed ones are in history.csv).</p>\n"
        << renderSvg(conv) << "\n";
   // Searches.
-  html << "<h2>Searches</h2>\n<table><tr><th class=\"l\">stage</th><th>designs requested</th>"
+  html << "<h2>Searches</h2>\n<table><tr><th class=\"l\">stage</th><th>NLopt evaluations</th>"
           "<th class=\"l\">stopped</th><th>best feasible objective</th></tr>\n";
   for (const auto& r : o.searches) {
     html << "<tr><td class=\"l\">" << escapeHtml(r.stage) << "</td><td>" << r.evaluations
@@ -226,6 +226,167 @@ std::string makeOptimizeReport(const design::OptimizeSpec& spec, const design::O
     html << "<h2>Baseline against optimum (last cycle)</h2>\n"
          << makeRunComparisonCharts(
                 {{"baseline", base.result.folder, true}, {"optimum", best->result.folder, false}});
+  }
+  html << endReportPage();
+  return html.str();
+}
+
+std::string makeFitReport(const design::FitSpec& spec, const design::FitOutcome& o) {
+  const design::DesignStudy& s = spec.study;
+  std::ostringstream html;
+  html << beginReportPage("pistondyn fit: " + (s.name.empty() ? s.deckPath : s.name));
+  html << "<p>Study <code>" << escapeHtml(s.deckPath) << "</code>, base deck <code>"
+       << escapeHtml(s.baseDeckPath) << "</code>; " << o.points << " measured points in "
+       << spec.traces.size() << " trace(s), " << s.variables.size()
+       << " parameters; bounded Levenberg-Marquardt, " << escapeHtml(o.stopReason) << " after "
+       << o.iterations.size() - 1 << " steps (history.csv). Sum of squares " << fmt(o.sumOfSquares)
+       << ", residual standard deviation " << fmt(o.residualStd)
+       << " (weighted units of the traces), Jacobian rank " << o.rank << " of "
+       << s.variables.size() << ".</p>\n";
+  html << "<h2>Fitted parameters</h2>\n<table><tr><th class=\"l\">parameter</th><th>lower</th>"
+          "<th>upper</th><th>start</th><th>fitted</th><th>standard error</th><th class=\"l\">"
+          "note</th></tr>\n";
+  for (const auto& p : o.parameters) {
+    const auto& v = *std::find_if(s.variables.begin(), s.variables.end(),
+                                  [&](const design::DesignVariable& x) { return x.key == p.key; });
+    html << "<tr><td class=\"l\">" << escapeHtml(p.key) << "</td><td>" << fmt(v.lower)
+         << "</td><td>" << fmt(v.upper) << "</td><td>" << fmt(p.start) << "</td><td>"
+         << (p.identifiable ? fmt(p.value) : "&mdash;") << "</td><td>"
+         << (p.standardError ? fmt(*p.standardError) : "&mdash;") << "</td><td class=\"l\">"
+         << escapeHtml(p.note) << (p.atBound ? " (at a bound)" : "") << "</td></tr>\n";
+  }
+  html << "</table>\n<p class=\"note\">Standard errors from the Jacobian at the optimum "
+          "(central differences): covariance s&sup2; (J&#8242;J)<sup>&minus;1</sup>, s&sup2; = "
+          "sum of squares / (points &minus; parameters). A parameter the traces cannot determine "
+          "is reported without a value.</p>\n";
+  html << "<h2>Correlation</h2>\n<table><tr><th></th>";
+  for (const auto& p : o.parameters)
+    html << "<th>" << escapeHtml(p.key) << "</th>";
+  html << "</tr>\n";
+  for (std::size_t i = 0; i < o.parameters.size(); ++i) {
+    html << "<tr><th class=\"l\">" << escapeHtml(o.parameters[i].key) << "</th>";
+    for (std::size_t j = 0; j < o.parameters.size(); ++j)
+      html << "<td>" << (std::isfinite(o.correlation[i][j]) ? fmt(o.correlation[i][j]) : "&mdash;")
+           << "</td>";
+    html << "</tr>\n";
+  }
+  html << "</table>\n";
+  for (std::size_t t = 0; t < spec.traces.size(); ++t) {
+    const auto& tr = spec.traces[t];
+    Chart fit;
+    fit.title = "measured and fitted: " + tr.getLabel();
+    fit.xLabel = "crank angle [°]";
+    fit.yLabel = tr.getLabel();
+    fit.xRange = std::make_pair(0.0, 720.0);
+    fit.xMarks = {360.0};
+    ChartSeries measured{"measured", tr.angle_deg, tr.value, true, false, 0};
+    fit.series.push_back(measured);
+    if (o.model.size() > t)
+      fit.series.push_back({"fitted", tr.angle_deg, o.model[t], false, false, 1});
+    Chart res;
+    res.title = "residual (fitted - measured): " + tr.getLabel();
+    res.xLabel = "crank angle [°]";
+    res.yLabel = tr.getLabel();
+    res.xRange = std::make_pair(0.0, 720.0);
+    res.xMarks = {360.0};
+    res.yMarks = {{0.0, ""}};
+    if (o.model.size() > t) {
+      std::vector<double> r;
+      for (std::size_t i = 0; i < tr.value.size(); ++i)
+        r.push_back(o.model[t][i] - tr.value[i]);
+      res.series.push_back({"residual", tr.angle_deg, r, true, false, 2});
+    }
+    html << "<h2>Trace " << t + 1 << ": " << escapeHtml(tr.getLabel()) << "</h2>\n<p>"
+         << escapeHtml(tr.file) << ", weight " << fmt(tr.weight) << ", " << tr.value.size()
+         << " points";
+    for (const auto& [from, to] : tr.windows_deg)
+      html << " [" << fmt(from) << ", " << fmt(to) << "]&deg;";
+    html << "</p>\n" << renderSvg(fit) << renderSvg(res, 760, 220);
+  }
+  Chart conv;
+  conv.title = "sum of squares";
+  conv.xLabel = "step (history.csv)";
+  conv.yLabel = "sum of squares";
+  ChartSeries tried{"tried", {}, {}, true, false, 3};
+  ChartSeries accepted{"accepted", {}, {}, false, false, 0};
+  for (const auto& it : o.iterations) {
+    tried.x.push_back(it.number);
+    tried.y.push_back(it.sumOfSquares);
+    if (it.accepted) {
+      accepted.x.push_back(it.number);
+      accepted.y.push_back(it.sumOfSquares);
+    }
+  }
+  conv.series = {tried, accepted};
+  html << "<h2>Convergence</h2>\n" << renderSvg(conv, 760, 240);
+  html << endReportPage();
+  return html.str();
+}
+
+std::string makePropagateReport(const design::PropagateSpec& spec,
+                                const design::PropagateOutcome& o) {
+  const design::DesignStudy& s = spec.study;
+  std::ostringstream html;
+  html << beginReportPage("pistondyn propagate: " + (s.name.empty() ? s.deckPath : s.name));
+  html << "<p>Study <code>" << escapeHtml(s.deckPath) << "</code>, base deck <code>"
+       << escapeHtml(s.baseDeckPath) << "</code>: " << o.samples.size()
+       << " Latin-hypercube samples (seed " << spec.seed << ") uniform over " << s.variables.size()
+       << " inputs; " << o.samples.size() - static_cast<std::size_t>(o.failed) << " ran, "
+       << o.failed << " failed (samples.csv).</p>\n";
+  html << "<h2>Figures</h2>\n<table><tr><th class=\"l\">figure</th><th>5 %</th><th>50 %</th>"
+          "<th>95 %</th><th>mean</th><th>standard deviation</th><th>samples</th><th>baseline"
+          "</th></tr>\n";
+  std::optional<design::RunFigures> base;
+  if (o.baseline.ok)
+    base.emplace(o.baseline.summaryJson);
+  for (const auto& f : spec.figures) {
+    const design::Band& b = o.figureBands.at(f);
+    html << "<tr><td class=\"l\">" << escapeHtml(f) << "</td><td>" << fmt(b.p05) << "</td><td>"
+         << fmt(b.p50) << "</td><td>" << fmt(b.p95) << "</td><td>" << fmt(b.mean) << "</td><td>"
+         << fmt(b.std) << "</td><td>" << b.count << "</td><td>"
+         << (base ? fmt(base->get(f).value_or(std::nan(""))) : "") << "</td></tr>\n";
+  }
+  html << "</table>\n<p class=\"note\">Percentiles of the samples that ran, linear between order "
+          "statistics.</p>\n";
+  for (const auto& c : spec.curves) {
+    Chart chart;
+    chart.title = c + ": 5 - 95 % band, median, baseline";
+    chart.xLabel = "crank angle [°]";
+    chart.yLabel = c;
+    chart.xRange = std::make_pair(0.0, 720.0);
+    chart.xMarks = {360.0};
+    const auto& bands = o.curveBands.at(c);
+    design::Band none;
+    ChartBand band{"5 - 95 %", o.angle_deg, {}, {}, 0};
+    ChartSeries median{"median", o.angle_deg, {}, false, false, 0};
+    for (const auto& b : bands) {
+      band.lower.push_back(b.p05);
+      band.upper.push_back(b.p95);
+      median.y.push_back(b.p50);
+    }
+    chart.bands.push_back(band);
+    chart.series.push_back(median);
+    const auto it = o.baselineCurves.find(c);
+    if (it != o.baselineCurves.end())
+      chart.series.push_back({"baseline", o.angle_deg, it->second, false, true, 1});
+    html << renderSvg(chart) << "\n";
+  }
+  html << "<h2>Inputs</h2>\n<table><tr><th class=\"l\">input</th><th>lower</th><th>upper</th>"
+          "<th>baseline</th><th class=\"l\">from</th></tr>\n";
+  for (const auto& v : s.variables) {
+    const bool est =
+        std::find(spec.estKeys.begin(), spec.estKeys.end(), v.key) != spec.estKeys.end();
+    html << "<tr><td class=\"l\">" << escapeHtml(v.key) << "</td><td>" << fmt(v.lower)
+         << "</td><td>" << fmt(v.upper) << "</td><td>" << (v.baseline ? fmt(*v.baseline) : "")
+         << "</td><td class=\"l\">" << (est ? "EST in the base deck" : "inputs") << "</td></tr>\n";
+  }
+  html << "</table>\n";
+  if (!spec.estSkipped.empty()) {
+    html << "<p class=\"note\">Marked EST but 0 in the base deck, so not varied by a share of "
+            "their value (give them a range under inputs):";
+    for (const auto& k : spec.estSkipped)
+      html << " <code>" << escapeHtml(k) << "</code>";
+    html << "</p>\n";
   }
   html << endReportPage();
   return html.str();

@@ -9,7 +9,9 @@
 
 #include <string>
 
+#include "pistondyn/design/Fit.h"
 #include "pistondyn/design/Optimize.h"
+#include "pistondyn/design/Propagate.h"
 
 namespace pistondyn::app {
 
@@ -19,6 +21,11 @@ inline constexpr double kActiveConstraintShare = 0.01;
 
 std::string makeOptimizeReport(const design::OptimizeSpec& spec,
                                const design::OptimizeOutcome& outcome);
+
+std::string makeFitReport(const design::FitSpec& spec, const design::FitOutcome& outcome);
+
+std::string makePropagateReport(const design::PropagateSpec& spec,
+                                const design::PropagateOutcome& outcome);
 
 // The shared page frame.
 std::string beginReportPage(const std::string& title);

@@ -1,19 +1,26 @@
 #include "DesignSupport.h"
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "CommandSupport.h"
 #include "Subcommand.h"
 #include "SweepSupport.h"
+#include "pistondyn/design/Optimize.h"
 #include "pistondyn/io/DeckError.h"
+#include "pistondyn/io/ResultWriters.h"
 #include "pistondyn/io/SweepRun.h"
 
 namespace pistondyn::app {
 
-void addDesignOptions(CLI::App& command, DesignOptions& options, const std::string& deckHelp,
-                      const std::string& outHelp) {
-  command.add_option("DECK", options.deck, deckHelp)->required()->type_name("DECK.yaml");
+void addDesignOptions(CLI::App& command, DesignOptions& options, const std::string& deckName,
+                      const std::string& deckHelp, const std::string& outHelp) {
+  command.add_option(deckName.substr(0, deckName.find('.')), options.deck, deckHelp)
+      ->required()
+      ->type_name(deckName);
   command.add_option("--out", options.outDir, outHelp)->required()->type_name("DIR");
   command
       .add_option("--jobs", options.jobs,
@@ -79,6 +86,43 @@ int runDesignTask(const DesignOptions& options, DesignTask& task) {
   const int jobs = options.jobs > 0 ? options.jobs : io::getAvailableCores();
   design::ThreadExecutor executor(task.getStore(), jobs);
   return task.run(executor);
+}
+
+std::string readWholeFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw std::runtime_error(path + ": cannot be read");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void writeDesignDeck(const design::DesignStudy& study, const std::vector<double>& x,
+                     const std::string& evaluationFolder, const std::string& target,
+                     std::vector<std::string> header) {
+  namespace fs = std::filesystem;
+  const fs::path from(evaluationFolder), to(target);
+  std::vector<std::pair<std::string, std::string>> files;
+  std::vector<std::string> overrides = study.fixedOverrides;
+  const std::vector<std::string> own = study.getOverrides(x);
+  overrides.insert(overrides.end(), own.begin(), own.end());
+  if (study.profile.enabled) {
+    files.emplace_back("skirt_profile.csv", readWholeFile((from / "skirt_profile.csv").string()));
+    overrides.push_back("liner.skirt_profile.axial_profile_file=" +
+                        (to / "skirt_profile.csv").string());
+  }
+  std::string all;
+  for (const auto& o : overrides)
+    all += (all.empty() ? "" : " ") + o;
+  header.push_back("the base deck " + study.baseDeckPath + " with these overrides applied:");
+  header.push_back("  " + all);
+  header.push_back("file paths are absolute; its results are in run/ beside this file");
+  files.emplace_back("engine.yaml",
+                     design::makeDeckWithOverrides(study.baseDeckPath, overrides, header));
+  io::writeFilesAtomically(to.string(), files);
+  io::writeFilesAtomically((to / "run").string(),
+                           {{"cycle.csv", readWholeFile((from / "cycle.csv").string())},
+                            {"summary.json", readWholeFile((from / "summary.json").string())}});
 }
 
 }  // namespace pistondyn::app

@@ -28,9 +28,9 @@ struct DesignOptions {
   bool quiet = false;
 };
 
-// DECK, --out, --jobs, --set, --quiet.
-void addDesignOptions(CLI::App& command, DesignOptions& options, const std::string& deckHelp,
-                      const std::string& outHelp);
+// DECK (shown as `deckName`, e.g. OPT.yaml), --out, --jobs, --set, --quiet.
+void addDesignOptions(CLI::App& command, DesignOptions& options, const std::string& deckName,
+                      const std::string& deckHelp, const std::string& outHelp);
 
 class DesignTask {
  public:
@@ -67,6 +67,18 @@ int checkDesignOutPath(const std::string& outDir);
 // returns the exit code; nullopt when `body` succeeded.
 std::optional<int> reportPrepareError(const std::string& kindText,
                                       const std::function<void()>& body);
+
+// The chosen design of a study (the optimum, the fitted values) as a deck of its own:
+// `target`/engine.yaml, the base deck with the shared overrides and the design's values
+// (file paths absolute; a profile table copied beside it), and `target`/run/ with the
+// evaluation's cycle.csv and summary.json. `header` lines open the deck. Throws
+// std::runtime_error.
+void writeDesignDeck(const design::DesignStudy& study, const std::vector<double>& x,
+                     const std::string& evaluationFolder, const std::string& target,
+                     std::vector<std::string> header);
+
+// A whole file's bytes; throws std::runtime_error naming it.
+std::string readWholeFile(const std::string& path);
 
 #ifdef PISTONDYN_WITH_MPI
 int runDesignTaskMpi(const DesignOptions& options, DesignTask& task);

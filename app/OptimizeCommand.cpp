@@ -37,15 +37,6 @@ namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 using common::formatNumber;
 
-std::string readAll(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in)
-    throw std::runtime_error(p.string() + ": cannot be read");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 Json pointJson(const design::OptimizeSpec& spec, const design::DesignPoint& p, std::size_t number) {
   Json j;
   j["history_number"] = number;
@@ -124,7 +115,7 @@ class OptimizeTask final : public DesignTask {
     Json searches = Json::array();
     for (const auto& s : o.searches) {
       searches.push_back({{"stage", s.stage},
-                          {"designs_requested", s.evaluations},
+                          {"nlopt_evaluations", s.evaluations},
                           {"stopped", s.stopReason},
                           {"best_history_number", s.best ? Json(*s.best + 1) : Json(nullptr)}});
     }
@@ -141,37 +132,10 @@ class OptimizeTask final : public DesignTask {
         }
       }
       result["active_constraints"] = active;
-      // The optimum's deck (with its profile table beside it) and run folder.
-      const fs::path from = best.result.folder;
-      const fs::path optimum = fs::path(dir) / "optimum";
-      std::vector<std::pair<std::string, std::string>> files;
-      std::vector<std::string> overrides = spec.study.fixedOverrides;
-      const std::vector<std::string> own = spec.study.getOverrides(best.x);
-      overrides.insert(overrides.end(), own.begin(), own.end());
-      if (spec.study.profile.enabled) {
-        files.emplace_back("skirt_profile.csv", readAll(from / "skirt_profile.csv"));
-        overrides.push_back("liner.skirt_profile.axial_profile_file=" +
-                            (optimum / "skirt_profile.csv").string());
-      }
-      files.emplace_back(
-          "engine.yaml",
-          design::makeDeckWithOverrides(
-              spec.study.baseDeckPath, overrides,
-              {"pistondyn optimize: the optimum of " + spec.study.deckPath +
-                   " (history.csv number " + std::to_string(*o.optimum + 1) + ", objective " +
-                   formatNumber(*best.objective) + ")",
-               "the base deck " + spec.study.baseDeckPath + " with these overrides applied:",
-               [&] {
-                 std::string all;
-                 for (const auto& x : overrides)
-                   all += (all.empty() ? "" : " ") + x;
-                 return "  " + all;
-               }(),
-               "file paths are absolute; its results are in run/ beside this file"}));
-      io::writeFilesAtomically(optimum.string(), files);
-      io::writeFilesAtomically((optimum / "run").string(),
-                               {{"cycle.csv", readAll(from / "cycle.csv")},
-                                {"summary.json", readAll(from / "summary.json")}});
+      writeDesignDeck(
+          spec.study, best.x, best.result.folder, (std::filesystem::path(dir) / "optimum").string(),
+          {"pistondyn optimize: the optimum of " + spec.study.deckPath + " (history.csv number " +
+           std::to_string(*o.optimum + 1) + ", objective " + formatNumber(*best.objective) + ")"});
     }
     top.emplace_back("result.json",
                      result.dump(2, ' ', false, Json::error_handler_t::replace) + "\n");
@@ -220,7 +184,7 @@ class OptimizeCommand final : public Subcommand {
             "minimise an objective (fmep, friction power, slap energy, a weighted sum) under "
             "constraints, with NLopt; each evaluation a case run on all cores or MPI ranks")) {
     addDesignOptions(
-        *app_, options_,
+        *app_, options_, "OPT.yaml",
         "optimisation deck (YAML: base_deck, set, variables, profile, objective, constraints, "
         "method; README.md, Design optimisation)",
         "output folder (created if needed): design.json, evaluations/<id>/ (one run per "

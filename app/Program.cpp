@@ -39,6 +39,8 @@ const char* kSynopsis =
     "                       [--no-plot]         (comparison.csv, .md and figures)\n"
     "       pistondyn optimize OPT.yaml --out DIR [--jobs N] [--set key.path=value]... [--quiet]\n"
     "                       (also under mpirun -np K)\n"
+    "       pistondyn fit FIT.yaml --out DIR [--jobs N] [--set key.path=value]... [--quiet]\n"
+    "       pistondyn propagate PROP.yaml --out DIR [--jobs N] [--set key.path=value]... [--quiet]\n"
     "       pistondyn keys [--markdown]     (every deck key: unit, default, range)\n"
     "       pistondyn --help | --version | <command> --help\n";
 
@@ -69,6 +71,8 @@ int runProgram(int argc, char** argv) {
   commands.push_back(addSweepCommand(program));
   commands.push_back(addStudyCommand(program));
   commands.push_back(addOptimizeCommand(program));
+  commands.push_back(addFitCommand(program));
+  commands.push_back(addPropagateCommand(program));
   commands.push_back(addKeysCommand(program));
 
   // An unknown first word is an unknown command (CLI11 would only say one is required).

@@ -163,9 +163,13 @@ std::string renderSvg(const Chart& chart, int width, int height) {
         << escapeHtml(text) << "</text>\n";
   }
   int legend = 0;
-  auto legendEntry = [&](const std::string& text, const char* c, bool box) {
+  auto legendEntry = [&](const std::string& text, const char* c,
+                         int kind) {  // 0 line, 1 box, 2 dot
     const double y = top + 6 + 16.0 * legend++;
-    if (box)
+    if (kind == 2)
+      svg << "<circle cx=\"" << right + 17 << "\" cy=\"" << y << "\" r=\"3\" fill=\"" << c
+          << "\"/>";
+    else if (kind == 1)
       svg << "<rect x=\"" << right + 10 << "\" y=\"" << y - 5
           << "\" width=\"14\" height=\"10\" fill=\"" << c << "\" fill-opacity=\"0.3\"/>";
     else
@@ -185,7 +189,7 @@ std::string renderSvg(const Chart& chart, int width, int height) {
       path << 'L' << num(px(b.x[i])) << ',' << num(py(b.lower[i])) << ' ';
     svg << "<path d=\"" << path.str() << "Z\" fill=\"" << colour(b.colour)
         << "\" fill-opacity=\"0.25\" stroke=\"none\"/>\n";
-    legendEntry(b.label, colour(b.colour), true);
+    legendEntry(b.label, colour(b.colour), 1);
   }
   for (const auto& s : chart.series) {
     const char* c = colour(s.colour);
@@ -211,7 +215,7 @@ std::string renderSvg(const Chart& chart, int width, int height) {
           << "\" stroke-width=\"1.5\"" << (s.dashed ? " stroke-dasharray=\"5,3\"" : "") << "/>\n";
     }
     if (!s.label.empty())
-      legendEntry(s.label, c, false);
+      legendEntry(s.label, c, s.points ? 2 : 0);
   }
   svg << "</svg>\n";
   return svg.str();

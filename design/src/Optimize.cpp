@@ -271,7 +271,6 @@ class Search {
   }
 
   const DesignPoint& at(const std::vector<double>& u) {
-    ++requests_;
     const auto it = memo_.find(u);
     if (it != memo_.end())
       return trail_[it->second];
@@ -296,7 +295,9 @@ class Search {
     return p;
   }
 
+  // NLopt evaluates the objective once per point it tries (the constraints as well).
   double objective(const std::vector<double>& u) {
+    ++requests_;
     const DesignPoint& p = at(u);
     return p.objective ? *p.objective : penalty_;
   }

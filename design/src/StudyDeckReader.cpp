@@ -192,6 +192,27 @@ std::optional<std::pair<double, double>> StudyDeckReader::range(const YAML::Node
   return std::make_pair(lo, hi);
 }
 
+std::optional<std::string> StudyDeckReader::getBaseDeckPath() const {
+  if (!baseNode_.IsDefined() || !baseNode_.IsScalar() || baseNode_.Scalar().empty())
+    return std::nullopt;
+  return resolve(baseNode_.Scalar());
+}
+
+void StudyDeckReader::addVariable(const DesignVariable& v) {
+  if (!hasVariable(v.key))
+    variables_.push_back(v);
+}
+
+bool StudyDeckReader::hasVariable(const std::string& key) const {
+  return std::any_of(variables_.begin(), variables_.end(),
+                     [&](const DesignVariable& v) { return v.key == key; });
+}
+
+bool StudyDeckReader::isSet(const std::string& key) const {
+  return std::any_of(setOrigins_.begin(), setOrigins_.end(),
+                     [&](const auto& s) { return s.first == key; });
+}
+
 bool StudyDeckReader::checkKeyPath(const YAML::Node& node, const std::string& key,
                                    const std::string& where) {
   bool ok = key.find('.') != std::string::npos && key.front() != '.' && key.back() != '.' &&
@@ -212,7 +233,7 @@ bool StudyDeckReader::readCommon(const std::string& key, const YAML::Node& value
     if (const auto t = text(value, key))
       name_ = *t;
   } else if (key == "base_deck") {
-    baseNode_ = value;
+    baseNode_.reset(value);
   } else if (key == "set") {
     readSet(value);
   } else if (key == variablesBlock) {
@@ -269,12 +290,14 @@ void StudyDeckReader::readVariables(const YAML::Node& node, const std::string& b
     DesignVariable v;
     v.key = key;
     v.origin = at(value, where);
-    YAML::Node bounds = value;
+    // reset() rebinds a YAML::Node; operator= would write into the node it refers to.
+    YAML::Node bounds;
+    bounds.reset(value);
     if (withStart && value.IsMap()) {
-      bounds = YAML::Node();
+      bounds.reset(YAML::Node());
       for (const auto& [k, x] : entries(value, where)) {
         if (k == "bounds")
-          bounds = x;
+          bounds.reset(x);
         else if (k == "start")
           v.start = number(x, where + ".start");
         else

@@ -54,6 +54,16 @@ class StudyDeckReader {
   // A path relative to the study deck's folder, made absolute.
   std::string resolve(const std::string& path) const;
   const YAML::Node& getRoot() const { return root_; }
+  // The base deck's path as resolved, once base_deck was read (nullopt before, or if it is
+  // not a path).
+  std::optional<std::string> getBaseDeckPath() const;
+  // Adds a variable unless one of that key exists (variables read from the deck come first).
+  void addVariable(const DesignVariable& v);
+  bool hasVariable(const std::string& key) const;
+  // True if the deck's `set` names the key.
+  bool isSet(const std::string& key) const;
+  // The variables block may be absent (the variables come from elsewhere).
+  void setVariablesBlockOptional() { sawVariables_ = true; }
 
  private:
   bool checkKeyPath(const YAML::Node& node, const std::string& key, const std::string& where);

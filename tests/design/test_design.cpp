@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -12,11 +13,13 @@
 
 #include "pistondyn/design/Evaluations.h"
 #include "pistondyn/design/Figures.h"
+#include "pistondyn/design/Propagate.h"
 #include "pistondyn/design/SkirtProfileDesign.h"
 #include "pistondyn/io/CsvTable.h"
 
 namespace {
 
+namespace fs = std::filesystem;
 using namespace pistondyn;
 using design::SkirtProfileShape;
 
@@ -154,6 +157,50 @@ TEST(EvaluationStore, IdsFollowWhatDecidesTheRunAndNothingElse) {
   const auto store = design::EvaluationStore::decode(a.encode());
   EXPECT_EQ(store.getId(r), a.getId(r));
   EXPECT_EQ(store.getDirectory(), a.getDirectory());
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Quantile, LinearBetweenOrderStatisticsAsNumpysDefault) {
+  // numpy.quantile([4, 1, 3, 2], p) with the default 'linear' method.
+  const std::vector<double> v = {4, 1, 3, 2};
+  EXPECT_DOUBLE_EQ(pistondyn::design::calcQuantile(v, 0.0), 1.0);
+  EXPECT_DOUBLE_EQ(pistondyn::design::calcQuantile(v, 0.05), 1.15);
+  EXPECT_DOUBLE_EQ(pistondyn::design::calcQuantile(v, 0.5), 2.5);
+  EXPECT_DOUBLE_EQ(pistondyn::design::calcQuantile(v, 0.95), 3.85);
+  EXPECT_DOUBLE_EQ(pistondyn::design::calcQuantile(v, 1.0), 4.0);
+  EXPECT_TRUE(std::isnan(pistondyn::design::calcQuantile({}, 0.5)));
+  const auto b = pistondyn::design::calcBand(v);
+  EXPECT_DOUBLE_EQ(b.mean, 2.5);
+  EXPECT_DOUBLE_EQ(b.std, std::sqrt(5.0 / 3.0));  // sample standard deviation
+}
+
+TEST(EstimatedKeys, NumbersWhoseCommentCarriesTheMarkWithTheirSectionPath) {
+  const auto path = fs::temp_directory_path() / "pistondyn_est_keys.yaml";
+  std::ofstream(path) << "# EST in a comment line is no key\n"
+                         "geometry:\n"
+                         "  bore_mm: 74.5   # [V]\n"
+                         "  pin_offset_mm: 0.5   # EST: usual\n"
+                         "piston:\n"
+                         "  mass_g: 210.0   # EST\n"
+                         "  name: \"x\"     # EST but text\n"
+                         "liner:\n"
+                         "  oil:\n"
+                         "    grade: 5W-30   # EST\n"
+                         "    temperature_degC: 40.0  # ESTIMATED is not it; EST is\n"
+                         "  film_um: 1e-1    # TEST is not it\n"
+                         "simulation:\n"
+                         "  cycles: 8   #EST\n";
+  const auto keys = pistondyn::design::findEstimatedKeys(path.string());
+  fs::remove(path);
+  const std::vector<std::pair<std::string, double>> expected = {
+      {"geometry.pin_offset_mm", 0.5},
+      {"piston.mass_g", 210.0},
+      {"liner.oil.temperature_degC", 40.0},
+      {"simulation.cycles", 8.0}};
+  EXPECT_EQ(keys, expected);
 }
 
 }  // namespace

@@ -94,6 +94,25 @@ TEST_P(OptimizeSeeds, FindTheKnownConstrainedOptimum) {
 // Three DOE seeds, each its own test (a few seconds each).
 INSTANTIATE_TEST_SUITE_P(ThreeSeeds, OptimizeSeeds, ::testing::Values(1, 7, 123));
 
+// The global option: NLopt's ISRES over the bounds (seeded), then a local search from its
+// best point among the DOE's.
+TEST_F(OptimizeProgram, TheGlobalStageFeedsTheLocalSearch) {
+  write("opt.yaml", std::string(kOptHead) +
+                        "method:\n  doe_samples: 4\n  global: isres\n  global_evaluations: 60\n"
+                        "  max_evaluations: 60\n  tolerance: 1e-7\n  constraint_tolerance: 1e-7\n");
+  const Invocation r = invoke("optimize opt.yaml --out out --jobs 2 --quiet");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const auto result = readJson(dir_ / "out" / "result.json");
+  EXPECT_EQ(result["searches"][0]["stage"], "global");
+  EXPECT_EQ(result["searches"][0]["nlopt_evaluations"].get<int>(), 60);
+  const CsvRows h = readCsvRows(dir_ / "out" / "history.csv");
+  int global = 0;
+  for (const auto& row : h.rows)
+    global += row.at("stage") == "global" ? 1 : 0;
+  EXPECT_GT(global, 30);  // distinct designs of the 60 requests
+  EXPECT_NEAR(result["optimum"]["objective"].get<double>(), 1.2, 1e-5);
+}
+
 TEST_F(OptimizeProgram, TheOptimumsDeckRunsToTheSameFigures) {
   write("opt.yaml", std::string(kOptHead) + method(3, 30));
   ASSERT_EQ(invoke("optimize opt.yaml --out out --quiet").exitCode, 0);

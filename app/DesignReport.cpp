@@ -356,7 +356,6 @@ std::string makePropagateReport(const design::PropagateSpec& spec,
     chart.xRange = std::make_pair(0.0, 720.0);
     chart.xMarks = {360.0};
     const auto& bands = o.curveBands.at(c);
-    design::Band none;
     ChartBand band{"5 - 95 %", o.angle_deg, {}, {}, 0};
     ChartSeries median{"median", o.angle_deg, {}, false, false, 0};
     for (const auto& b : bands) {

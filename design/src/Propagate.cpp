@@ -197,7 +197,11 @@ PropagateSpec loadPropagateDeck(const std::string& path,
   if (estShare) {
     const double share = *estShare;
     if (const auto base = r.getBaseDeckPath()) {
-      for (const auto& [key, value] : findEstimatedKeys(*base)) {
+      for (const auto& estimated : findEstimatedKeys(*base)) {
+        // Plain variables, not a structured binding: clang 14 (the sanitizer build) cannot
+        // capture a binding in the lambda below.
+        const std::string key = estimated.first;
+        const double value = estimated.second;
         // A key the study lists, sets, or the command line fixes keeps that.
         const bool fixedHere =
             std::any_of(commandLineOverrides.begin(), commandLineOverrides.end(),

@@ -339,8 +339,9 @@ void StudyDeckReader::readProfile(const YAML::Node& node) {
         profile_.rows = static_cast<int>(*n);
       continue;
     }
+    const std::string name = key;  // a binding cannot be captured by clang 14's lambdas
     const auto it = std::find_if(ProfileSpec::kNames.begin(), ProfileSpec::kNames.end(),
-                                 [&](const char* n) { return key == n; });
+                                 [&](const char* n) { return name == n; });
     if (it == ProfileSpec::kNames.end()) {
       problem(value, where,
               "unknown key (expected top_drop_um, bottom_drop_um, min_clearance_height_mm, "

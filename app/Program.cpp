@@ -9,12 +9,16 @@
 //   pistondyn report DIR        (DIR/report.html, self-contained)
 //   pistondyn sweep SWEEP.yaml --out DIR [--jobs N] [--set key.path=value]... [--list] [--quiet]
 //   pistondyn study STUDY.yaml --out DIR [...]  (a sweep compared: comparison.csv, .md, plots)
+//   pistondyn optimize OPT.yaml --out DIR [...]   (design loop: NLopt on the sweep machinery)
+//   pistondyn fit FIT.yaml --out DIR [...]        (calibration to measured traces)
+//   pistondyn propagate PROP.yaml --out DIR [...] (uncertainty bands)
 //   pistondyn keys [--markdown] (the deck reference, from io/DeckKeys.h)
 //   pistondyn --help | --version          (and pistondyn <command> --help)
 //
 // Exit codes: 0 success; 1 bad input (deck, table, override) - nothing written;
 // 2 bad command line; 3 the simulation or writing failed - nothing written;
-// 4 (sweep) some cases failed - listed in sweep.csv, the others written.
+// 4 (sweep) some cases failed - listed in sweep.csv, the others written; (optimize) no
+// feasible design; (propagate) some samples failed.
 
 #include <CLI/CLI.hpp>
 
@@ -38,9 +42,10 @@ const char* kSynopsis =
     "       pistondyn study STUDY.yaml --out DIR [--jobs N] [--set key.path=value]... [--quiet]\n"
     "                       [--no-plot]         (comparison.csv, .md and figures)\n"
     "       pistondyn optimize OPT.yaml --out DIR [--jobs N] [--set key.path=value]... [--quiet]\n"
-    "                       (also under mpirun -np K)\n"
     "       pistondyn fit FIT.yaml --out DIR [--jobs N] [--set key.path=value]... [--quiet]\n"
-    "       pistondyn propagate PROP.yaml --out DIR [--jobs N] [--set key.path=value]... [--quiet]\n"
+    "       pistondyn propagate PROP.yaml --out DIR [--jobs N] [--set key.path=value]... "
+    "[--quiet]\n"
+    "                       (optimize, fit, propagate: also under mpirun -np K)\n"
     "       pistondyn keys [--markdown]     (every deck key: unit, default, range)\n"
     "       pistondyn --help | --version | <command> --help\n";
 
@@ -62,7 +67,8 @@ int runProgram(int argc, char** argv) {
   program.require_subcommand(1);
   program.footer(
       "Exit codes: 0 ok; 1 bad input, nothing written; 2 bad command line; 3 run failed, "
-      "nothing written; 4 (sweep, study) some cases failed, listed in sweep.csv.");
+      "nothing written; 4 (sweep, study) some cases failed, listed in sweep.csv; (optimize) no "
+      "feasible design; (propagate) some samples failed.");
   std::vector<std::unique_ptr<Subcommand>> commands;
   commands.push_back(addRunCommand(program));
   commands.push_back(addCheckCommand(program));

@@ -41,5 +41,12 @@ std::unique_ptr<Subcommand> addReportCommand(CLI::App& program);
 std::unique_ptr<Subcommand> addSweepCommand(CLI::App& program);
 std::unique_ptr<Subcommand> addKeysCommand(CLI::App& program);
 std::unique_ptr<Subcommand> addStudyCommand(CLI::App& program);
+std::unique_ptr<Subcommand> addOptimizeCommand(CLI::App& program);
+std::unique_ptr<Subcommand> addFitCommand(CLI::App& program);
+std::unique_ptr<Subcommand> addPropagateCommand(CLI::App& program);
+
+// The whole program (main.cpp calls it): parses the command line and runs the command.
+// Test programs call it after registering models of their own (LinerRegistry).
+int runProgram(int argc, char** argv);
 
 }  // namespace pistondyn::app

@@ -27,6 +27,8 @@ MORE_PACKAGES=(
   chromium                # tests: report.html rendered headless (skipped without it)
   doxygen graphviz        # API reference: cmake --build build --target docs, ctest -L docs
   libopenmpi-dev openmpi-bin  # optional: `mpirun -np K pistondyn sweep` (PISTONDYN_WITH_MPI)
+  libnlopt-cxx-dev        # the design loop's optimiser (pistondyn::design; NLopt 2.7)
+  python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest  # the Python module
   clang libclang-rt-14-dev llvm  # .ci: sanitizer suite, libFuzzer targets, symbolised stacks
 )
 

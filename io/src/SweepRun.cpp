@@ -413,30 +413,26 @@ std::mutex& deckMutex() {
 
 }  // namespace
 
-SweepCaseResult runSweepCase(const SweepPlan& plan, const std::string& dir, int index,
-                             const LinerRegistry& registry) {
+SweepCaseResult runCaseInFolder(const CaseInFolder& c, const LinerRegistry& registry) {
   SweepCaseResult r;
-  r.index = index;
   const auto start = std::chrono::steady_clock::now();
-  auto elapsed = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
   try {
     common::throwIfCancelled();  // queued cases after SIGINT / SIGTERM do not start
-    const SweepCase& c = plan.getCase(index);
-    const fs::path folder = fs::path(dir) / plan.getCaseFolderName(index);
+    const fs::path folder(c.folder);
     std::error_code ec;
     fs::remove_all(folder, ec);  // what an interrupted run left
+    if (!c.inputFiles.empty())
+      writeFilesAtomically(folder.string(), c.inputFiles);
     std::optional<EngineDeck> deck;
     {
       std::lock_guard<std::mutex> lock(deckMutex());
-      deck.emplace(loadEngineDeck(plan.baseDeckPath, plan.getOverrides(c), registry));
+      deck.emplace(loadEngineDeck(c.baseDeckPath, c.overrides, registry));
     }
     runDeck(*deck, folder.string());
     const auto summary = readText(folder / "summary.json");
     if (!summary)
       throw std::runtime_error((folder / "summary.json").string() + ": cannot be read back");
-    writeFilesAtomically(folder.string(), {{kCaseJson, caseJson(plan, c)}});
+    writeFilesAtomically(folder.string(), {{c.markerName, c.markerText}});
     r.ok = true;
     r.summaryJson = *summary;
   } catch (const common::Cancelled&) {
@@ -448,7 +444,27 @@ SweepCaseResult runSweepCase(const SweepPlan& plan, const std::string& dir, int 
     if (r.message.empty())
       r.message = "the run failed without a message";
   }
-  r.wallTime_s = elapsed();
+  r.wallTime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+SweepCaseResult runSweepCase(const SweepPlan& plan, const std::string& dir, int index,
+                             const LinerRegistry& registry) {
+  SweepCaseResult r;
+  try {
+    const SweepCase& c = plan.getCase(index);
+    CaseInFolder job;
+    job.baseDeckPath = plan.baseDeckPath;
+    job.overrides = plan.getOverrides(c);
+    job.folder = (fs::path(dir) / plan.getCaseFolderName(index)).string();
+    job.markerName = kCaseJson;
+    job.markerText = caseJson(plan, c);
+    r = runCaseInFolder(job, registry);
+  } catch (const std::exception& e) {
+    r.ok = false;
+    r.message = oneLine(e.what());
+  }
+  r.index = index;
   return r;
 }
 

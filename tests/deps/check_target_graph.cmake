@@ -1,5 +1,5 @@
 # The dependency picture of docs/DESIGN.md §2, checked on CMake's own target graph:
-#   app (pistondyn_exe) -> io -> plugin -> mbd_models + the numerics
+#   app (pistondyn_exe -> pistondyn_app) -> design -> io -> plugin -> mbd_models + the numerics
 # and the numerics (mapping, contact_forces, lubrication, and the Simbody-free gap terms
 # plugin/skirt) link no Simbody and nothing of mbd_models, plugin, io or app, not even
 # indirectly (the header-only pistondyn_common is allowed everywhere).
@@ -75,7 +75,9 @@ macro(expect_own_deps target expected)
   message(STATUS "${target} -> ${got}")
 endmacro()
 
-expect_own_deps(pistondyn_exe "pistondyn_io")
+expect_own_deps(pistondyn_exe "pistondyn_app")
+expect_own_deps(pistondyn_app "pistondyn_design;pistondyn_io")
+expect_own_deps(pistondyn_design "pistondyn_io")
 expect_own_deps(pistondyn_io "pistondyn_plugin")
 
 own_deps(pistondyn_plugin plugin_deps)
@@ -88,7 +90,7 @@ foreach(needed pistondyn_mbd_models pistondyn_mapping pistondyn_contact_forces
 endforeach()
 foreach(layer pistondyn_mbd_models pistondyn_plugin)
   closure(${layer} reach)
-  foreach(above pistondyn_io pistondyn_exe)
+  foreach(above pistondyn_io pistondyn_design pistondyn_app pistondyn_exe)
     if(above IN_LIST reach)
       list(APPEND failures "${layer} reaches ${above} (dependencies point downwards only)")
     endif()
@@ -102,7 +104,7 @@ foreach(numerics pistondyn_mapping pistondyn_contact_forces pistondyn_lubricatio
   closure(${numerics} reach)
   message(STATUS "${numerics} reaches: ${reach}")
   foreach(d IN LISTS reach)
-    if(d MATCHES "SimTK|[Ss]imbody|^pistondyn_(mbd_models|plugin|io)$|^pistondyn_exe$|yaml|nlohmann|CLI11")
+    if(d MATCHES "SimTK|[Ss]imbody|^pistondyn_(mbd_models|plugin|io|design|app)$|^pistondyn_exe$|yaml|nlohmann|CLI11|NLopt")
       list(APPEND failures "${numerics} reaches ${d} (the numerics link no Simbody, no I/O)")
     endif()
   endforeach()
@@ -112,5 +114,5 @@ if(failures)
   list(JOIN failures "\n  " text)
   message(FATAL_ERROR "target graph:\n  ${text}")
 endif()
-message(STATUS "target graph: app -> io -> plugin -> mbd_models + numerics; numerics Simbody-free")
+message(STATUS "target graph: app -> design -> io -> plugin -> mbd_models + numerics; numerics Simbody-free")
 file(REMOVE_RECURSE "${WORK_DIR}")

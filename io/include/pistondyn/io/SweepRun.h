@@ -25,6 +25,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "pistondyn/io/LinerRegistry.h"
@@ -80,11 +81,32 @@ SweepOutputState openSweepOutput(const SweepPlan& plan, const std::string& dir);
 SweepCaseResult runSweepCase(const SweepPlan& plan, const std::string& dir, int index,
                              const LinerRegistry& registry = LinerRegistry::getGlobal());
 
+/// One case of a deck run into its own folder: what a sweep case is (runSweepCase) and
+/// what each evaluation of the design loop is (pistondyn::design: optimize, fit,
+/// propagate), so both run the same way on threads and MPI ranks.
+struct CaseInFolder {
+  std::string baseDeckPath;
+  std::vector<std::string> overrides;  ///< --set assignments, in order
+  std::string folder;                  ///< the run folder (cycle.csv, summary.json)
+  /// Files the case's deck reads (a generated skirt profile table): written into the
+  /// folder before the deck is loaded, kept with the results.
+  std::vector<std::pair<std::string, std::string>> inputFiles;  ///< name, content
+  /// The marker written (all-or-nothing) once the run and its summary.json are complete:
+  /// what tells a resumed sweep or design loop that the case need not run again.
+  std::string markerName, markerText;
+};
+/// Removes what an earlier, interrupted run left in the folder, writes the input files,
+/// loads the deck with the overrides (deck reading is serialised across threads), runs it
+/// with runDeck() and writes the marker. Never throws: a failure is a result with ok =
+/// false and a one-line message; the folder then holds at most the input files.
+SweepCaseResult runCaseInFolder(const CaseInFolder& c,
+                                const LinerRegistry& registry = LinerRegistry::getGlobal());
+
 /// The text of sweep.csv for the results given (any order, at most one per case): '#'
 /// comment lines (program, sweep, conventions), a header, then one row per case in index
 /// order:
-/// `case`, one column per swept key, `status`, every numeric or true/false key under
-/// summary.json's results (named after it), `wall_time_s`, `integrator_steps`, `message`.
+///   case, <one column per swept key>, status, <every numeric or true/false key under
+///   summary.json's results, named after it>, wall_time_s, integrator_steps, message
 /// status is ok or failed; message is the failure (quoted). Numbers are copied as
 /// summary.json has them (shortest text reading back to the same double); a case that does
 /// not set a key or lacks a figure leaves its cell empty (never nan or inf). wall_time_s

@@ -1,0 +1,24 @@
+#pragma once
+// The gasoline example deck's lubricated skirt made cheap for design-loop tests: 16 x 12
+// nodes per side, one cycle (not until periodic), the fast flooded setting of README.md
+// ("Benchmarks": BDF3 at 1 deg, Jacobian reuse, Reynolds cavitation, fully flooded), a 2 deg
+// output step: about 0.2 s per run.
+
+#include <string>
+
+namespace pistondyn_test {
+
+inline std::string fastSkirtSet(const std::string& indent = "  ") {
+  std::string s;
+  for (const char* kv :
+       {"simulation.cycles: 1", "simulation.until_periodic: false",
+        "liner.grid.nodes_circumferential: 16", "liner.grid.nodes_axial: 12",
+        "simulation.stepper_order: 3", "simulation.max_step_deg: 1",
+        "liner.film.fallback_to_reference: false", "simulation.jacobian_reuse_steps: 20",
+        "liner.film.cavitation: reynolds", "liner.oil_supply.film_um: null",
+        "liner.oil_supply.fully_flooded: true", "simulation.output_step_deg: 2"})
+    s += indent + kv + "\n";
+  return s;
+}
+
+}  // namespace pistondyn_test

@@ -12,8 +12,6 @@ inline bool isEquationRow(const FilmSystem& s, int m) {
   return s.status[m] == kFull || (s.status[m] == kCav && s.jfo);
 }
 
-constexpr int kGmresRestart = 30;
-constexpr int kMaxKrylovIterations = 40;  // beyond this: factorise the current Jacobian
 constexpr double kInnerSafety = 0.5;      // inner target = kInnerSafety * tolerance
 constexpr double kLooseFraction = 3e-2;   // inexact solves while the active set moves
 // Mass-conserving model: from this active-set step on, a step that cavitates nodes does not also
@@ -47,12 +45,7 @@ void ActiveSetSolver::prepare(const FilmSystem& sys) {
   const int n = sys.n;
   for (Eigen::VectorXd* v : {&rhs_, &step_, &x_, &r_, &z_, &p_, &q_})
     v->setZero(n);
-  V_.setZero(n, kGmresRestart + 1);
-  H_.setZero(kGmresRestart + 1, kGmresRestart);
-  g_.setZero(kGmresRestart + 1);
-  cs_.setZero(kGmresRestart);
-  sn_.setZero(kGmresRestart);
-  y_.setZero(kGmresRestart);
+  gmres_.resize(n);
   eqRow_.assign(n, 0);
   pRow_.assign(n, 0);
   mgRhs_.setZero(n);
@@ -340,7 +333,7 @@ bool ActiveSetSolver::krylovSolve(const FilmSystem& s, double* b, double target,
   if (s.jfo) {
     // GMRES forms its iterate only at the end of a cycle: solve to the loose target and let the
     // active-set loop decide (a second, tight solve follows when the set did not move).
-    ok = gmres(s, b, looseTarget, kMaxKrylovIterations);
+    ok = gmres(s, b, looseTarget);
     stoppedLoose_ = ok && looseTarget > target;
   } else {
     ok = pcg(s, b, target, looseTarget, kMaxKrylovIterations);
@@ -427,78 +420,22 @@ bool ActiveSetSolver::pcg(const FilmSystem& s, double* b, double target, double 
   return false;
 }
 
-bool ActiveSetSolver::gmres(const FilmSystem& s, double* b, double target, int maxIt) {
-  const int n = s.n;
-  const int m = kGmresRestart;
-  Eigen::Map<Eigen::VectorXd> bv(b, n);
-  x_.setZero();
-  r_ = bv;
-  double beta = r_.norm();
-  if (r_.lpNorm<Eigen::Infinity>() <= target) {
-    bv.setZero();
-    return true;
-  }
-  int its = 0;
-  bool missed = false;
-  while (true) {
-    // GMRES minimises the residual's 2-norm, the target is on its max norm, which is up to
-    // sqrt(n) times smaller. Stop when the 2-norm, scaled by the max/2-norm ratio of this
-    // cycle's starting residual, reaches the target: the true residual is then checked below
-    // and, should its shape have changed so that it misses, a restart carries on, stopping on
-    // the 2-norm itself (at most one such restart per solve near the iteration cap).
-    const double normRatio = missed ? 1.0 : r_.lpNorm<Eigen::Infinity>() / beta;
-    V_.col(0) = r_ / beta;
-    g_.setZero();
-    g_[0] = beta;
-    int j = 0;
-    while (j < m) {
-      precondition(s, V_.col(j).data(), z_.data());
-      multiply(s, z_.data(), q_.data());
-      for (int i = 0; i <= j; ++i) {  // modified Gram-Schmidt
-        H_(i, j) = q_.dot(V_.col(i));
-        q_.noalias() -= H_(i, j) * V_.col(i);
-      }
-      const double hNext = q_.norm();
-      if (hNext > 0.0)
-        V_.col(j + 1) = q_ / hNext;
-      for (int i = 0; i < j; ++i) {  // previous Givens rotations
-        const double t = cs_[i] * H_(i, j) + sn_[i] * H_(i + 1, j);
-        H_(i + 1, j) = -sn_[i] * H_(i, j) + cs_[i] * H_(i + 1, j);
-        H_(i, j) = t;
-      }
-      const double d = std::hypot(H_(j, j), hNext);
-      cs_[j] = d > 0.0 ? H_(j, j) / d : 1.0;
-      sn_[j] = d > 0.0 ? hNext / d : 0.0;
-      H_(j, j) = d;
-      g_[j + 1] = -sn_[j] * g_[j];
-      g_[j] = cs_[j] * g_[j];
-      ++j;
-      ++its;
-      ++krylovIterations_;
-      // |g_j| is the residual's 2-norm; normRatio turns it into an estimate of the max norm.
-      if (std::abs(g_[j]) * normRatio <= target || its >= maxIt || hNext == 0.0)
-        break;
-    }
-    for (int i = j - 1; i >= 0; --i) {  // back substitution H y = g
-      double t = g_[i];
-      for (int l = i + 1; l < j; ++l)
-        t -= H_(i, l) * y_[l];
-      y_[i] = t / H_(i, i);
-    }
-    q_.noalias() = V_.leftCols(j) * y_.head(j);
-    precondition(s, q_.data(), z_.data());
-    x_ += z_;
-    multiply(s, x_.data(), q_.data());
-    r_ = bv - q_;
-    if (r_.lpNorm<Eigen::Infinity>() <= target) {
-      bv = x_;
-      return true;
-    }
-    if (its >= maxIt || !r_.allFinite())
-      return false;
-    missed = true;
-    beta = r_.norm();
-  }
+bool ActiveSetSolver::gmres(const FilmSystem& s, double* b, double target) {
+  Eigen::Map<Eigen::VectorXd> bv(b, s.n);
+  GmresMaxNormTarget stop(target);
+  const GmresReport report = gmres_.solve(
+      [&](const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::VectorXd& y) {
+        multiply(s, x.data(), y.data());
+        return true;
+      },
+      [&](const Eigen::Ref<const Eigen::VectorXd>& r, Eigen::Ref<Eigen::VectorXd> z) {
+        precondition(s, r.data(), z.data());
+      },
+      bv, stop);
+  krylovIterations_ += report.iterations;
+  if (report.converged)
+    bv = gmres_.solution();
+  return report.converged;
 }
 
 bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target,

@@ -39,6 +39,8 @@
 
 #include <Eigen/Core>
 
+#include "pistondyn/lubrication/Gmres.h"
+
 #include "GridMultigrid.h"
 #include "ReferenceSolver.h"
 #include "SparseFactor.h"
@@ -97,7 +99,8 @@ class ActiveSetSolver {
   void applyPreconditioner(const FilmSystem& sys, double* v);  // v <- M^-1 v, zero off-set
   void multiply(const FilmSystem& sys, const double* x, double* y) const;  // y = J x
   bool pcg(const FilmSystem& sys, double* b, double absTarget, double looseTarget, int maxIt);
-  bool gmres(const FilmSystem& sys, double* b, double absTarget, int maxIt);
+  // GMRES to a max-norm target (GmresMaxNormTarget), preconditioned by precondition().
+  bool gmres(const FilmSystem& sys, double* b, double absTarget);
 
   StencilPattern pat_;
   GridMultigrid mg_;
@@ -128,10 +131,12 @@ class ActiveSetSolver {
   Eigen::VectorXd cavResidual_;  // Reynolds: balance of the cavitated nodes before the step
   Eigen::VectorXd factorDiag_, precondScale_;  // diagonal at factorisation, drift scaling
 
-  Eigen::VectorXd rhs_, step_, x_, r_, z_, p_, q_;
-  Eigen::MatrixXd V_;  // GMRES basis
-  Eigen::MatrixXd H_;
-  Eigen::VectorXd g_, cs_, sn_, y_;
+  Eigen::VectorXd rhs_, step_, x_, r_, z_, p_, q_;  // PCG's vectors, right-hand side, step
+  // Beyond kMaxKrylovIterations a Krylov solve gives up: the current Jacobian is factorised.
+  static constexpr int kMaxKrylovIterations = 40;
+  // GMRES (mass-conserving model): 30 directions per cycle, standard form; the max-norm target
+  // is checked on the true residual after each cycle (GmresMaxNormTarget).
+  Gmres gmres_{GmresOptions{30, kMaxKrylovIterations, false, false}};
   Eigen::VectorXd changedRhs_;
   std::vector<std::uint8_t> eqRow_;
   Eigen::VectorXd eqMask_;          // 1.0 on equation rows, 0.0 elsewhere

@@ -392,7 +392,7 @@ TEST(LinearlyImplicitStepper, RefusesConstraintsAndReportsFailures) {
 TEST(LinearlyImplicitStepper, CycleSimulationRunsToPeriodicSteadyStateAndKeepsTheLastCycle) {
   Model m;
   plugin::SimulationSettings s;
-  s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2;
+  s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF;
   s.outputStep_deg = 5.0;
   s.cycles = 8;
   s.untilPeriodic = true;

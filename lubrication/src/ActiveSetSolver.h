@@ -253,7 +253,8 @@ class ActiveSetSolver {
   static constexpr int kMaxKrylovIterations = 40;
   // GMRES (mass-conserving model): 30 directions per cycle, standard form; the max-norm target
   // is checked on the true residual after each cycle (GmresMaxNormTarget).
-  Gmres gmres_{GmresOptions{30, kMaxKrylovIterations, false, false}};
+  Gmres gmres_{GmresOptions{/*restart=*/30, /*maxIterations=*/kMaxKrylovIterations,
+                            /*flexible=*/false, /*skipDegenerateDirections=*/false}};
   Eigen::VectorXd changedRhs_;
   std::vector<std::uint8_t> eqRow_;
   Eigen::VectorXd eqMask_;          // 1.0 on equation rows, 0.0 elsewhere

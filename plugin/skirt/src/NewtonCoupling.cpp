@@ -30,7 +30,10 @@ NewtonCoupling::NewtonCoupling(const SkirtSideGrid& side,
   // One cycle of at most maxKrylovIterations film evaluations, flexible form, a direction whose
   // rotation is degenerate left out.
   const int kMax = parameters_.maxKrylovIterations;
-  krylov_ = lubrication::Gmres(lubrication::GmresOptions{kMax, kMax, true, true}, nS);
+  krylov_ = lubrication::Gmres(
+      lubrication::GmresOptions{/*restart=*/kMax, /*maxIterations=*/kMax, /*flexible=*/true,
+                                /*skipDegenerateDirections=*/true},
+      nS);
   vectorS_ = vectorS2_ = Eigen::VectorXd::Zero(nS);
   baseU_m_ = baseTarget_m_ = step_m_ = perturbedU_m_ = perturbedTarget_m_ =
       Eigen::VectorXd::Zero(ns);

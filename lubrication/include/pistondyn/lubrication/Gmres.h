@@ -17,6 +17,10 @@
 ///
 /// The workspace is sized by resize() (the constructor calls it); solve() allocates nothing.
 /// A Gmres object is used by one thread at a time.
+///
+/// Eigen's unsupported GMRES does not serve here: it allocates in every solve, stops only on
+/// the relative 2-norm of the residual, and orthogonalises by Householder reflections, so it
+/// would neither meet the film solver's max-norm target nor repeat its arithmetic.
 
 #include <cmath>
 

@@ -38,7 +38,7 @@ double maxAbs(const std::vector<double>& v) {
 struct CycleRun {
   explicit CycleRun(double outputStep_deg) : setup(ts::makeGasolineSkirtModel(32, 24)) {
     plugin::SimulationSettings s;
-    s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2;
+    s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF;
     s.outputStep_deg = outputStep_deg;
     s.cycles = 2;
     plugin::CycleSimulation sim(*setup.model, s);
@@ -186,7 +186,7 @@ TEST(LubricatedSkirt, ParallelSidesGiveTheSerialResults) {
     p.parallelSides = parallel;
     ts::SkirtModel setup = ts::makeGasolineSkirtModel(16, 12, &p);
     plugin::SimulationSettings s;
-    s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2;
+    s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF;
     s.outputStep_deg = 1.0;
     s.cycles = 1;
     plugin::CycleSimulation sim(*setup.model, s);
@@ -282,7 +282,7 @@ TEST(LubricatedSkirt, JacobianReuseFollowsTheFloodedCycle) {
     // the default supply: fully flooded (SupplyFilm::constant_m = inf)
     ts::SkirtModel setup = ts::makeGasolineSkirtModel(16, 12, &p);
     plugin::SimulationSettings s;
-    s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2;
+    s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF;
     s.outputStep_deg = 1.0;
     s.cycles = 1;
     s.maxStep_deg = maxStep_deg;

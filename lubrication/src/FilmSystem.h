@@ -150,6 +150,13 @@ struct FilmSystem {
 
   // Boundary flux and storage diagnostics at the current iterate.
   void fluxDiagnostics(double& inflow, double& outflow, double& storage) const;
+
+  // Net flow out of the film across the edge lines at the current iterate, per edge node
+  // (FilmResult::edgeOutflowYMin_m3ps ... : the face flow from the node inside, minus what the
+  // edge node's own control volume takes up as its gap changes, theta A dhT/dt).
+  void calcEdgeOutflows(FilmResult& result) const;
+  // Net outflow [m^3/s] from unknown node k into its neighbour e through their common face.
+  double faceOutflow(int k, int e) const;
 };
 
 }  // namespace pistondyn::lubrication::detail

@@ -377,8 +377,9 @@ TEST(LubricatedSkirt, SideSolvedWithoutSimbodyEqualsTheElementsSide) {
     const skirt::SkirtSideResults& alone = solver.getResults();
     const skirt::SkirtSideResults& inElement = element.getLastSideResults(side);
     const auto& cached = element.getResults(st).sides[side == plugin::SkirtSide::Thrust ? 0 : 1];
-    if (side == plugin::SkirtSide::Thrust)  // moving towards thrust: a loaded film there
+    if (side == plugin::SkirtSide::Thrust) {  // moving towards thrust: a loaded film there
       ASSERT_GT(alone.hydrodynamicNormalForce_N, 100.0);
+    }
     EXPECT_TRUE((alone.film.pressure_Pa() == inElement.film.pressure_Pa()).all());
     EXPECT_TRUE((alone.film.fillFraction() == inElement.film.fillFraction()).all());
     EXPECT_TRUE((alone.contact.pressure_Pa == inElement.contact.pressure_Pa).all());

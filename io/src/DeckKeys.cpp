@@ -362,7 +362,8 @@ const DeckKeyTable& getEngineDeckKeys() {
               .means("Simbody integrator, or the linearly implicit BDF2 stepper for the stiff "
                      "squeeze film (`plugin/LinearlyImplicitStepper.h`; no constraints: not "
                      "with `ideal_guide`). The lubricated skirt needs `linearly_implicit_bdf2` "
-                     "or `cpodes_bdf`"),
+                     "or `cpodes_bdf`; absent, a stiff liner (the lubricated skirt) gets "
+                     "`linearly_implicit_bdf2`"),
           K::number("simulation.accuracy")
               .byDefault(1e-9)
               .within(Bounds::between(1e-14, 1e-2))

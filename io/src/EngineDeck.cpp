@@ -214,7 +214,14 @@ void readSimulation(YamlDeck& d, const LinerModelNeeds& liner, const std::string
                      std::to_string(static_cast<long>(Settings::kMaxRows)) +
                      " output rows; use a coarser step");
   }
-  const std::string integ = root.getChoice(key("simulation.integrator"));
+  // Absent with a stiff liner (the lubricated skirt): the linearly implicit stepper, the one
+  // integrator that carries it, rather than the explicit default the deck would then refuse.
+  const bool stiffDefault = !d.has("simulation.integrator") && !liner.stiffReason.empty();
+  std::string integ = root.getChoice(key("simulation.integrator"));
+  if (stiffDefault) {
+    integ = "linearly_implicit_bdf2";
+    d.recordInput({"simulation.integrator", "simulation.integrator", integ});
+  }
   const std::map<std::string, Settings::Integrator> integrators = {
       {"rk_merson", Settings::Integrator::RungeKuttaMerson},
       {"rk_feldberg", Settings::Integrator::RungeKuttaFeldberg},

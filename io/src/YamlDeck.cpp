@@ -369,6 +369,13 @@ const std::vector<ResolvedInput>& YamlDeck::getResolvedInputs() const {
 }
 
 void YamlDeck::recordInput(ResolvedInput input) {
+  // A value resolved again (a default the deck then replaces) takes the earlier one's place.
+  for (ResolvedInput& r : impl_->resolved) {
+    if (r.path == input.path) {
+      r = std::move(input);
+      return;
+    }
+  }
   impl_->resolved.push_back(std::move(input));
 }
 

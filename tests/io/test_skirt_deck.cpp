@@ -302,6 +302,18 @@ TEST_F(SkirtScratchDeck, AnExplicitIntegratorIsRejectedForTheSkirt) {
   EXPECT_EQ(rejection({"simulation.integrator=cpodes_bdf"}), "");
 }
 
+// A skirt deck that names no integrator gets the one that carries it, not the explicit
+// default it would then refuse (issue 35); a deck without a stiff liner keeps rk_merson.
+TEST_F(SkirtScratchDeck, ASkirtDeckWithoutAnIntegratorGetsTheLinearlyImplicitStepper) {
+  const io::EngineDeck skirt = io::loadEngineDeck(deck(), {"simulation.integrator=null"});
+  EXPECT_EQ(skirt.simulation.integrator,
+            plugin::SimulationSettings::Integrator::LinearlyImplicitBDF);
+  const io::EngineDeck guide = io::loadEngineDeck(
+      deck(), {"simulation.integrator=null", "liner.model=ideal_guide"});
+  EXPECT_EQ(guide.simulation.integrator,
+            plugin::SimulationSettings::Integrator::RungeKuttaMerson);
+}
+
 TEST_F(SkirtScratchDeck, TheStepperOrderIsTwoOrThree) {
   EXPECT_EQ(rejection({"simulation.stepper_order=3"}), "");
   for (const char* bad : {"1", "4", "2.5"}) {

@@ -146,7 +146,8 @@ class YamlDeck {
 
   /// Values read through DeckSection getters, in the order they were read.
   const std::vector<ResolvedInput>& getResolvedInputs() const;
-  void recordInput(ResolvedInput input);  ///< adds one (DeckSection's getters call it)
+  /// Adds one, or replaces the one of the same path (DeckSection's getters call it).
+  void recordInput(ResolvedInput input);
 
   /// `FILE:LINE: key` (the key's line, else its nearest section's) or `--set ...`.
   std::string where(const std::string& path) const;

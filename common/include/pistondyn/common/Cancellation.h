@@ -15,12 +15,12 @@
 
 namespace pistondyn::common {
 
-// Thrown where a long computation noticed a cancellation request.
+/// Thrown where a long computation noticed a cancellation request.
 class Cancelled : public std::runtime_error {
  public:
   explicit Cancelled(int signal)
       : std::runtime_error("cancelled by signal " + std::to_string(signal)), signal_(signal) {}
-  // The signal that asked for it (0: cancelled without one).
+  /// The signal that asked for it (0: cancelled without one).
   int getSignal() const { return signal_; }
 
  private:
@@ -33,13 +33,13 @@ static_assert(std::atomic<int>::is_always_lock_free,
               "requestCancellation must be async-signal-safe");
 }  // namespace detail
 
-// Asks every loop that checks to stop; `signal` is reported back (use a positive number
-// when there is no signal). Async-signal-safe.
+/// Asks every loop that checks to stop; `signal` is reported back (use a positive number
+/// when there is no signal). Async-signal-safe.
 inline void requestCancellation(int signal) noexcept {
   detail::cancellationSignal.store(signal > 0 ? signal : -1, std::memory_order_relaxed);
 }
 
-// The signal of the request, 0 if none (-1: requested without a signal).
+/// The signal of the request, 0 if none (-1: requested without a signal).
 inline int getCancellationSignal() noexcept {
   return detail::cancellationSignal.load(std::memory_order_relaxed);
 }
@@ -48,13 +48,13 @@ inline bool isCancellationRequested() noexcept {
   return getCancellationSignal() != 0;
 }
 
-// Throws Cancelled if a cancellation was requested.
+/// Throws Cancelled if a cancellation was requested.
 inline void throwIfCancelled() {
   if (const int s = getCancellationSignal(); s != 0)
     throw Cancelled(s > 0 ? s : 0);
 }
 
-// Forgets the request (tests; a program that handled it and goes on).
+/// Forgets the request (tests; a program that handled it and goes on).
 inline void clearCancellation() noexcept {
   detail::cancellationSignal.store(0, std::memory_order_relaxed);
 }

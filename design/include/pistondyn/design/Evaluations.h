@@ -33,41 +33,41 @@
 namespace pistondyn::design {
 
 struct EvaluationRequest {
-  std::vector<std::string> overrides;  // "key=value", after the study's shared ones
-  // Files written into the evaluation's folder before the run; `fileKey` (if not empty) is
-  // set to the first file's path (the generated skirt profile's key).
-  std::vector<std::pair<std::string, std::string>> files;  // name, content
+  std::vector<std::string> overrides;  ///< "key=value", after the study's shared ones
+  /// Files written into the evaluation's folder before the run; `fileKey` (if not empty) is
+  /// set to the first file's path (the generated skirt profile's key).
+  std::vector<std::pair<std::string, std::string>> files;  ///< name, content
   std::string fileKey;
 };
 
 struct EvaluationResult {
   std::string id;
-  std::string folder;  // absolute
+  std::string folder;  ///< absolute
   bool ok = false;
-  bool fromEarlierRun = false;  // found complete in DIR, not run now
-  std::string message;          // why it failed (one line)
-  std::string summaryJson;      // ok: the text of its summary.json
-  double wallTime_s = 0.0;      // of the run now [s]
+  bool fromEarlierRun = false;  ///< found complete in DIR, not run now
+  std::string message;          ///< why it failed (one line)
+  std::string summaryJson;      ///< ok: the text of its summary.json
+  double wallTime_s = 0.0;      ///< of the run now [s]
 };
 
-// Where the evaluations of one study live, and how a request becomes a run.
+/// Where the evaluations of one study live, and how a request becomes a run.
 class EvaluationStore {
  public:
-  // `dir`: the study's output folder; `context`: the hash of what every evaluation shares
-  // (DesignStudy::contextSha256).
+  /// `dir`: the study's output folder; `context`: the hash of what every evaluation shares
+  /// (DesignStudy::contextSha256).
   EvaluationStore(std::string dir, std::string baseDeckPath,
                   std::vector<std::string> sharedOverrides, std::string context);
 
   std::string getId(const EvaluationRequest& r) const;
-  std::string getFolder(const std::string& id) const;  // DIR/evaluations/<id>, absolute
-  // The result of a complete evaluation folder of this request, or nullopt.
+  std::string getFolder(const std::string& id) const;  ///< DIR/evaluations/<id>, absolute
+  /// The result of a complete evaluation folder of this request, or nullopt.
   std::optional<EvaluationResult> findComplete(const EvaluationRequest& r) const;
-  // Runs the request into its folder now (never throws; a failure is ok = false).
+  /// Runs the request into its folder now (never throws; a failure is ok = false).
   EvaluationResult run(const EvaluationRequest& r,
                        const io::LinerRegistry& registry = io::LinerRegistry::getGlobal()) const;
 
   const std::string& getDirectory() const { return dir_; }
-  // The store as text and back (what the MPI ranks are sent).
+  /// The store as text and back (what the MPI ranks are sent).
   std::string encode() const;
   static EvaluationStore decode(const std::string& text);
 
@@ -76,9 +76,9 @@ class EvaluationStore {
   std::vector<std::string> sharedOverrides_;
 };
 
-// Runs evaluations on workers. evaluate() may be called from several threads at once;
-// each request is looked up in the store, then in what ran or runs now, and only then
-// submitted.
+/// Runs evaluations on workers. evaluate() may be called from several threads at once;
+/// each request is looked up in the store, then in what ran or runs now, and only then
+/// submitted.
 class Executor {
  public:
   explicit Executor(const EvaluationStore& store) : store_(store) {}
@@ -86,15 +86,15 @@ class Executor {
   Executor(const Executor&) = delete;
   Executor& operator=(const Executor&) = delete;
 
-  // The results, in request order (blocks until every one is done). Never throws for a
-  // failed run.
+  /// The results, in request order (blocks until every one is done). Never throws for a
+  /// failed run.
   std::vector<EvaluationResult> evaluate(const std::vector<EvaluationRequest>& requests);
-  // Evaluations run now, and found complete in the folder (requested at least once).
+  /// Evaluations run now, and found complete in the folder (requested at least once).
   int getRunCount() const;
   int getEarlierCount() const;
 
  protected:
-  // Starts running `request` (whose id and folder are `id`, store.getFolder(id)).
+  /// Starts running `request` (whose id and folder are `id`, store.getFolder(id)).
   virtual std::shared_future<EvaluationResult> submit(const EvaluationRequest& request,
                                                       const std::string& id) = 0;
   const EvaluationStore& store_;
@@ -105,7 +105,7 @@ class Executor {
   int run_ = 0, earlier_ = 0;
 };
 
-// Threads of this process, one model each (io::runCaseInFolder).
+/// Threads of this process, one model each (io::runCaseInFolder).
 class ThreadExecutor final : public Executor {
  public:
   ThreadExecutor(const EvaluationStore& store, int threads,
@@ -121,7 +121,7 @@ class ThreadExecutor final : public Executor {
   std::unique_ptr<Impl> impl_;
 };
 
-// Requests and results as text (what an MPI rank is sent and sends back).
+/// Requests and results as text (what an MPI rank is sent and sends back).
 std::string encodeRequest(const EvaluationRequest& r);
 EvaluationRequest decodeRequest(const std::string& text);
 std::string encodeResult(const EvaluationResult& r);

@@ -9,18 +9,18 @@
 
 namespace pistondyn::design {
 
-// Every figure name an objective, a constraint or a propagation may name.
+/// Every figure name an objective, a constraint or a propagation may name.
 const std::vector<std::string>& getKnownFigures();
 bool isKnownFigure(const std::string& name);
-// "fmep_kPa, friction_power_mean_W, ..." for messages.
+/// "fmep_kPa, friction_power_mean_W, ..." for messages.
 std::string listKnownFigures();
 
-// The figures of one summary.json text.
+/// The figures of one summary.json text.
 class RunFigures {
  public:
-  // Throws std::runtime_error if the text is not a summary with `results`.
+  /// Throws std::runtime_error if the text is not a summary with `results`.
   explicit RunFigures(const std::string& summaryJson);
-  // The figure, or nullopt if the run's summary has none (the liner does not report it).
+  /// The figure, or nullopt if the run's summary has none (the liner does not report it).
   std::optional<double> get(const std::string& name) const;
 
  private:

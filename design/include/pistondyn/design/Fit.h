@@ -42,14 +42,16 @@
 namespace pistondyn::design {
 
 struct MeasuredTrace {
-  std::string file;                 // as resolved
-  std::string column;               // of cycle.csv
-  std::optional<double> height_mm;  // lateral displacement at this height above the pin
+  std::string file;                 ///< as resolved
+  std::string column;               ///< of cycle.csv
+  std::optional<double> height_mm;  ///< lateral displacement at this height above the pin
   double weight = 1.0;
-  std::vector<std::pair<double, double>> windows_deg;  // empty: the whole trace
-  std::vector<double> angle_deg, value;                // the points inside the windows
-  std::string origin;                                  // "fit.yaml:9: measured[1]"
-  // The column's name as the residuals name it ("tilt_mrad", "u_lat_um at 10 mm").
+  std::vector<std::pair<double, double>> windows_deg;  ///< empty: the whole trace
+  ///@{
+  std::vector<double> angle_deg, value;                ///< the points inside the windows
+  ///@}
+  std::string origin;                                  ///< "fit.yaml:9: measured[1]"
+  /// The column's name as the residuals name it ("tilt_mrad", "u_lat_um at 10 mm").
   std::string getLabel() const;
 };
 
@@ -62,27 +64,31 @@ struct FitMethod {
 };
 
 struct FitSpec {
-  DesignStudy study;  // its variables are the parameters, each with a start
+  DesignStudy study;  ///< its variables are the parameters, each with a start
   std::vector<MeasuredTrace> traces;
   FitMethod method;
+  ///@{
   std::string description, fingerprint;
+  ///@}
   int getPointCount() const;
 };
 
-// Reads and checks FIT.yaml: the parameters, the traces (columns, crank angles strictly
-// increasing and within the run's 0 .. 720 deg cycle, finite numbers, each trace's column
-// one the run writes), at least one point more than parameters. Throws io::DeckError.
+/// Reads and checks FIT.yaml: the parameters, the traces (columns, crank angles strictly
+/// increasing and within the run's 0 .. 720 deg cycle, finite numbers, each trace's column
+/// one the run writes), at least one point more than parameters. Throws io::DeckError.
 FitSpec loadFitDeck(const std::string& path,
                     const std::vector<std::string>& commandLineOverrides = {},
                     const io::LinerRegistry& registry = io::LinerRegistry::getGlobal());
 
 struct FitParameterResult {
   std::string key;
+  ///@{
   double start = 0.0, value = 0.0;
+  ///@}
   bool atBound = false;
   bool identifiable = true;
   std::optional<double> standardError;
-  std::string note;  // why not identifiable, or strong correlations
+  std::string note;  ///< why not identifiable, or strong correlations
 };
 
 struct FitIteration {
@@ -91,36 +97,36 @@ struct FitIteration {
   double sumOfSquares = 0.0;
   double lambda = 0.0;
   bool accepted = false;
-  std::string evaluation;  // its run folder id
+  std::string evaluation;  ///< its run folder id
 };
 
 struct FitOutcome {
-  bool ok = false;      // the fit reached a result (the start ran)
-  std::string message;  // why not
+  bool ok = false;      ///< the fit reached a result (the start ran)
+  std::string message;  ///< why not
   std::string stopReason;
   std::vector<FitParameterResult> parameters;
-  std::vector<std::vector<double>> correlation;  // NaN for unidentifiable parameters
+  std::vector<std::vector<double>> correlation;  ///< NaN for unidentifiable parameters
   double sumOfSquares = 0.0;
   int points = 0;
-  double residualStd = 0.0;  // sqrt(SSR / (m - n)), in the weighted traces' units
-  int rank = 0;              // of the Jacobian at the optimum
+  double residualStd = 0.0;  ///< sqrt(SSR / (m - n)), in the weighted traces' units
+  int rank = 0;              ///< of the Jacobian at the optimum
   std::vector<FitIteration> iterations;
-  EvaluationResult best;  // the run at the fitted values
+  EvaluationResult best;  ///< the run at the fitted values
   std::vector<double> bestX;
-  std::vector<std::vector<double>> model;  // per trace, the fitted model at its angles
+  std::vector<std::vector<double>> model;  ///< per trace, the fitted model at its angles
 };
 
 using FitProgress = std::function<void(const std::string& line)>;
 
 FitOutcome runFit(const FitSpec& spec, Executor& executor, const FitProgress& progress = {});
 
-// The model's values of a trace from a run folder's cycle.csv (its last cycle, linear and
-// periodic interpolation at the trace's angles). Throws std::runtime_error.
+/// The model's values of a trace from a run folder's cycle.csv (its last cycle, linear and
+/// periodic interpolation at the trace's angles). Throws std::runtime_error.
 std::vector<double> readModelTrace(const MeasuredTrace& trace, const std::string& runFolder);
 
-// Covariance analysis of a Jacobian J (m x n, row-major: J[i][j] = d r_i / d x_j) with the
-// residual variance s2: standard errors (nullopt: not identifiable, with the reason in
-// `notes`), correlations (NaN where undefined) and the rank.
+/// Covariance analysis of a Jacobian J (m x n, row-major: J[i][j] = d r_i / d x_j) with the
+/// residual variance s2: standard errors (nullopt: not identifiable, with the reason in
+/// `notes`), correlations (NaN where undefined) and the rank.
 struct CovarianceAnalysis {
   std::vector<std::optional<double>> standardError;
   std::vector<std::string> notes;
@@ -131,10 +137,10 @@ CovarianceAnalysis analyseCovariance(const std::vector<std::vector<double>>& J, 
                                      const std::vector<std::string>& names, double rankTolerance,
                                      double correlationLimit);
 
-// The residuals' table: trace, crank_angle_deg, measured, fitted, residual (fitted -
-// measured), weight.
+/// The residuals' table: trace, crank_angle_deg, measured, fitted, residual (fitted -
+/// measured), weight.
 std::string makeResidualsCsv(const FitSpec& spec, const FitOutcome& outcome);
-// The iterations' table.
+/// The iterations' table.
 std::string makeFitHistoryCsv(const FitSpec& spec, const FitOutcome& outcome);
 
 }  // namespace pistondyn::design

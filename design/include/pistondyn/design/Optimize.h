@@ -39,20 +39,22 @@
 namespace pistondyn::design {
 
 struct ObjectiveTerm {
-  std::string figure;  // Figures.h
+  std::string figure;  ///< Figures.h
   double weight = 1.0;
 };
 
 struct DesignConstraint {
   std::string figure;
-  std::optional<double> minimum, maximum;  // figure >= minimum, figure <= maximum
+  ///@{
+  std::optional<double> minimum, maximum;  ///< figure >= minimum, figure <= maximum
+  ///@}
 };
 
 struct OptimizeMethod {
-  long doeSamples = 0;  // 0: 4 x variables + 4
+  long doeSamples = 0;  ///< 0: 4 x variables + 4
   std::uint64_t seed = 1;
   int starts = 1;
-  std::string local;  // "cobyla" or "bobyqa"; "" : cobyla with constraints, else bobyqa
+  std::string local;  ///< "cobyla" or "bobyqa"; "" : cobyla with constraints, else bobyqa
   int maxEvaluations = 60;
   double tolerance = 1e-3;
   double initialStep = 0.1;
@@ -66,59 +68,59 @@ struct OptimizeSpec {
   std::vector<ObjectiveTerm> objective;
   std::vector<DesignConstraint> constraints;
   OptimizeMethod method;
-  std::string description;  // the normalised deck as JSON (design.json)
-  std::string fingerprint;  // SHA-256 of the kind, the context and the description
+  std::string description;  ///< the normalised deck as JSON (design.json)
+  std::string fingerprint;  ///< SHA-256 of the kind, the context and the description
 };
 
-// Reads and checks OPT.yaml; `commandLineOverrides` are shared by every evaluation. Throws
-// io::DeckError listing every problem ("opt.yaml:12: objective: ...").
+/// Reads and checks OPT.yaml; `commandLineOverrides` are shared by every evaluation. Throws
+/// io::DeckError listing every problem ("opt.yaml:12: objective: ...").
 OptimizeSpec loadOptimizeDeck(const std::string& path,
                               const std::vector<std::string>& commandLineOverrides = {},
                               const io::LinerRegistry& registry = io::LinerRegistry::getGlobal());
 
-// One evaluation as the optimiser saw it.
+/// One evaluation as the optimiser saw it.
 struct DesignPoint {
-  std::string stage;      // "baseline", "doe", "global", "local 1", ...
-  std::vector<double> x;  // variables in their units (empty for the baseline)
+  std::string stage;      ///< "baseline", "doe", "global", "local 1", ...
+  std::vector<double> x;  ///< variables in their units (empty for the baseline)
   EvaluationResult result;
-  std::optional<double> objective;                      // nullopt: failed
-  std::vector<std::optional<double>> constraintValues;  // the figures, per constraint
-  double violation = 0.0;  // largest constraint violation relative to its bound (0: none)
-  bool feasible = false;   // ok, every constraint within the tolerance
+  std::optional<double> objective;                      ///< nullopt: failed
+  std::vector<std::optional<double>> constraintValues;  ///< the figures, per constraint
+  double violation = 0.0;  ///< largest constraint violation relative to its bound (0: none)
+  bool feasible = false;   ///< ok, every constraint within the tolerance
 };
 
 struct LocalSearchSummary {
   std::string stage;
   std::vector<double> start;
-  int evaluations = 0;              // requests the search made (repeats included)
-  std::string stopReason;           // NLopt's
-  std::optional<std::size_t> best;  // index in the history
+  int evaluations = 0;              ///< requests the search made (repeats included)
+  std::string stopReason;           ///< NLopt's
+  std::optional<std::size_t> best;  ///< index in the history
 };
 
 struct OptimizeOutcome {
-  std::vector<DesignPoint> history;  // baseline, DOE, global, each local search in turn
+  std::vector<DesignPoint> history;  ///< baseline, DOE, global, each local search in turn
   std::vector<LocalSearchSummary> searches;
-  std::optional<std::size_t> optimum;  // best feasible (not the baseline)
-  double failurePenalty = 0.0;         // objective a failed run showed the searches
+  std::optional<std::size_t> optimum;  ///< best feasible (not the baseline)
+  double failurePenalty = 0.0;         ///< objective a failed run showed the searches
 };
 
-// One line per finished stage or evaluation, for the progress display (any thread).
+/// One line per finished stage or evaluation, for the progress display (any thread).
 using OptimizeProgress = std::function<void(const std::string& line)>;
 
 OptimizeOutcome runOptimization(const OptimizeSpec& spec, Executor& executor,
                                 const OptimizeProgress& progress = {});
 
-// The evaluation's figures as the optimiser reads them (a missing figure fails it).
+/// The evaluation's figures as the optimiser reads them (a missing figure fails it).
 DesignPoint assessPoint(const OptimizeSpec& spec, std::string stage, std::vector<double> x,
                         EvaluationResult result);
 
-// history.csv: '#' lines, then per evaluation request: number, stage, the variables,
-// objective, each constraint's figure, violation, feasible, status, evaluation folder
-// (relative to DIR), message. Nothing that depends on timing or on which worker ran it.
+/// history.csv: '#' lines, then per evaluation request: number, stage, the variables,
+/// objective, each constraint's figure, violation, feasible, status, evaluation folder
+/// (relative to DIR), message. Nothing that depends on timing or on which worker ran it.
 std::string makeHistoryCsv(const OptimizeSpec& spec, const OptimizeOutcome& outcome);
 
-// A deck file equal to `baseDeckPath` with `overrides` applied, file paths made absolute
-// (so it runs from any folder), with '#' lines naming where it came from.
+/// A deck file equal to `baseDeckPath` with `overrides` applied, file paths made absolute
+/// (so it runs from any folder), with '#' lines naming where it came from.
 std::string makeDeckWithOverrides(const std::string& baseDeckPath,
                                   const std::vector<std::string>& overrides,
                                   const std::vector<std::string>& headerLines);

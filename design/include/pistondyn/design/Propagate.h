@@ -36,34 +36,42 @@ struct PropagateSpec {
   DesignStudy study;
   long samples = 32;
   std::uint64_t seed = 1;
+  ///@{
   std::vector<std::string> figures, curves;
-  std::vector<std::string> estKeys;     // inputs taken from the deck's EST marks
-  std::vector<std::string> estSkipped;  // EST-marked numbers left out (zero), for the report
+  ///@}
+  std::vector<std::string> estKeys;     ///< inputs taken from the deck's EST marks
+  std::vector<std::string> estSkipped;  ///< EST-marked numbers left out (zero), for the report
+  ///@{
   std::string description, fingerprint;
+  ///@}
 };
 
 PropagateSpec loadPropagateDeck(const std::string& path,
                                 const std::vector<std::string>& commandLineOverrides = {},
                                 const io::LinerRegistry& registry = io::LinerRegistry::getGlobal());
 
-// The p-quantile (0 <= p <= 1) of values, linear between order statistics; NaN if empty.
+/// The p-quantile (0 <= p <= 1) of values, linear between order statistics; NaN if empty.
 double calcQuantile(std::vector<double> values, double p);
 
 struct Band {
+  ///@{
   double p05 = 0.0, p50 = 0.0, p95 = 0.0, mean = 0.0, std = 0.0, min = 0.0, max = 0.0;
+  ///@}
   int count = 0;
 };
 Band calcBand(const std::vector<double>& values);
 
 struct PropagateOutcome {
-  std::vector<std::vector<double>> samples;  // inputs per sample
-  std::vector<EvaluationResult> runs;        // per sample
+  std::vector<std::vector<double>> samples;  ///< inputs per sample
+  std::vector<EvaluationResult> runs;        ///< per sample
   EvaluationResult baseline;
-  std::vector<std::vector<std::optional<double>>> figureValues;  // [sample][figure]
-  std::map<std::string, Band> figureBands;                       // per figure
-  std::vector<double> angle_deg;                        // the curves' crank angles (last cycle)
-  std::map<std::string, std::vector<Band>> curveBands;  // per curve, per angle
+  std::vector<std::vector<std::optional<double>>> figureValues;  ///< [sample][figure]
+  std::map<std::string, Band> figureBands;                       ///< per figure
+  std::vector<double> angle_deg;                        ///< the curves' crank angles (last cycle)
+  std::map<std::string, std::vector<Band>> curveBands;  ///< per curve, per angle
+  ///@{
   std::map<std::string, std::vector<double>> baselineCurves;
+  ///@}
   int failed = 0;
 };
 
@@ -72,14 +80,14 @@ using PropagateProgress = std::function<void(const std::string& line)>;
 PropagateOutcome runPropagation(const PropagateSpec& spec, Executor& executor,
                                 const PropagateProgress& progress = {});
 
-// samples.csv: per sample its inputs, status, the figures, evaluation folder, message.
+/// samples.csv: per sample its inputs, status, the figures, evaluation folder, message.
 std::string makeSamplesCsv(const PropagateSpec& spec, const PropagateOutcome& outcome);
-// bands.csv: crank_angle_deg, then per curve <curve>_p05, _p50, _p95, _baseline.
+/// bands.csv: crank_angle_deg, then per curve <curve>_p05, _p50, _p95, _baseline.
 std::string makeBandsCsv(const PropagateSpec& spec, const PropagateOutcome& outcome);
 
-// The numeric keys of a deck file whose line comment holds the word EST: key path (as
-// --set takes it) and value, in file order. Block-style YAML as the example decks are
-// written; flow sections and lists are not looked into.
+/// The numeric keys of a deck file whose line comment holds the word EST: key path (as
+/// --set takes it) and value, in file order. Block-style YAML as the example decks are
+/// written; flow sections and lists are not looked into.
 std::vector<std::pair<std::string, double>> findEstimatedKeys(const std::string& deckPath);
 
 }  // namespace pistondyn::design

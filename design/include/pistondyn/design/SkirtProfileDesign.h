@@ -23,22 +23,22 @@
 namespace pistondyn::design {
 
 struct SkirtProfileShape {
-  double topDrop_um = 0.0;             // radial drop at the skirt's top edge [um]
-  double bottomDrop_um = 0.0;          // ... at its bottom edge [um]
-  double minClearanceHeight_mm = 0.0;  // y_m, above the pin axis [mm]
-  double curvature_um_per_mm2 = 0.0;   // c [um/mm^2]
+  double topDrop_um = 0.0;             ///< radial drop at the skirt's top edge [um]
+  double bottomDrop_um = 0.0;          ///< ... at its bottom edge [um]
+  double minClearanceHeight_mm = 0.0;  ///< y_m, above the pin axis [mm]
+  double curvature_um_per_mm2 = 0.0;   ///< c [um/mm^2]
 };
 
-// The drop [um] at height y_mm of a skirt from bottom_mm to top_mm (heights above the pin).
-// Throws std::invalid_argument unless bottom_mm < minClearanceHeight_mm < top_mm.
+/// The drop [um] at height y_mm of a skirt from bottom_mm to top_mm (heights above the pin).
+/// Throws std::invalid_argument unless bottom_mm < minClearanceHeight_mm < top_mm.
 double calcProfileDrop_um(const SkirtProfileShape& shape, double bottom_mm, double top_mm,
                           double y_mm);
 
-// The profile table's text: '#' lines (the formula and the four numbers), the header, then
-// `rows` rows evenly spaced from bottom_mm - 0.5 to top_mm + 0.5 (the formula continued
-// half a millimetre past each edge, so the table covers the skirt whatever rounding its
-// height takes in SI) with y_m and both edges among them. Numbers in the shortest text
-// that reads back to the same double. Throws std::invalid_argument as above or for rows < 5.
+/// The profile table's text: '#' lines (the formula and the four numbers), the header, then
+/// `rows` rows evenly spaced from bottom_mm - 0.5 to top_mm + 0.5 (the formula continued
+/// half a millimetre past each edge, so the table covers the skirt whatever rounding its
+/// height takes in SI) with y_m and both edges among them. Numbers in the shortest text
+/// that reads back to the same double. Throws std::invalid_argument as above or for rows < 5.
 std::string makeProfileTable(const SkirtProfileShape& shape, double bottom_mm, double top_mm,
                              int rows = 41);
 

@@ -23,7 +23,7 @@
 
 namespace pistondyn::io {
 
-// Another process (or another OutputFolderLock of this one) holds the folder's lock.
+/// Another process (or another OutputFolderLock of this one) holds the folder's lock.
 class OutputFolderBusy : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -31,15 +31,15 @@ class OutputFolderBusy : public std::runtime_error {
 
 class OutputFolderLock {
  public:
-  // The lock file's name inside the folder.
+  /// The lock file's name inside the folder.
   static constexpr const char* kFileName = ".pistondyn.lock";
 
-  // Creates `dir` and missing parents, and locks it. Throws OutputFolderBusy when the lock
-  // is held, std::runtime_error naming the path when the folder or the lock file cannot be
-  // created; in both cases the folders this call created are removed again.
+  /// Creates `dir` and missing parents, and locks it. Throws OutputFolderBusy when the lock
+  /// is held, std::runtime_error naming the path when the folder or the lock file cannot be
+  /// created; in both cases the folders this call created are removed again.
   explicit OutputFolderLock(std::string dir);
-  // Releases the lock and removes the lock file, then every folder this lock created that
-  // is empty (a run that wrote nothing leaves nothing behind). Never throws.
+  /// Releases the lock and removes the lock file, then every folder this lock created that
+  /// is empty (a run that wrote nothing leaves nothing behind). Never throws.
   ~OutputFolderLock();
   OutputFolderLock(const OutputFolderLock&) = delete;
   OutputFolderLock& operator=(const OutputFolderLock&) = delete;
@@ -49,7 +49,7 @@ class OutputFolderLock {
  private:
   void release() noexcept;
   std::string dir_, lockPath_;
-  std::vector<std::string> created_;  // folders this lock created, deepest first
+  std::vector<std::string> created_;  ///< folders this lock created, deepest first
   int fd_ = -1;
 };
 

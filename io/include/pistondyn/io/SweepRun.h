@@ -93,7 +93,9 @@ struct CaseInFolder {
   std::vector<std::pair<std::string, std::string>> inputFiles;  ///< name, content
   /// The marker written (all-or-nothing) once the run and its summary.json are complete:
   /// what tells a resumed sweep or design loop that the case need not run again.
+  ///@{
   std::string markerName, markerText;
+  ///@}
 };
 /// Removes what an earlier, interrupted run left in the folder, writes the input files,
 /// loads the deck with the overrides (deck reading is serialised across threads), runs it

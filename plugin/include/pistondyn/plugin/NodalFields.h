@@ -15,20 +15,22 @@ class State;
 
 namespace pistondyn::plugin {
 
-// A field: name and unit as ElementOutput ("film_pressure", "Pa"; "1" = dimensionless); the
-// file column is name + "_" + unit (just name for "1").
+/// A field: name and unit as ElementOutput ("film_pressure", "Pa"; "1" = dimensionless); the
+/// file column is name + "_" + unit (just name for "1").
 struct NodalFieldDeclaration {
   std::string name;
   std::string unit;
   std::string getColumnName() const { return unit == "1" ? name : name + "_" + unit; }
 };
 
-// A region of nodes on the piston: a structured grid, phi fastest (k = i + nPhi j).
+/// A region of nodes on the piston: a structured grid, phi fastest (k = i + nPhi j).
 struct NodalFieldRegion {
-  std::string name;        // e.g. "thrust" (file names and labels: letters, digits, '_')
-  int nPhi = 0, nY = 0;    // nodes around and along
-  Eigen::VectorXd phi_rad;  // per node: angle from +x (thrust) towards +z (pin axis) [rad]
-  Eigen::VectorXd y_m;      // per node: height above the pin axis, piston frame [m]
+  std::string name;        ///< e.g. "thrust" (file names and labels: letters, digits, '_')
+  ///@{
+  int nPhi = 0, nY = 0;    ///< nodes around and along
+  ///@}
+  Eigen::VectorXd phi_rad;  ///< per node: angle from +x (thrust) towards +z (pin axis) [rad]
+  Eigen::VectorXd y_m;      ///< per node: height above the pin axis, piston frame [m]
 };
 
 class NodalFieldSource {
@@ -36,10 +38,10 @@ class NodalFieldSource {
   virtual ~NodalFieldSource() = default;
   virtual std::vector<NodalFieldRegion> getNodalFieldRegions() const = 0;
   virtual std::vector<NodalFieldDeclaration> getNodalFieldDeclarations() const = 0;
-  // The fields of region `region` at a state realized through Stage::Acceleration whose forces
-  // the element computed last (an output row): values (nodes x declarations), in the declared
-  // units, finite. Throws std::runtime_error when the element's last fields are not this
-  // state's.
+  /// The fields of region `region` at a state realized through Stage::Acceleration whose forces
+  /// the element computed last (an output row): values (nodes x declarations), in the declared
+  /// units, finite. Throws std::runtime_error when the element's last fields are not this
+  /// state's.
   virtual void calcNodalFields(const SimTK::State& s, int region, Eigen::MatrixXd& values) const = 0;
 };
 

@@ -279,7 +279,9 @@ class ElasticCoupling {
   void setUpNodeSets();
 
   ElasticCouplingParameters parameters_;
+  ///@{
   mapping::CylinderGrid filmGrid_, structural_;
+  ///@}
   Eigen::MatrixXd compliance_m_per_N_;  ///< the skirt's, or with a liner the effective one
   Eigen::VectorXd gas_m_per_Pa_;        ///< empty without a gas field
   mapping::ForceMap forceMap_;
@@ -288,12 +290,16 @@ class ElasticCoupling {
   Eigen::VectorXd start_m_;  ///< warm start
 
   /// Iterates and scratch (sized once).
+  ///@{
   Eigen::VectorXd u_m_, force_N_, target_m_, residual_m_, residualFilm_m_, uFilm_m_;
+  ///@}
   Eigen::ArrayXd pistonElastic_m_;
   FilmPressureEvaluation film_;
 
   /// Node sets (setUpNodeSets(); Newton and Modal): S moves the film gap, F takes film forces.
+  ///@{
   Eigen::VectorXi nodesS_, nodesF_;
+  ///@}
   Eigen::SparseMatrix<double, Eigen::RowMajor> hermiteS_;  ///< film node x S
 
  private:

@@ -123,14 +123,17 @@ struct FilmEdge {
   Eigen::ArrayXd supplyFilmPerNode_m;
 };
 
+/// The four open edges of a film region (FilmEdge each). Corner nodes take the pressure of
+/// the x edge when x is open.
 struct FilmBoundary {
   ///@{
-  FilmEdge xMin, xMax;  ///< edges i = 0 and i = nx - 1 (not used when the grid is x-periodic)
+  /// Edges i = 0 and i = nx - 1 (not used when the grid is x-periodic).
+  FilmEdge xMin, xMax;
   ///@}
   ///@{
-  FilmEdge yMin, yMax;  ///< edges j = 0 and j = ny - 1
+  /// Edges j = 0 and j = ny - 1.
+  FilmEdge yMin, yMax;
   ///@}
-  // Corner nodes take the pressure of the x edge when x is open.
 };
 
 /// Everything a solve needs besides the grid. Keep one object per film region and update its
@@ -158,8 +161,11 @@ struct FilmProblem {
   /// shear-flow term sigma*phiS is transported with U/2 in the sliding direction.
   const FlowFactorModel* flowFactors = nullptr;
 
+  /// Cavitation model (CavitationModel), default Reynolds (Swift-Stieber).
   CavitationModel cavitation = CavitationModel::Reynolds;
   double cavitationPressure_Pa = 0.0;  ///< p_cav, [Pa], default 0 (gauge ambient)
+  /// Pressure and oil supply on the open edges (FilmBoundary); MassConserving requires every
+  /// edge pressure >= cavitationPressure_Pa.
   FilmBoundary boundary;
 
   /// Mass-conserving model only: time step since the state of history.last, [s] (> 0; +inf =
@@ -191,6 +197,11 @@ struct FilmProblem {
   /// hT_{n-1} is not at least half of c0 hT_n (a gap that shrank by more than ~2x in one step)
   /// takes the backward-Euler form for that step.
   double timeStep_s = std::numeric_limits<double>::infinity();
+  /// The film's history (FilmHistory.h), mass-conserving model only: see timeStep_s. Empty =
+  /// a full film at rest. The solver checks it (sizes, fill fractions in [0, 1], positive
+  /// finite expected gaps, an earlier point only with a last one and a step > 0) and throws
+  /// std::invalid_argument naming the member otherwise.
+
   FilmHistory history;
   /// How Couette faces take the fill fraction (FillFractionFlux above), default Upwind.
   FillFractionFlux fillFractionFlux = FillFractionFlux::Upwind;
@@ -255,9 +266,12 @@ struct FilmState {
   Eigen::ArrayXd pressure_Pa;           ///< nodal pressure, [Pa]
   Eigen::ArrayXd fillFraction;          ///< nodal fill fraction theta, [-]
   std::vector<std::uint8_t> cavitated;  ///< 1 where the node was cavitated (active set)
+  /// True when there is no warm start (no pressure stored).
   bool empty() const { return pressure_Pa.size() == 0; }
 };
 
+/// How the film solver (FilmSolver.h) iterates: which solver, its tolerances, iteration
+/// limits and fallbacks. The defaults suit the skirt and bearing films of this project.
 struct FilmSolverOptions {
   FilmSolverType solver = FilmSolverType::FastActiveSet;  ///< default: the fast solver
   double tolerance = 1e-8;  ///< relative residual (see top of file), default 1e-8
@@ -306,14 +320,22 @@ struct SurfaceShear {
   Eigen::Vector2d poiseuilleForce_N = Eigen::Vector2d::Zero();  ///< integral over the film, [N]
   /// In-plane moment about momentPoint: integral of (x - x0) tau_y - (y - y0) tau_x dA, [N m].
   double couetteMoment_Nm = 0.0;
+  /// The same in-plane moment of the Poiseuille shear, [N m].
   double poiseuilleMoment_Nm = 0.0;
+  /// Total shear force on the surface (Couette + Poiseuille), [N].
   Eigen::Vector2d force_N() const { return couetteForce_N + poiseuilleForce_N; }
+  /// Total in-plane shear moment about momentPoint (Couette + Poiseuille), [N m].
   double moment_Nm() const { return couetteMoment_Nm + poiseuilleMoment_Nm; }
 };
 
+/// Everything one film solve returns: the nodal fields (the next call's warm start), loads and
+/// moments, friction on both surfaces, flow diagnostics, the requested derivatives and the
+/// solver's report. All SI; nodal arrays use the grid's flat index k = i + nx * j.
 struct FilmResult {
   FilmState state;  ///< pressure [Pa], fill fraction [-], active set: store this as the warm start
+  /// Nodal pressure [Pa] (state.pressure_Pa).
   const Eigen::ArrayXd& pressure_Pa() const { return state.pressure_Pa; }
+  /// Nodal fill fraction theta [-] (state.fillFraction; 1 in a full film).
   const Eigen::ArrayXd& fillFraction() const { return state.fillFraction; }
 
   Eigen::ArrayXd areaWeights_m2;  ///< nodal area weights (copy of the grid's), [m^2]
@@ -327,6 +349,7 @@ struct FilmResult {
   /// First moments about momentPoint: integral of (x - x0)(p - pref) dA and (y - y0)(p - pref) dA,
   /// [N m] (exact for the bilinear field).
   double firstMomentX_Nm = 0.0;
+  /// Integral of (y - y0)(p - pref) dA, [N m] (see firstMomentX_Nm).
   double firstMomentY_Nm = 0.0;
 
   /// Friction. Couette shear: surface 2 gets +theta eta U / h (phiF - phiFs), surface 1 gets
@@ -338,7 +361,7 @@ struct FilmResult {
   SurfaceShear shearOnSurface2;  ///< the grid's surface, e.g. the skirt / bearing shell
 
   Eigen::ArrayXd gapOverSigma;  ///< h / sigma per node; empty when the model's sigma is 0
-  double minFilmThickness_m = 0.0;
+  double minFilmThickness_m = 0.0;  ///< smallest gap_m over the nodes, [m]
   int minFilmNode = -1;                                         ///< flat node index of the minimum
   Eigen::Vector2d minFilmLocation_m = Eigen::Vector2d::Zero();  ///< (x, y) of the minimum
 
@@ -346,8 +369,8 @@ struct FilmResult {
   /// inflow and outflow through the faces between prescribed (edge, dry) and unknown nodes, and
   /// the storage rate sum_k A_k [theta dhT/dt + hT (theta - thetaPrev)/dt] of the unknown nodes.
   double boundaryInflow_m3ps = 0.0;
-  double boundaryOutflow_m3ps = 0.0;
-  double storageRate_m3ps = 0.0;
+  double boundaryOutflow_m3ps = 0.0;  ///< outflow to prescribed nodes, [m^3/s], >= 0
+  double storageRate_m3ps = 0.0;  ///< storage rate of the unknown nodes (see above), [m^3/s]
   /// The same balance at the edge lines themselves: the net flow out of the film across each
   /// open edge, per edge node [m^3/s] (+ out): yMin / yMax one entry per column (nx), xMin /
   /// xMax one per row (ny; empty on an x-periodic grid; the corner nodes count with the y
@@ -361,11 +384,12 @@ struct FilmResult {
   Eigen::ArrayXd edgeOutflowYMin_m3ps, edgeOutflowYMax_m3ps;
   ///@}
   ///@{
+  /// Net outflow per node of the x edges, [m^3/s] (+ out; empty on an x-periodic grid).
   Eigen::ArrayXd edgeOutflowXMin_m3ps, edgeOutflowXMax_m3ps;
   ///@}
-  double edgeInflow_m3ps = 0.0;
-  double edgeOutflow_m3ps = 0.0;
-  double oilVolume_m3 = 0.0;
+  double edgeInflow_m3ps = 0.0;   ///< sum of the edge entries' magnitudes where < 0 (in), [m^3/s]
+  double edgeOutflow_m3ps = 0.0;  ///< sum of the edge entries' positive parts, [m^3/s]
+  double oilVolume_m3 = 0.0;      ///< oil held in the film, sum_k A_k theta_k hT_k, [m^3]
   /// Power the film dissipates [W], >= 0: the Couette part sum_k A_k theta_k eta_k |U|^2 phiF_k
   /// / h_k and the Poiseuille part sum over faces K_f L_f / d_f (p_a - p_b)^2 (the discrete
   /// energy of the pressure flux; smooth surfaces: int eta U^2/h + h^3 |grad p|^2 / (12 eta) dA).
@@ -389,7 +413,7 @@ struct FilmResult {
   /// fields then hold the last iterate (finite, constraints kept) and the caller decides (e.g.
   /// reject the integrator step).
   int iterations = 0;
-  int activeSetIterations = 0;
+  int activeSetIterations = 0;  ///< active-set steps of the fast solver alone (see iterations)
   /// Active-set steps on the coarser grids of a grid-sequenced cold start, all levels summed
   /// (FilmSolverOptions::gridSequencedColdStart; 0 otherwise). Each coarser level has about a
   /// quarter of the nodes of the one above.
@@ -397,9 +421,12 @@ struct FilmResult {
   int factorisations = 0;    ///< numeric sparse factorisations done in this call (fast solver)
   int krylovIterations = 0;  ///< preconditioned Krylov iterations done in this call (fast solver)
   int multigridBuilds = 0;   ///< multigrid hierarchies (Galerkin levels) built in this call
-  double residual = 0.0;
-  bool converged = false;
+  double residual = 0.0;  ///< relative residual of the returned fields (top of FilmProblem.h)
+  bool converged = false;  ///< residual <= FilmSolverOptions::tolerance
+  /// The fast solver did not settle and the reference Gauss-Seidel finished the solve
+  /// (FilmSolverOptions::fallbackToReference).
   bool usedFallback = false;
+
   /// The squeeze- and gap-derivative solve failed (the final active set's Jacobian is singular
   /// to the linear solvers, Krylov and sparse-direct): the derivative fields above are all zero,
   /// not derivatives. The pressure and loads are unaffected. Callers that steer a Newton

@@ -18,6 +18,7 @@ namespace pistondyn::common {
 /// Thrown where a long computation noticed a cancellation request.
 class Cancelled : public std::runtime_error {
  public:
+  /// A cancellation by `signal` (0: without one); the message names it.
   explicit Cancelled(int signal)
       : std::runtime_error("cancelled by signal " + std::to_string(signal)), signal_(signal) {}
   /// The signal that asked for it (0: cancelled without one).
@@ -28,7 +29,10 @@ class Cancelled : public std::runtime_error {
 };
 
 namespace detail {
+/// The process-wide request: 0 none, > 0 the signal, -1 requested without one. Use the
+/// functions below, not this variable.
 inline std::atomic<int> cancellationSignal{0};
+
 static_assert(std::atomic<int>::is_always_lock_free,
               "requestCancellation must be async-signal-safe");
 }  // namespace detail

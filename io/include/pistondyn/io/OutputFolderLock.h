@@ -29,6 +29,9 @@ class OutputFolderBusy : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// An exclusive lock on a result folder (DIR/.pistondyn.lock, flock(2), taken without
+/// waiting) held while one process writes it; see this file's comment for the protocol.
+/// Not copyable.
 class OutputFolderLock {
  public:
   /// The lock file's name inside the folder.
@@ -44,7 +47,9 @@ class OutputFolderLock {
   OutputFolderLock(const OutputFolderLock&) = delete;
   OutputFolderLock& operator=(const OutputFolderLock&) = delete;
 
+  /// The locked folder, as given to the constructor.
   const std::string& getDirectory() const { return dir_; }
+
 
  private:
   void release() noexcept;

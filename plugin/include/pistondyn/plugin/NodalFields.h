@@ -18,8 +18,9 @@ namespace pistondyn::plugin {
 /// A field: name and unit as ElementOutput ("film_pressure", "Pa"; "1" = dimensionless); the
 /// file column is name + "_" + unit (just name for "1").
 struct NodalFieldDeclaration {
-  std::string name;
-  std::string unit;
+  std::string name;  ///< e.g. "film_pressure" (letters, digits, '_')
+  std::string unit;  ///< e.g. "Pa", "um"; "1" = dimensionless
+  /// The file column: name + "_" + unit, or name alone for unit "1".
   std::string getColumnName() const { return unit == "1" ? name : name + "_" + unit; }
 };
 
@@ -33,11 +34,19 @@ struct NodalFieldRegion {
   Eigen::VectorXd y_m;      ///< per node: height above the pin axis, piston frame [m]
 };
 
+/// The role of an element that has nodal fields (LinerElement::getNodalFields()): its regions,
+/// the fields declared on every region, and their values at a state. Field dumps and skirt
+/// maps use only this interface.
 class NodalFieldSource {
  public:
   virtual ~NodalFieldSource() = default;
+  /// The regions, in a fixed order (a region's index is its position here); the same for
+  /// every state of a run.
   virtual std::vector<NodalFieldRegion> getNodalFieldRegions() const = 0;
+  /// The fields every region has, in the column order of calcNodalFields(); the same for every
+  /// state of a run.
   virtual std::vector<NodalFieldDeclaration> getNodalFieldDeclarations() const = 0;
+
   /// The fields of region `region` at a state realized through Stage::Acceleration whose forces
   /// the element computed last (an output row): values (nodes x declarations), in the declared
   /// units, finite. Throws std::runtime_error when the element's last fields are not this

@@ -92,7 +92,11 @@
 
 namespace pistondyn::skirt {
 
+/// Settings of one side's film and contact evaluation that stay fixed for a run: cavitation
+/// model, edge pressure, film solver, film-gap clamp, face schemes and wear coefficient.
+/// Checked by the SkirtSideLubrication constructor (std::invalid_argument naming the member).
 struct SkirtLubricationParameters {
+  /// Film cavitation model (lubrication::CavitationModel), default Reynolds.
   lubrication::CavitationModel cavitation = lubrication::CavitationModel::Reynolds;
   double cavitationPressure_Pa = 0.0;     ///< p_cav, gauge [Pa], default 0
   double edgePressure_Pa = 0.0;           ///< pressure on all four edges, gauge [Pa], default 0
@@ -149,6 +153,7 @@ struct SkirtSideInputs {
   /// (nPhi entries each, >= 0, finite; FilmEdge::supplyFilmPerNode_m), instead of supplyFilm_m
   /// (a liner oil film, LinerOilFilm.h). Both or neither.
   const Eigen::ArrayXd* supplyBottom_m = nullptr;
+  /// Supply per column at the top (yMax) edge [m]; see supplyBottom_m (both or neither).
   const Eigen::ArrayXd* supplyTop_m = nullptr;
   /// Squeeze derivatives wanted: the first squeezeColumns columns of the gap's squeeze basis
   /// (0..3; 2 = lateral and tilt, 3 with the tertiary motion).
@@ -158,6 +163,8 @@ struct SkirtSideInputs {
   /// empty = a full film at rest), passed to the film solver as it is and checked there, and
   /// the step since its last point [s] (> 0; +inf or <= 0 = steady state; NaN is rejected).
   const lubrication::FilmHistory* history = nullptr;
+  /// Time step since the history's last point [s]: > 0; +inf or <= 0 = steady state; NaN is
+  /// rejected (see history).
   double timeStep_s = std::numeric_limits<double>::infinity();
 };
 
@@ -165,7 +172,7 @@ struct SkirtSideInputs {
 struct SkirtSideFigures {
   PistonLoads hydrodynamicLoads;  ///< film pressure + film shear (piston frame, about origin)
   PistonLoads asperityLoads;      ///< contact pressure + boundary shear
-  PistonLoads totalLoads;
+  PistonLoads totalLoads;  ///< hydrodynamicLoads + asperityLoads
   double hydrodynamicNormalForce_N = 0.0;  ///< load the film carries, along the side's normal
   double asperityNormalForce_N = 0.0;      ///< load the asperities carry, >= 0
   /// Film force on the piston along +y [N]: the shear and the film pressure's axial component
@@ -178,11 +185,14 @@ struct SkirtSideFigures {
   /// (Couette + Poiseuille shear) and the boundary (asperity) part; frictionPower_W is the sum.
   double frictionPower_W = 0.0;
   ///@{
+  /// The film (Couette + Poiseuille shear) and the boundary (asperity) part of frictionPower_W
+  /// [W].
   double hydrodynamicFrictionPower_W = 0.0, asperityFrictionPower_W = 0.0;
   ///@}
   /// Power dissipated on the side [W], >= 0 by construction: the film's viscous dissipation
   /// (lubrication::FilmResult::viscousDissipation_W) plus the asperity friction power.
   double filmDissipation_W = 0.0;
+  /// Power dissipated on the side [W], >= 0: filmDissipation_W plus asperityFrictionPower_W.
   double dissipatedPower_W = 0.0;
   double minFilmThickness_m = 0.0;  ///< smallest NOMINAL gap on the side (may be < 0: overlap)
   ///@{
@@ -210,7 +220,11 @@ struct SkirtSideResults : SkirtSideFigures {
   Eigen::ArrayXd boundaryShearAxial_Pa, boundaryShearCircumferential_Pa;  ///< tau_b [Pa]
   ///@}
   Eigen::ArrayXd normalPressure_Pa;  ///< p_film + p_c - edgePressure [Pa] (total traction)
+  /// (force; moment) of the film pressure per unit pose rate (lateral, tilt, tertiary), 6 x 3;
+  /// columns beyond SkirtSideInputs::squeezeColumns are zero (file comment, "Derivatives").
   Eigen::Matrix<double, 6, 3> dLoads_dPoseRate = Eigen::Matrix<double, 6, 3>::Zero();
+  /// (force; moment) of asperityLoads per unit pose (lateral, tilt, tertiary), 6 x 3, from the
+  /// asperity law's exact slope; the film's own stiffness is not included.
   Eigen::Matrix<double, 6, 3> dLoads_dPose = Eigen::Matrix<double, 6, 3>::Zero();
   /// Wall time of this call's phases [s] (diagnostics for benchmarks; results never depend
   /// on them): the film solve, the asperity contact with boundary friction, and the loads
@@ -220,6 +234,10 @@ struct SkirtSideResults : SkirtSideFigures {
   ///@}
 };
 
+/// Film, asperity contact and boundary friction on one skirt side for one force evaluation
+/// (this file's comment has the model, frames, derivatives and costs). Holds the film
+/// solver's workspace and warm start; the fill history stays with the caller. Movable, not
+/// copyable.
 class SkirtSideLubrication {
  public:
   /// Inputs:
@@ -235,15 +253,21 @@ class SkirtSideLubrication {
                        const contact_forces::BoundaryFriction& friction,
                        const SkirtLubricationParameters& parameters);
   ~SkirtSideLubrication();
+  /// Moves the side with its workspace and warm start.
   SkirtSideLubrication(SkirtSideLubrication&&) noexcept;
+  /// Moves the side with its workspace and warm start.
   SkirtSideLubrication& operator=(SkirtSideLubrication&&) noexcept;
 
+  /// The side's grid (the constructor's copy).
   const SkirtSideGrid& getGrid() const;
+  /// The parameters given to the constructor.
   const SkirtLubricationParameters& getParameters() const;
   /// Composite roughness sigma of the pair [m] (the flow factors'; the contact law's when the
   /// flow factors are smooth) and the clamp gap h_c in use [m].
   double getCompositeSigma_m() const;
+  /// The film-gap clamp h_c = max(clampFraction * sigma, minimumClampGap_m) in use [m].
   double getClampGap_m() const;
+
 
   /// One evaluation (see the file comment). `out` is reused between calls (no allocation
   /// at a fixed grid size). The film's warm start is the last call's solution.

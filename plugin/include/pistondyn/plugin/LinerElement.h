@@ -16,6 +16,11 @@ namespace pistondyn::plugin {
 
 enum class SkirtSide { Thrust, AntiThrust };
 
+/// The element that holds the piston in the bore, seen through the physics figures that
+/// summaries, convergence checks and plots read (this file's comment). A user's liner derives
+/// from it, implements getSideForce_N() and overrides the optional getters it can answer; the
+/// defaults say "not provided" (0 or nullopt). Every getter needs a state realized through
+/// Stage::Acceleration.
 class LinerElement : public ForceElement {
  public:
   /// Lateral force the piston exerts on the liner, + towards the thrust side [N].
@@ -52,13 +57,17 @@ class LinerElement : public ForceElement {
   virtual std::optional<double> getAsperityFrictionWork_J(const SimTK::State& /*s*/) const {
     return std::nullopt;
   }
-  /// The energy the liner's friction and film dissipated since the start of the run [J], and
-  /// the work the liner's forces took from the piston's secondary motion [J], if the element
-  /// integrates them: over a periodic cycle friction work + secondary work = dissipated energy.
+  /// The energy the liner's friction and film dissipated since the start of the run [J], if
+  /// the element integrates it: over a periodic cycle getFrictionWork_J() +
+  /// getSecondaryMotionWork_J() = this.
+
   virtual std::optional<double> getDissipatedEnergy_J(const SimTK::State& /*s*/) const {
     return std::nullopt;
   }
+  /// The work the liner's forces took from the piston's secondary motion since the start of
+  /// the run [J], if the element integrates it (see getDissipatedEnergy_J()).
   virtual std::optional<double> getSecondaryMotionWork_J(const SimTK::State& /*s*/) const {
+
     return std::nullopt;
   }
   /// Nodal fields over the liner's contact regions (NodalFields.h), for field dumps and maps;

@@ -32,6 +32,8 @@
 
 namespace pistondyn::design {
 
+/// One design variable: a numeric deck key (or a number of the parametric skirt profile)
+/// varied between bounds, in the key's own unit.
 struct DesignVariable {
   std::string key;                  ///< "geometry.pin_offset_mm", or "profile.top_drop_um"
   ///@{
@@ -40,30 +42,34 @@ struct DesignVariable {
   std::optional<double> start;      ///< fit: the starting value (default: mid-range)
   std::optional<double> baseline;   ///< its value in the base deck (with `set`), if known
   std::string origin;               ///< "opt.yaml:12: variables.geometry.pin_offset_mm"
+  /// True for a number of the parametric skirt profile (key "profile.*"), not a deck key.
   bool isProfile() const { return key.rfind("profile.", 0) == 0; }
 };
 
 /// The four numbers of the parametric skirt profile (SkirtProfileDesign.h), in the order
 /// top_drop_um, bottom_drop_um, min_clearance_height_mm, curvature_um_per_mm2.
 struct ProfileSpec {
-  ///@{
+  /// The deck names of the four numbers, in the order above.
   static const std::array<const char*, 4> kNames;
-  ///@}
-  bool enabled = false;
+  bool enabled = false;  ///< the study deck has a profile section
   std::array<std::optional<double>, 4> fixed;  ///< nullopt: a design variable
+  /// Rows of the generated profile table (profile.rows, 5 .. 10000; makeProfileTable()).
   int rows = 41;
 };
 
+/// A study deck read and checked (the part that optimize, fit and propagate share): the base
+/// engine deck, the shared overrides, the variables and the optional skirt profile, with
+/// the fingerprint of what every evaluation shares. Builds the evaluation of a design point.
 struct DesignStudy {
   std::string kind;      ///< "optimize", "fit", "propagate"
   std::string deckPath;  ///< the study deck as given
-  std::string name;
+  std::string name;      ///< the deck's `name` ("" when not given), for reports
   std::string baseDeckPath;  ///< absolute
-  std::string baseDeckSha256;
+  std::string baseDeckSha256;  ///< SHA-256 hex of the base deck file's content
   std::vector<std::string> fixedOverrides;     ///< `set`, then the command line's --set
   std::vector<io::SweepInputFile> inputFiles;  ///< tables the base deck reads, by content
   std::vector<DesignVariable> variables;       ///< deck keys first, then the profile's
-  ProfileSpec profile;
+  ProfileSpec profile;  ///< the parametric skirt profile (profile.enabled) or none
   ///@{
   double skirtBottom_mm = 0.0, skirtTop_mm = 0.0;  ///< of the base deck (profile designs)
   ///@}
@@ -93,8 +99,11 @@ class DesignOutputError : public std::runtime_error {
 /// while the study runs; DIR/evaluations/ (EvaluationStore).
 struct DesignFolder {
   std::string dir;  ///< absolute
-  bool resumed = false;
+  bool resumed = false;  ///< design.json was there with the same kind and fingerprint
+  /// The study's lock on DIR/.design.lock (flock, exclusive); released when the last copy
+  /// goes.
   std::shared_ptr<const void> lock;
+
 };
 
 /// Creates `dir` and writes design.json (kind, fingerprint and `description`, the study's

@@ -32,20 +32,27 @@
 
 namespace pistondyn::design {
 
+/// PROP.yaml read and checked (loadPropagateDeck): the study, the sample count and seed,
+/// and which figures and curves get bands.
 struct PropagateSpec {
-  DesignStudy study;
-  long samples = 32;
-  std::uint64_t seed = 1;
+  DesignStudy study;  ///< its variables are the uncertain inputs (uniform over their range)
+  long samples = 32;  ///< Latin-hypercube samples (deck `samples`)
+  std::uint64_t seed = 1;  ///< seed of the Latin hypercube (deck `seed`): same seed, same samples
   ///@{
+  /// summary.json figures and cycle.csv curves that get bands (deck `figures`, `curves`).
   std::vector<std::string> figures, curves;
   ///@}
   std::vector<std::string> estKeys;     ///< inputs taken from the deck's EST marks
   std::vector<std::string> estSkipped;  ///< EST-marked numbers left out (zero), for the report
   ///@{
+  /// The study's normalised content (design.json) and the SHA-256 hex of what decides its
+  /// results (openDesignFolder()).
   std::string description, fingerprint;
   ///@}
 };
 
+/// Reads and checks PROP.yaml (this file's comment) with the command line's --set
+/// assignments. Throws io::DeckError listing every problem found.
 PropagateSpec loadPropagateDeck(const std::string& path,
                                 const std::vector<std::string>& commandLineOverrides = {},
                                 const io::LinerRegistry& registry = io::LinerRegistry::getGlobal());
@@ -53,31 +60,45 @@ PropagateSpec loadPropagateDeck(const std::string& path,
 /// The p-quantile (0 <= p <= 1) of values, linear between order statistics; NaN if empty.
 double calcQuantile(std::vector<double> values, double p);
 
+/// Statistics of one quantity over the samples that ran: the 5 / 50 / 95 % points
+/// (calcQuantile), mean, sample standard deviation (n - 1; 0 for one value), minimum and
+/// maximum, in the quantity's unit; all NaN when there are no values.
 struct Band {
   ///@{
+  /// See Band.
   double p05 = 0.0, p50 = 0.0, p95 = 0.0, mean = 0.0, std = 0.0, min = 0.0, max = 0.0;
   ///@}
-  int count = 0;
+  int count = 0;  ///< values the statistics are of
 };
+/// The Band of `values`.
 Band calcBand(const std::vector<double>& values);
 
+/// What runPropagation() found: the samples and their runs, the figures' bands and the
+/// curves' bands at every output crank angle of the last cycle, and the baseline run.
 struct PropagateOutcome {
   std::vector<std::vector<double>> samples;  ///< inputs per sample
   std::vector<EvaluationResult> runs;        ///< per sample
-  EvaluationResult baseline;
+  EvaluationResult baseline;  ///< the base deck with the shared overrides only
   std::vector<std::vector<std::optional<double>>> figureValues;  ///< [sample][figure]
   std::map<std::string, Band> figureBands;                       ///< per figure
   std::vector<double> angle_deg;                        ///< the curves' crank angles (last cycle)
   std::map<std::string, std::vector<Band>> curveBands;  ///< per curve, per angle
-  ///@{
+  /// The baseline run's curves at angle_deg, per curve; empty when the baseline failed or
+  /// its crank angles differ from the samples'.
   std::map<std::string, std::vector<double>> baselineCurves;
-  ///@}
-  int failed = 0;
+  int failed = 0;  ///< samples whose run failed (left out of the bands)
 };
 
+/// Receives one line of progress text per event (may be empty: no progress).
 using PropagateProgress = std::function<void(const std::string& line)>;
 
-PropagateOutcome runPropagation(const PropagateSpec& spec, Executor& executor,
+/// Runs the baseline and the Latin-hypercube samples on `executor` and computes the bands.
+/// A failed sample is counted in PropagateOutcome::failed, not thrown; throws
+/// std::runtime_error when two samples' runs have different crank angles, or a result folder
+/// cannot be read.
+
+PropagateOutcome runPropagation(
+const PropagateSpec& spec, Executor& executor,
                                 const PropagateProgress& progress = {});
 
 /// samples.csv: per sample its inputs, status, the figures, evaluation folder, message.

@@ -38,36 +38,40 @@
 
 namespace pistondyn::design {
 
+/// One term of the objective: weight x figure, summed over the terms and minimised.
 struct ObjectiveTerm {
   std::string figure;  ///< Figures.h
-  double weight = 1.0;
+  double weight = 1.0;  ///< deck `objective: {figure: weight}`; 1 for a single figure
 };
 
+/// A bound on one figure of the run (deck `constraints`); at least one of the two is set.
 struct DesignConstraint {
-  std::string figure;
+  std::string figure;  ///< Figures.h
   ///@{
   std::optional<double> minimum, maximum;  ///< figure >= minimum, figure <= maximum
   ///@}
 };
 
+/// The deck's `method` section (this file's comment has the keys and defaults).
 struct OptimizeMethod {
   long doeSamples = 0;  ///< 0: 4 x variables + 4
-  std::uint64_t seed = 1;
-  int starts = 1;
+  std::uint64_t seed = 1;  ///< of the Latin hypercube and of ISRES
+  int starts = 1;  ///< local searches, each from one of the best DOE points
   std::string local;  ///< "cobyla" or "bobyqa"; "" : cobyla with constraints, else bobyqa
-  int maxEvaluations = 60;
-  double tolerance = 1e-3;
-  double initialStep = 0.1;
-  double constraintTolerance = 1e-4;
-  std::string global = "none";  // "none" or "isres"
-  int globalEvaluations = 200;
+  int maxEvaluations = 60;  ///< per local search
+  double tolerance = 1e-3;  ///< on the variables, relative to their ranges
+  double initialStep = 0.1;  ///< the local search's first step, relative to the ranges
+  double constraintTolerance = 1e-4;  ///< relative to each bound
+  std::string global = "none";  ///< "none" or "isres" (NLopt's ISRES over the bounds first)
+  int globalEvaluations = 200;  ///< evaluations of the global search
 };
 
+/// OPT.yaml read and checked (loadOptimizeDeck).
 struct OptimizeSpec {
-  DesignStudy study;
-  std::vector<ObjectiveTerm> objective;
-  std::vector<DesignConstraint> constraints;
-  OptimizeMethod method;
+  DesignStudy study;  ///< the variables and what every evaluation shares
+  std::vector<ObjectiveTerm> objective;  ///< summed, minimised
+  std::vector<DesignConstraint> constraints;  ///< may be empty
+  OptimizeMethod method;  ///< the loop's settings
   std::string description;  ///< the normalised deck as JSON (design.json)
   std::string fingerprint;  ///< SHA-256 of the kind, the context and the description
 };
@@ -82,24 +86,27 @@ OptimizeSpec loadOptimizeDeck(const std::string& path,
 struct DesignPoint {
   std::string stage;      ///< "baseline", "doe", "global", "local 1", ...
   std::vector<double> x;  ///< variables in their units (empty for the baseline)
-  EvaluationResult result;
+  EvaluationResult result;  ///< the run (its folder, summary.json, failure message)
   std::optional<double> objective;                      ///< nullopt: failed
   std::vector<std::optional<double>> constraintValues;  ///< the figures, per constraint
   double violation = 0.0;  ///< largest constraint violation relative to its bound (0: none)
   bool feasible = false;   ///< ok, every constraint within the tolerance
 };
 
+/// One local search of the loop.
 struct LocalSearchSummary {
-  std::string stage;
-  std::vector<double> start;
+  std::string stage;  ///< "local 1", "local 2", ... (DesignPoint::stage of its evaluations)
+  std::vector<double> start;  ///< its starting design, variables in their units
   int evaluations = 0;              ///< requests the search made (repeats included)
   std::string stopReason;           ///< NLopt's
   std::optional<std::size_t> best;  ///< index in the history
 };
 
+/// What runOptimization() found: every evaluation in order, the local searches and the
+/// optimum.
 struct OptimizeOutcome {
   std::vector<DesignPoint> history;  ///< baseline, DOE, global, each local search in turn
-  std::vector<LocalSearchSummary> searches;
+  std::vector<LocalSearchSummary> searches;  ///< in start order
   std::optional<std::size_t> optimum;  ///< best feasible (not the baseline)
   double failurePenalty = 0.0;         ///< objective a failed run showed the searches
 };
@@ -107,7 +114,10 @@ struct OptimizeOutcome {
 /// One line per finished stage or evaluation, for the progress display (any thread).
 using OptimizeProgress = std::function<void(const std::string& line)>;
 
-OptimizeOutcome runOptimization(const OptimizeSpec& spec, Executor& executor,
+/// Runs the loop of this file's comment on `executor`; a failed run is an infeasible point,
+/// not an exception.
+OptimizeOutcome runOptimization(
+const OptimizeSpec& spec, Executor& executor,
                                 const OptimizeProgress& progress = {});
 
 /// The evaluation's figures as the optimiser reads them (a missing figure fails it).

@@ -32,18 +32,21 @@
 
 namespace pistondyn::design {
 
+/// One evaluation asked of the store: the base deck run with these overrides and files.
+/// What decides its results, and so its id (EvaluationStore::getId()).
 struct EvaluationRequest {
   std::vector<std::string> overrides;  ///< "key=value", after the study's shared ones
   /// Files written into the evaluation's folder before the run; `fileKey` (if not empty) is
   /// set to the first file's path (the generated skirt profile's key).
   std::vector<std::pair<std::string, std::string>> files;  ///< name, content
-  std::string fileKey;
+  std::string fileKey;  ///< deck key set to the first file's path; "" = none
 };
 
+/// The outcome of one evaluation, run now or found complete in the folder.
 struct EvaluationResult {
-  std::string id;
+  std::string id;  ///< EvaluationStore::getId() of its request (16 hex digits)
   std::string folder;  ///< absolute
-  bool ok = false;
+  bool ok = false;  ///< the run and its summary.json completed
   bool fromEarlierRun = false;  ///< found complete in DIR, not run now
   std::string message;          ///< why it failed (one line)
   std::string summaryJson;      ///< ok: the text of its summary.json
@@ -58,17 +61,21 @@ class EvaluationStore {
   EvaluationStore(std::string dir, std::string baseDeckPath,
                   std::vector<std::string> sharedOverrides, std::string context);
 
+  /// The request's id: the first 16 hex digits of the SHA-256 of its overrides, files and
+  /// the study's context (this file's comment).
   std::string getId(const EvaluationRequest& r) const;
-  std::string getFolder(const std::string& id) const;  ///< DIR/evaluations/<id>, absolute
+  std::string getFolder(const std::string& id) const;  ///< `DIR/evaluations/<id>`, absolute
   /// The result of a complete evaluation folder of this request, or nullopt.
   std::optional<EvaluationResult> findComplete(const EvaluationRequest& r) const;
   /// Runs the request into its folder now (never throws; a failure is ok = false).
   EvaluationResult run(const EvaluationRequest& r,
                        const io::LinerRegistry& registry = io::LinerRegistry::getGlobal()) const;
 
+  /// The study's output folder DIR, as given.
   const std::string& getDirectory() const { return dir_; }
-  /// The store as text and back (what the MPI ranks are sent).
+  /// The store as text (what the MPI ranks are sent); decode() reads it back.
   std::string encode() const;
+  /// The store encode() wrote. Throws std::runtime_error for text that is not one.
   static EvaluationStore decode(const std::string& text);
 
  private:
@@ -81,6 +88,7 @@ class EvaluationStore {
 /// submitted.
 class Executor {
  public:
+  /// An executor of the evaluations of `store`, which must outlive it.
   explicit Executor(const EvaluationStore& store) : store_(store) {}
   virtual ~Executor() = default;
   Executor(const Executor&) = delete;
@@ -89,15 +97,16 @@ class Executor {
   /// The results, in request order (blocks until every one is done). Never throws for a
   /// failed run.
   std::vector<EvaluationResult> evaluate(const std::vector<EvaluationRequest>& requests);
-  /// Evaluations run now, and found complete in the folder (requested at least once).
+  /// Evaluations run now (requested at least once).
   int getRunCount() const;
+  /// Evaluations found complete in the folder (requested at least once).
   int getEarlierCount() const;
 
  protected:
   /// Starts running `request` (whose id and folder are `id`, store.getFolder(id)).
   virtual std::shared_future<EvaluationResult> submit(const EvaluationRequest& request,
                                                       const std::string& id) = 0;
-  const EvaluationStore& store_;
+  const EvaluationStore& store_;  ///< the store given to the constructor
 
  private:
   mutable std::mutex mutex_;
@@ -108,7 +117,10 @@ class Executor {
 /// Threads of this process, one model each (io::runCaseInFolder).
 class ThreadExecutor final : public Executor {
  public:
+  /// `threads` worker threads (at least 1) running the evaluations of `store` (which must
+  /// outlive it) with the liner models of `registry`. The destructor stops and joins them.
   ThreadExecutor(const EvaluationStore& store, int threads,
+
                  const io::LinerRegistry& registry = io::LinerRegistry::getGlobal());
   ~ThreadExecutor() override;
 

@@ -32,7 +32,6 @@ namespace detail {
 /// The process-wide request: 0 none, > 0 the signal, -1 requested without one. Use the
 /// functions below, not this variable.
 inline std::atomic<int> cancellationSignal{0};
-
 static_assert(std::atomic<int>::is_always_lock_free,
               "requestCancellation must be async-signal-safe");
 }  // namespace detail

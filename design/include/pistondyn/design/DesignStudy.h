@@ -103,7 +103,6 @@ struct DesignFolder {
   /// The study's lock on DIR/.design.lock (flock, exclusive); released when the last copy
   /// goes.
   std::shared_ptr<const void> lock;
-
 };
 
 /// Creates `dir` and writes design.json (kind, fingerprint and `description`, the study's

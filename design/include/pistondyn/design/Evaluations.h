@@ -120,7 +120,6 @@ class ThreadExecutor final : public Executor {
   /// `threads` worker threads (at least 1) running the evaluations of `store` (which must
   /// outlive it) with the liner models of `registry`. The destructor stops and joins them.
   ThreadExecutor(const EvaluationStore& store, int threads,
-
                  const io::LinerRegistry& registry = io::LinerRegistry::getGlobal());
   ~ThreadExecutor() override;
 

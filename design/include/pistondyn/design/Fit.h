@@ -152,10 +152,11 @@ struct CovarianceAnalysis {
   std::vector<std::optional<double>> standardError;  ///< per parameter, in its unit
   std::vector<std::string> notes;  ///< per parameter: why not identifiable, or ""
   std::vector<std::vector<double>> correlation;  ///< n x n
-  int rank = 0;  ///< rank of J, columns scaled to unit length: singular values >= rankTolerance x the largest
+  /// Rank of J with its columns scaled to unit length: the singular values >= rankTolerance
+  /// times the largest.
+  int rank = 0;
 };
 /// The analysis above; `names` label the parameters in the notes.
-
 CovarianceAnalysis analyseCovariance(const std::vector<std::vector<double>>& J, double s2,
                                      const std::vector<std::string>& names, double rankTolerance,
                                      double correlationLimit);

@@ -96,7 +96,6 @@ using PropagateProgress = std::function<void(const std::string& line)>;
 /// A failed sample is counted in PropagateOutcome::failed, not thrown; throws
 /// std::runtime_error when two samples' runs have different crank angles, or a result folder
 /// cannot be read.
-
 PropagateOutcome runPropagation(
 const PropagateSpec& spec, Executor& executor,
                                 const PropagateProgress& progress = {});

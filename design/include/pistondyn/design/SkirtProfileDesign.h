@@ -25,7 +25,6 @@ namespace pistondyn::design {
 /// The four numbers of the parametric skirt profile (this file's formula), in the deck's
 /// units.
 struct SkirtProfileShape {
-
   double topDrop_um = 0.0;             ///< radial drop at the skirt's top edge [um]
   double bottomDrop_um = 0.0;          ///< ... at its bottom edge [um]
   double minClearanceHeight_mm = 0.0;  ///< y_m, above the pin axis [mm]

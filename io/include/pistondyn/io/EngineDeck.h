@@ -58,7 +58,6 @@ struct EngineDeck {
   /// `overrides` (as --set assignments after the user's) and `inputs`.
   Fidelity fidelity = Fidelity::Full;
   std::string fidelityNote;  ///< the preview's changes in words; "" when nothing changed
-
 };
 
 /// Reads, overrides and checks a deck; the liner model comes from `registry`. Throws

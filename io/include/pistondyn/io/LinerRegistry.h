@@ -92,7 +92,6 @@ using LinerElementMaker = std::function<std::unique_ptr<plugin::LinerElement>()>
 struct LinerModel {
   LinerElementMaker maker;  ///< builds one element with the parameters the factory read
   LinerModelNeeds needs;    ///< what the model and the run need for this element
-
 };
 /// Reads the liner section; problems go to the section (never thrown for bad input).
 using LinerFactory = std::function<LinerElementMaker(DeckSection& liner)>;

@@ -50,7 +50,6 @@ class OutputFolderLock {
   /// The locked folder, as given to the constructor.
   const std::string& getDirectory() const { return dir_; }
 
-
  private:
   void release() noexcept;
   std::string dir_, lockPath_;

@@ -26,7 +26,6 @@ std::string formatNumber(double value);
 /// in a deck's path, a tab, ...) written as a C escape (`\n`, `\r`, `\t`, `\xNN`) and a
 /// backslash as `\\`, so that the line ends where it should and the text can be read back
 /// exactly.
-
 std::string escapeForCommentLine(const std::string& text);
 
 /// '#'-prefixed comment lines (escapeForCommentLine), then a header of column names (with

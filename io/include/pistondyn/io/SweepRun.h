@@ -86,7 +86,6 @@ SweepCaseResult runSweepCase(const SweepPlan& plan, const std::string& dir, int 
 /// propagate), so both run the same way on threads and MPI ranks.
 struct CaseInFolder {
   std::string baseDeckPath;            ///< the deck the overrides apply to
-
   std::vector<std::string> overrides;  ///< --set assignments, in order
   std::string folder;                  ///< the run folder (cycle.csv, summary.json)
   /// Files the case's deck reads (a generated skirt profile table): written into the
@@ -110,7 +109,6 @@ SweepCaseResult runCaseInFolder(const CaseInFolder& c,
 /// order:
 /// `case`, one column per swept key, `status`, every numeric or true/false key under
 /// summary.json's results (named after it), `wall_time_s`, `integrator_steps`, `message`.
-
 /// status is ok or failed; message is the failure (quoted). Numbers are copied as
 /// summary.json has them (shortest text reading back to the same double); a case that does
 /// not set a key or lacks a figure leaves its cell empty (never nan or inf). wall_time_s

@@ -46,13 +46,15 @@
 namespace pistondyn::lubrication {
 
 enum class CavitationModel {
-  None,            ///< full Sommerfeld: the Reynolds equation everywhere, sub-ambient pressures kept
+  /// Full Sommerfeld: the Reynolds equation everywhere, sub-ambient pressures kept.
+  None,
   Reynolds,        ///< Swift-Stieber / Reynolds condition p >= p_cav (the thesis' choice)
   MassConserving,  ///< JFO / Elrod-Adams: p >= p_cav, 0 <= theta <= 1, (p - p_cav)(1 - theta) = 0
 };
 
 enum class FilmSolverType {
-  ReferenceGaussSeidel,  ///< the thesis' Gauss-Seidel with over-relaxation (projected / Elrod-Adams)
+  /// The thesis' Gauss-Seidel with over-relaxation (projected / Elrod-Adams).
+  ReferenceGaussSeidel,
   FastActiveSet,         ///< primal-dual active-set iteration; Krylov solves preconditioned by
                          ///< multigrid or a lagged CHOLMOD / KLU factorisation (FastLinearSolver)
 };
@@ -142,13 +144,13 @@ struct FilmProblem {
   Eigen::ArrayXd gap_m;        ///< nominal gap h per node, [m], > 0 and finite (required)
   FaceValues faces = FaceValues::NodalMean;  ///< face conductance and content (FaceValues)
   /// Optional floor h_c of the gap [m] (0 = none, the default; else finite and > 0, every gap_m
-  /// above it, and faces = LinearGap): gap_m are then the film gaps h_f = calcFlooredGap(h,
-  /// h_c) of a nominal gap h (GapFloor.h) that may be <= 0 where rough surfaces touch. The face values (above)
-  /// take h linear between the nodes instead of h_f: near a contact the floor's knee, where
-  /// h_f bends from h to h_c over a nominal range of a few h_c, is far narrower than a cell,
-  /// and a face across it integrates K and C through it (exactly for h_f; the flow factors and
-  /// contents linear between points at fixed multiples of h_c, FilmSystem.cpp). Everything
-  /// else (nodal terms, rates, bases, results) is in terms of gap_m as given.
+  /// above it, and faces = LinearGap): gap_m are then the film gaps h_f = calcFlooredGap(h, h_c) of
+  /// a nominal gap h (GapFloor.h) that may be <= 0 where rough surfaces touch. The face values
+  /// (above) take h linear between the nodes instead of h_f: near a contact the floor's knee, where
+  /// h_f bends from h to h_c over a nominal range of a few h_c, is far narrower than a cell, and a
+  /// face across it integrates K and C through it (exactly for h_f; the flow factors and contents
+  /// linear between points at fixed multiples of h_c, FilmSystem.cpp). Everything else (nodal
+  /// terms, rates, bases, results) is in terms of gap_m as given.
   double gapFloor_m = 0.0;
   Eigen::ArrayXd gapRate_mps;  ///< dh/dt per node at a fixed grid point, [m/s]; empty = 0
   Eigen::Vector2d slidingVelocity_mps = Eigen::Vector2d::Zero();  ///< U of surface 1 rel. to 2
@@ -201,7 +203,6 @@ struct FilmProblem {
   /// a full film at rest. The solver checks it (sizes, fill fractions in [0, 1], positive
   /// finite expected gaps, an earlier point only with a last one and a step > 0) and throws
   /// std::invalid_argument naming the member otherwise.
-
   FilmHistory history;
   /// How Couette faces take the fill fraction (FillFractionFlux above), default Upwind.
   FillFractionFlux fillFractionFlux = FillFractionFlux::Upwind;
@@ -311,10 +312,12 @@ struct FilmSolverOptions {
 /// along the grid axes x and y.
 struct SurfaceShear {
   ///@{
-  Eigen::ArrayXd couetteX_Pa, couetteY_Pa;                   ///< nodal Couette shear stress, [Pa]
+  /// Nodal Couette shear stress along x and y, [Pa].
+  Eigen::ArrayXd couetteX_Pa, couetteY_Pa;
   ///@}
   ///@{
-  Eigen::ArrayXd poiseuilleX_Pa, poiseuilleY_Pa;             ///< nodal Poiseuille shear stress, [Pa]
+  /// Nodal Poiseuille shear stress along x and y, [Pa].
+  Eigen::ArrayXd poiseuilleX_Pa, poiseuilleY_Pa;
   ///@}
   Eigen::Vector2d couetteForce_N = Eigen::Vector2d::Zero();  ///< integral over the film, [N]
   Eigen::Vector2d poiseuilleForce_N = Eigen::Vector2d::Zero();  ///< integral over the film, [N]
@@ -426,7 +429,6 @@ struct FilmResult {
   /// The fast solver did not settle and the reference Gauss-Seidel finished the solve
   /// (FilmSolverOptions::fallbackToReference).
   bool usedFallback = false;
-
   /// The squeeze- and gap-derivative solve failed (the final active set's Jacobian is singular
   /// to the linear solvers, Krylov and sparse-direct): the derivative fields above are all zero,
   /// not derivatives. The pressure and loads are unaffected. Callers that steer a Newton

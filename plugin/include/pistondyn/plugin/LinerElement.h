@@ -60,14 +60,12 @@ class LinerElement : public ForceElement {
   /// The energy the liner's friction and film dissipated since the start of the run [J], if
   /// the element integrates it: over a periodic cycle getFrictionWork_J() +
   /// getSecondaryMotionWork_J() = this.
-
   virtual std::optional<double> getDissipatedEnergy_J(const SimTK::State& /*s*/) const {
     return std::nullopt;
   }
   /// The work the liner's forces took from the piston's secondary motion since the start of
   /// the run [J], if the element integrates it (see getDissipatedEnergy_J()).
   virtual std::optional<double> getSecondaryMotionWork_J(const SimTK::State& /*s*/) const {
-
     return std::nullopt;
   }
   /// Nodal fields over the liner's contact regions (NodalFields.h), for field dumps and maps;

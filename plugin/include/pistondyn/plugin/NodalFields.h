@@ -46,7 +46,6 @@ class NodalFieldSource {
   /// The fields every region has, in the column order of calcNodalFields(); the same for every
   /// state of a run.
   virtual std::vector<NodalFieldDeclaration> getNodalFieldDeclarations() const = 0;
-
   /// The fields of region `region` at a state realized through Stage::Acceleration whose forces
   /// the element computed last (an output row): values (nodes x declarations), in the declared
   /// units, finite. Throws std::runtime_error when the element's last fields are not this

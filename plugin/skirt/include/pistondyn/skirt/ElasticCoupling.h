@@ -304,7 +304,6 @@ class ElasticCoupling {
   Eigen::ArrayXd pistonElastic_m_;  ///< see pistonElastic_m()
   FilmPressureEvaluation film_;     ///< see film()
 
-
   /// Node sets (setUpNodeSets(); Newton and Modal): S moves the film gap, F takes film forces.
   ///@{
   Eigen::VectorXi nodesS_, nodesF_;

@@ -52,7 +52,6 @@ class ModalCoupling final : public ElasticCoupling {
   /// The film-grid shape of each mode's structural displacement (film nodes x modes, +
   /// outward; the gap term changes by -Psi_j per unit w_j [m/m]).
   const Eigen::MatrixXd& modalShapes() const { return modalShapes_; }
-
   /// The modal coordinates of the last solve [m].
   const Eigen::VectorXd& modalCoordinates_m() const { return modal_m_; }
   /// The share of the trace of C_FF the modes keep [-].

@@ -207,7 +207,8 @@ struct SkirtSideFigures {
   double wettedShare = 0.0;  ///< share of the area with oil (fill fraction > 0)
   /// Oil held in the film on the side, sum of area x fill fraction x film gap [m^3].
   double filmOilVolume_m3 = 0.0;
-  double wearRate_m3ps = 0.0;         ///< Archard wear volume rate k/H * integral p_c |U| dA [m^3/s]
+  /// Archard wear volume rate k/H * integral p_c |U| dA [m^3/s].
+  double wearRate_m3ps = 0.0;
   double maxWearDepthRate_mps = 0.0;  ///< k/H * max p_c |U| [m/s]
 };
 
@@ -267,7 +268,6 @@ class SkirtSideLubrication {
   double getCompositeSigma_m() const;
   /// The film-gap clamp h_c = max(clampFraction * sigma, minimumClampGap_m) in use [m].
   double getClampGap_m() const;
-
 
   /// One evaluation (see the file comment). `out` is reused between calls (no allocation
   /// at a fixed grid size). The film's warm start is the last call's solution.

@@ -1,13 +1,14 @@
 #pragma once
-// A process-wide request to stop, for SIGINT / SIGTERM: the program's signal handler calls
-// requestCancellation(signal) (async-signal-safe: one store to a lock-free atomic), and
-// the long loops check it at safe points - CycleSimulation before every output row and
-// integrator step, the sweep before every case, the program while gnuplot runs - and
-// throw Cancelled. The exception unwinds like any failure, so what the run was writing is
-// removed by the same all-or-nothing destructors (ResultFileSet, OutputFolderLock,
-// temporary folders) and the program exits 128 + signal (130 for SIGINT, 143 for SIGTERM).
-//
-// Header-only (pistondyn::common): one flag per process (an inline variable).
+/// @file
+/// A process-wide request to stop, for SIGINT / SIGTERM: the program's signal handler calls
+/// requestCancellation(signal) (async-signal-safe: one store to a lock-free atomic), and
+/// the long loops check it at safe points - CycleSimulation before every output row and
+/// integrator step, the sweep before every case, the program while gnuplot runs - and
+/// throw Cancelled. The exception unwinds like any failure, so what the run was writing is
+/// removed by the same all-or-nothing destructors (ResultFileSet, OutputFolderLock,
+/// temporary folders) and the program exits 128 + signal (130 for SIGINT, 143 for SIGTERM).
+///
+/// Header-only (pistondyn::common): one flag per process (an inline variable).
 
 #include <atomic>
 #include <stdexcept>
@@ -47,6 +48,7 @@ inline int getCancellationSignal() noexcept {
   return detail::cancellationSignal.load(std::memory_order_relaxed);
 }
 
+/// True when a cancellation was requested (getCancellationSignal() != 0).
 inline bool isCancellationRequested() noexcept {
   return getCancellationSignal() != 0;
 }

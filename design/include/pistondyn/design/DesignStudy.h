@@ -1,22 +1,25 @@
 #pragma once
-// What the three design-loop decks (OPT.yaml, FIT.yaml, PROP.yaml; README.md, "The design
-// loop") share: the base engine deck, the overrides every evaluation shares, the design
-// variables (numeric deck keys with bounds, and the parametric skirt profile's numbers),
-// the study's fingerprint and its output folder.
-//
-//   base_deck: ../engines/gasoline_1400_2000rpm/engine.yaml   # relative to this file
-//   set: {simulation.cycles: 1}          # overrides every evaluation shares (optional)
-//   <variables block>:                   # variables (optimize), parameters (fit),
-//     geometry.pin_offset_mm: [-1, 1]    # inputs (propagate): [lower, upper], key's unit
-//   profile:                             # optional: the parametric skirt profile
-//     top_drop_um: [10, 40]              # a range: a variable; a number: fixed
-//     bottom_drop_um: 15
-//     min_clearance_height_mm: [-12, 0]
-//     curvature_um_per_mm2: 0.12
-//
-// A variable is a deck key the base deck's readers read as a number (deck key path as
-// --set takes it, its unit in its name); its bounds are checked by loading the base deck
-// with each bound, so a bound the deck rejects is reported before anything runs.
+/// @file
+/// What the three design-loop decks (OPT.yaml, FIT.yaml, PROP.yaml; README.md, "The design
+/// loop") share: the base engine deck, the overrides every evaluation shares, the design
+/// variables (numeric deck keys with bounds, and the parametric skirt profile's numbers),
+/// the study's fingerprint and its output folder.
+///
+/// ~~~
+///   base_deck: ../engines/gasoline_1400_2000rpm/engine.yaml   # relative to this file
+///   set: {simulation.cycles: 1}          # overrides every evaluation shares (optional)
+///   <variables block>:                   # variables (optimize), parameters (fit),
+///     geometry.pin_offset_mm: [-1, 1]    # inputs (propagate): [lower, upper], key's unit
+///   profile:                             # optional: the parametric skirt profile
+///     top_drop_um: [10, 40]              # a range: a variable; a number: fixed
+///     bottom_drop_um: 15
+///     min_clearance_height_mm: [-12, 0]
+///     curvature_um_per_mm2: 0.12
+/// ~~~
+///
+/// A variable is a deck key the base deck's readers read as a number (deck key path as
+/// --set takes it, its unit in its name); its bounds are checked by loading the base deck
+/// with each bound, so a bound the deck rejects is reported before anything runs.
 
 #include <array>
 #include <memory>

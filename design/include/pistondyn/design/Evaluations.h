@@ -1,23 +1,26 @@
 #pragma once
-// Evaluations of the design loop (optimize, fit, propagate): each one the base engine deck
-// run with its overrides into a folder of its own, by io::runCaseInFolder(), the code path
-// of a sweep case. They are stored by what decides their results:
-//
-//   DIR/evaluations/<id>/   cycle.csv, summary.json (runDeck, all-or-nothing), the input
-//                           files the design wrote (skirt_profile.csv), then
-//                           evaluation.json, which marks it complete
-//
-// with <id> the first 16 hex digits of a SHA-256 of the study's context (base deck and
-// table contents, shared overrides) and the evaluation's own overrides and files. A
-// complete folder is never run again: a design loop interrupted and started again replays
-// its (deterministic) decisions, finds the evaluations it had made and continues where it
-// stopped; evaluations requested twice, by one search or by two running side by side, run
-// once.
-//
-// Executors run evaluations on workers: threads of this process (ThreadExecutor) or MPI
-// ranks (the pistondyn program's, app/DesignMpi.cpp). Results do not depend on which
-// worker ran them, so the evaluated set and the loop's decisions are the same whatever
-// runs them.
+/// @file
+/// Evaluations of the design loop (optimize, fit, propagate): each one the base engine deck
+/// run with its overrides into a folder of its own, by io::runCaseInFolder(), the code path
+/// of a sweep case. They are stored by what decides their results:
+///
+/// ~~~
+///   DIR/evaluations/<id>/   cycle.csv, summary.json (runDeck, all-or-nothing), the input
+///                           files the design wrote (skirt_profile.csv), then
+///                           evaluation.json, which marks it complete
+/// ~~~
+///
+/// with `<id>` the first 16 hex digits of a SHA-256 of the study's context (base deck and
+/// table contents, shared overrides) and the evaluation's own overrides and files. A
+/// complete folder is never run again: a design loop interrupted and started again replays
+/// its (deterministic) decisions, finds the evaluations it had made and continues where it
+/// stopped; evaluations requested twice, by one search or by two running side by side, run
+/// once.
+///
+/// Executors run evaluations on workers: threads of this process (ThreadExecutor) or MPI
+/// ranks (the pistondyn program's, app/DesignMpi.cpp). Results do not depend on which
+/// worker ran them, so the evaluated set and the loop's decisions are the same whatever
+/// runs them.
 
 #include <future>
 #include <map>
@@ -132,10 +135,17 @@ class ThreadExecutor final : public Executor {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Requests and results as text (what an MPI rank is sent and sends back).
+/// @name Requests and results as text (what an MPI rank is sent and sends back)
+/// Each decode reads what the matching encode wrote.
+///@{
+/// The request as text.
 std::string encodeRequest(const EvaluationRequest& r);
+/// The request encodeRequest() wrote.
 EvaluationRequest decodeRequest(const std::string& text);
+/// The result as text.
 std::string encodeResult(const EvaluationResult& r);
+/// The result encodeResult() wrote.
 EvaluationResult decodeResult(const std::string& text);
+///@}
 
 }  // namespace pistondyn::design

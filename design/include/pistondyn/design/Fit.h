@@ -1,35 +1,38 @@
 #pragma once
-// `pistondyn fit FIT.yaml --out DIR`: named uncertain inputs of the base deck calibrated to
-// measured traces by bounded least squares. README.md, "Calibration", documents the deck:
-//
-//   parameters:                            # DesignStudy's variables, each with a start
-//     piston.com_above_pin_mm: {bounds: [2, 10], start: 4}
-//     liner.cold_radial_clearance_um: [35, 75]        # start: mid-range
-//   measured:
-//     - file: measured_tilt.csv            # CSV crank_angle_deg, <column>
-//       column: tilt_mrad                  # a cycle.csv column of the run
-//       weight: 1                          # optional (residuals times sqrt(weight))
-//       windows_deg: [[0, 120], [600, 720]]   # optional crank-angle windows
-//     - file: measured_lateral.csv
-//       column: u_lat_um
-//       height_above_pin_mm: 10            # lateral displacement there: u_lat + h tilt
-//   method:
-//     max_iterations: 30                   # Levenberg-Marquardt iterations
-//     tolerance: 1e-6                      # relative decrease of the sum of squares
-//     jacobian_step: 1e-3                  # central differences, relative to the ranges
-//     rank_tolerance: 1e-6                 # singular-value ratio of an identifiable set
-//     correlation_limit: 0.99
-//
-// The model's trace is the run's last cycle interpolated linearly (periodically) at the
-// measured crank angles. Levenberg-Marquardt in parameters scaled to [0, 1], steps
-// projected onto the bounds; each iteration's Jacobian is one batch of 2 n evaluations
-// (central differences; one-sided at a bound) run side by side. At the optimum: s^2 = SSR
-// / (m - n), covariance s^2 (J'J)^-1 from the Jacobian there; a parameter whose column is
-// zero, or that takes part in a direction of J with a singular value below rank_tolerance
-// times the largest (columns scaled to unit length), is reported as not identifiable, with
-// no value of its standard error; the others' errors come from the identifiable subset.
-// A parameter whose standard error exceeds its range, or whose correlation with another
-// exceeds correlation_limit, is reported as not identifiable too.
+/// @file
+/// `pistondyn fit FIT.yaml --out DIR`: named uncertain inputs of the base deck calibrated to
+/// measured traces by bounded least squares. README.md, "Calibration", documents the deck:
+///
+/// ~~~
+///   parameters:                            # DesignStudy's variables, each with a start
+///     piston.com_above_pin_mm: {bounds: [2, 10], start: 4}
+///     liner.cold_radial_clearance_um: [35, 75]        # start: mid-range
+///   measured:
+///     - file: measured_tilt.csv            # CSV crank_angle_deg, <column>
+///       column: tilt_mrad                  # a cycle.csv column of the run
+///       weight: 1                          # optional (residuals times sqrt(weight))
+///       windows_deg: [[0, 120], [600, 720]]   # optional crank-angle windows
+///     - file: measured_lateral.csv
+///       column: u_lat_um
+///       height_above_pin_mm: 10            # lateral displacement there: u_lat + h tilt
+///   method:
+///     max_iterations: 30                   # Levenberg-Marquardt iterations
+///     tolerance: 1e-6                      # relative decrease of the sum of squares
+///     jacobian_step: 1e-3                  # central differences, relative to the ranges
+///     rank_tolerance: 1e-6                 # singular-value ratio of an identifiable set
+///     correlation_limit: 0.99
+/// ~~~
+///
+/// The model's trace is the run's last cycle interpolated linearly (periodically) at the
+/// measured crank angles. Levenberg-Marquardt in parameters scaled to [0, 1], steps
+/// projected onto the bounds; each iteration's Jacobian is one batch of 2 n evaluations
+/// (central differences; one-sided at a bound) run side by side. At the optimum: s^2 = SSR
+/// / (m - n), covariance s^2 (J'J)^-1 from the Jacobian there; a parameter whose column is
+/// zero, or that takes part in a direction of J with a singular value below rank_tolerance
+/// times the largest (columns scaled to unit length), is reported as not identifiable, with
+/// no value of its standard error; the others' errors come from the identifiable subset.
+/// A parameter whose standard error exceeds its range, or whose correlation with another
+/// exceeds correlation_limit, is reported as not identifiable too.
 
 #include <functional>
 #include <optional>

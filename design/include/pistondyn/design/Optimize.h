@@ -1,31 +1,34 @@
 #pragma once
-// `pistondyn optimize OPT.yaml --out DIR`: the design variables (DesignStudy.h) chosen to
-// minimise an objective of the run's figures under constraints on others. README.md,
-// "Design optimisation", documents the deck:
-//
-//   objective: fmep_kPa                 # or {fmep_kPa: 1, slap_energy_max_mJ: 0.2}: a
-//                                       # weighted sum of figures (Figures.h)
-//   constraints:                        # each {min: a} and/or {max: b}
-//     min_h_over_sigma_thrust: {min: 1.0}
-//     slap_energy_max_mJ: {max: 2.0}
-//   method:
-//     doe_samples: 12       # Latin hypercube over the bounds (default 4 x variables + 4)
-//     seed: 1               # of the hypercube (and of ISRES)
-//     starts: 2             # local searches from the best DOE points (default 1)
-//     local: cobyla         # cobyla (constraints) or bobyqa (bounds only)
-//     max_evaluations: 60   # per local search
-//     tolerance: 1e-3       # on the variables, relative to their ranges
-//     initial_step: 0.1     # the local search's first step, relative to the ranges
-//     constraint_tolerance: 1e-4   # relative to each bound
-//     global: none          # or isres: NLopt's ISRES over the bounds first
-//     global_evaluations: 200
-//
-// The loop: the baseline (the base deck as it is) and the Latin-hypercube points are
-// evaluated together; local searches (NLopt, in coordinates scaled to [0, 1]) start from
-// the best of them, side by side; every evaluation is a case run by an Executor
-// (Evaluations.h: threads or MPI ranks, resumable). A run that fails is infeasible: the
-// search sees a penalty above every objective of the DOE and violated constraints. The
-// optimum is the best feasible design evaluated (the baseline excluded).
+/// @file
+/// `pistondyn optimize OPT.yaml --out DIR`: the design variables (DesignStudy.h) chosen to
+/// minimise an objective of the run's figures under constraints on others. README.md,
+/// "Design optimisation", documents the deck:
+///
+/// ~~~
+///   objective: fmep_kPa                 # or {fmep_kPa: 1, slap_energy_max_mJ: 0.2}: a
+///                                       # weighted sum of figures (Figures.h)
+///   constraints:                        # each {min: a} and/or {max: b}
+///     min_h_over_sigma_thrust: {min: 1.0}
+///     slap_energy_max_mJ: {max: 2.0}
+///   method:
+///     doe_samples: 12       # Latin hypercube over the bounds (default 4 x variables + 4)
+///     seed: 1               # of the hypercube (and of ISRES)
+///     starts: 2             # local searches from the best DOE points (default 1)
+///     local: cobyla         # cobyla (constraints) or bobyqa (bounds only)
+///     max_evaluations: 60   # per local search
+///     tolerance: 1e-3       # on the variables, relative to their ranges
+///     initial_step: 0.1     # the local search's first step, relative to the ranges
+///     constraint_tolerance: 1e-4   # relative to each bound
+///     global: none          # or isres: NLopt's ISRES over the bounds first
+///     global_evaluations: 200
+/// ~~~
+///
+/// The loop: the baseline (the base deck as it is) and the Latin-hypercube points are
+/// evaluated together; local searches (NLopt, in coordinates scaled to [0, 1]) start from
+/// the best of them, side by side; every evaluation is a case run by an Executor
+/// (Evaluations.h: threads or MPI ranks, resumable). A run that fails is infeasible: the
+/// search sees a penalty above every objective of the DOE and violated constraints. The
+/// optimum is the best feasible design evaluated (the baseline excluded).
 
 #include <cstdint>
 #include <functional>

@@ -1,25 +1,28 @@
 #pragma once
-// `pistondyn propagate PROP.yaml --out DIR`: what the uncertain inputs of a deck cost in
-// certainty. A Latin hypercube over the inputs' ranges (uniform), each sample a run, and
-// the 5 / 50 / 95 % points of the run's figures and, at every output crank angle, of its
-// curves. README.md, "Uncertainty bands", documents the deck:
-//
-//   inputs:                          # DesignStudy's variables: [lower, upper], uniform
-//     piston.mass_g: [70, 80]
-//   est_inputs: 0.1                  # optional: every number the base deck's comment
-//                                    # marks EST, varied by +-10 % of its value (a key under
-//                                    # inputs keeps its range, one under set or --set its
-//                                    # value; zeros are left out)
-//   samples: 32                      # Latin-hypercube samples (default 32)
-//   seed: 1
-//   figures: [fmep_kPa, min_h_over_sigma, slap_energy_max_mJ]    # default these
-//   curves: [u_lat_um, tilt_mrad]    # cycle.csv columns, default these
-//
-// Percentiles are of the samples that ran (linear interpolation between order statistics,
-// numpy's default: the p-quantile of x(0) <= ... <= x(n-1) is x(k) + f (x(k+1) - x(k))
-// with k + f = (n - 1) p). For one input and a response linear in it, a Latin hypercube's
-// p-quantile lies within (range of the response) / n of the exact one: each sample is in
-// its own of the n equal strata.
+/// @file
+/// `pistondyn propagate PROP.yaml --out DIR`: what the uncertain inputs of a deck cost in
+/// certainty. A Latin hypercube over the inputs' ranges (uniform), each sample a run, and
+/// the 5 / 50 / 95 % points of the run's figures and, at every output crank angle, of its
+/// curves. README.md, "Uncertainty bands", documents the deck:
+///
+/// ~~~
+///   inputs:                          # DesignStudy's variables: [lower, upper], uniform
+///     piston.mass_g: [70, 80]
+///   est_inputs: 0.1                  # optional: every number the base deck's comment
+///                                    # marks EST, varied by +-10 % of its value (a key under
+///                                    # inputs keeps its range, one under set or --set its
+///                                    # value; zeros are left out)
+///   samples: 32                      # Latin-hypercube samples (default 32)
+///   seed: 1
+///   figures: [fmep_kPa, min_h_over_sigma, slap_energy_max_mJ]    # default these
+///   curves: [u_lat_um, tilt_mrad]    # cycle.csv columns, default these
+/// ~~~
+///
+/// Percentiles are of the samples that ran (linear interpolation between order statistics,
+/// numpy's default: the p-quantile of x(0) <= ... <= x(n-1) is x(k) + f (x(k+1) - x(k))
+/// with k + f = (n - 1) p). For one input and a response linear in it, a Latin hypercube's
+/// p-quantile lies within (range of the response) / n of the exact one: each sample is in
+/// its own of the n equal strata.
 
 #include <functional>
 #include <map>
@@ -102,7 +105,7 @@ const PropagateSpec& spec, Executor& executor,
 
 /// samples.csv: per sample its inputs, status, the figures, evaluation folder, message.
 std::string makeSamplesCsv(const PropagateSpec& spec, const PropagateOutcome& outcome);
-/// bands.csv: crank_angle_deg, then per curve <curve>_p05, _p50, _p95, _baseline.
+/// bands.csv: crank_angle_deg, then per curve `<curve>_p05`, `_p50`, `_p95`, `_baseline`.
 std::string makeBandsCsv(const PropagateSpec& spec, const PropagateOutcome& outcome);
 
 /// The numeric keys of a deck file whose line comment holds the word EST: key path (as

@@ -1,22 +1,25 @@
 #pragma once
-// The parametric skirt profile of the design loop: the cold radial drop of the skirt below
-// its reference diameter against the height above the pin axis, from four numbers, written
-// as the table `liner.skirt_profile.axial_profile_file` reads (CSV `height_above_pin_mm,
-// radial_drop_um`), so that profile optimisation needs no hand-made tables.
-//
-// With y the height above the pin [mm], y_m the minimum-clearance point, s = y - y_m and L
-// the distance from y_m to the skirt edge on the side of y (top edge y_t above, bottom
-// edge y_b below):
-//
-//   drop(y) = c s^2 + (d - c L^2) (s / L)^4        d = top_drop_um above y_m,
-//                                                    bottom_drop_um below it
-//
-// so drop(y_m) = 0 (the cold clearance is the clearance there), drop'(y_m) = 0, drop'' =
-// 2c at y_m (c = curvature_um_per_mm2: the parabola c s^2 of a plain barrel, which the
-// quartic term bends to reach the edge drop d exactly at the edge). With c = 0.12 and the
-// edge drops of 0.12 L^2 it is the examples' parabolic barrel. The drop rises monotonically
-// from y_m to each edge when d >= c L^2 / 2 on that side (below that the profile turns back
-// towards the edge; it is written as the formula gives it).
+/// @file
+/// The parametric skirt profile of the design loop: the cold radial drop of the skirt below
+/// its reference diameter against the height above the pin axis, from four numbers, written
+/// as the table `liner.skirt_profile.axial_profile_file` reads (CSV `height_above_pin_mm,
+/// radial_drop_um`), so that profile optimisation needs no hand-made tables.
+///
+/// With y the height above the pin [mm], y_m the minimum-clearance point, s = y - y_m and L
+/// the distance from y_m to the skirt edge on the side of y (top edge y_t above, bottom
+/// edge y_b below):
+///
+/// ~~~
+///   drop(y) = c s^2 + (d - c L^2) (s / L)^4        d = top_drop_um above y_m,
+///                                                    bottom_drop_um below it
+/// ~~~
+///
+/// so drop(y_m) = 0 (the cold clearance is the clearance there), drop'(y_m) = 0, drop'' =
+/// 2c at y_m (c = curvature_um_per_mm2: the parabola c s^2 of a plain barrel, which the
+/// quartic term bends to reach the edge drop d exactly at the edge). With c = 0.12 and the
+/// edge drops of 0.12 L^2 it is the examples' parabolic barrel. The drop rises monotonically
+/// from y_m to each edge when d >= c L^2 / 2 on that side (below that the profile turns back
+/// towards the edge; it is written as the formula gives it).
 
 #include <string>
 

@@ -1,21 +1,24 @@
 #pragma once
-// One pistondyn process at a time writes a result folder. `pistondyn run`, `plot` and
-// `report` hold an exclusive lock on DIR/.pistondyn.lock while they write DIR: a second
-// process started into the same folder is refused at once (OutputFolderBusy), before it
-// simulates or writes anything, so two runs never mix their rows or their files.
-//
-//   io::OutputFolderLock lock(outDir);   // creates outDir if needed; throws if it is busy
-//   io::runDeck(deck, outDir);           // all-or-nothing inside the locked folder
-//                                        // ~OutputFolderLock: lock file removed, and
-//                                        // outDir too if this lock created it and it is empty
-//
-// The lock is flock(2) on the lock file, taken without waiting, released when the object
-// goes (or the process ends, however it ends: the kernel drops the lock with the file
-// descriptor). The lock file is removed on release; a process that opened it before the
-// removal notices that the file it locked is no longer the folder's and tries again, so
-// two processes never both hold "the" lock. A file system without flock() (some network
-// file systems) runs unlocked. Within one process the lock is taken once: a second
-// OutputFolderLock on the same folder is refused too.
+/// @file
+/// One pistondyn process at a time writes a result folder. `pistondyn run`, `plot` and
+/// `report` hold an exclusive lock on DIR/.pistondyn.lock while they write DIR: a second
+/// process started into the same folder is refused at once (OutputFolderBusy), before it
+/// simulates or writes anything, so two runs never mix their rows or their files.
+///
+/// ~~~
+///   io::OutputFolderLock lock(outDir);   // creates outDir if needed; throws if it is busy
+///   io::runDeck(deck, outDir);           // all-or-nothing inside the locked folder
+///                                        // ~OutputFolderLock: lock file removed, and
+///                                        // outDir too if this lock created it and it is empty
+/// ~~~
+///
+/// The lock is flock(2) on the lock file, taken without waiting, released when the object
+/// goes (or the process ends, however it ends: the kernel drops the lock with the file
+/// descriptor). The lock file is removed on release; a process that opened it before the
+/// removal notices that the file it locked is no longer the folder's and tries again, so
+/// two processes never both hold "the" lock. A file system without flock() (some network
+/// file systems) runs unlocked. Within one process the lock is taken once: a second
+/// OutputFolderLock on the same folder is refused too.
 
 #include <stdexcept>
 #include <string>

@@ -1,38 +1,41 @@
 #pragma once
-// Inputs, warm-start state and results of the film solver (FilmSolver.h).
-//
-// Frame and sign conventions
-// --------------------------
-// * The grid (FilmGrid.h) is attached to surface 2 (e.g. the piston skirt, a bearing shell).
-//   Surface 1 (the liner, a journal) moves with the sliding velocity U = (Ux, Uy) relative to
-//   surface 2, as in FlowFactorModel.h. The mean (Couette) velocity of a full film is U/2.
-// * gapRate_mps is dh/dt at a fixed grid node (in the frame of surface 2).
-// * Nodal fields use the flat index k = i + nx * j of FilmGrid.
-//
-// Discrete equation (vertex-centred finite volumes; one balance per control volume):
-//   net outflow_k = sum_faces [ -K_f (p_nb - p_k) / d_f + (U.n_f / 2) * theta_up * C_f ] * L_f
-//                 + A_k * [ theta_k * dhT/dt_k + hT_k * (theta_k - thetaPrev_k) / dt ] = 0
-// with K = phi_p * h^3 / (12 eta) (phi_p: pressure flow factor of the face direction),
-// C = hT + sigma*phiS (expected gap plus shear-flow term of Patir & Cheng), face values K_f,
-// C_f as chosen by FilmProblem::faces (FaceValues below: the arithmetic means of the two nodes
-// by default), L_f the face length, d_f the node spacing,
-// A_k the control-volume area. theta_up is the fill fraction of the upwind node (mass-conserving
-// model only; 1 otherwise): in a full film this is exactly the central second-order Reynolds
-// discretisation, in a cavitated zone it is the monotone upwind transport of the oil content.
-// FillFractionFlux::LimitedSecondOrder (below) adds a known correction flux per face to it.
-// Without a time step (steady state, dt = inf) the last term vanishes.
-//
-// Residual tolerance (same definition for both solvers)
-// ------------------------------------------------------
-//   relative residual = max over unknown nodes k of |R_k| / F
-// where R_k is the net outflow above (m^3/s), except that at a node held at the cavitation
-// pressure by the Reynolds (Swift-Stieber) condition only a mass deficit counts, R_k -> max(0,
-// -R_k) (the sign condition of the complementarity problem); and F is the largest over the
-// unknown nodes of the sum of the magnitudes of the driving fluxes of that node's balance
-// (Couette fluxes through its faces, |A dhT/dt|, A hT / dt, and the Poiseuille flux that the
-// spread of the prescribed pressures would drive through its faces). Both solvers enforce
-// p >= p_cav, 0 <= theta <= 1 and p (1 - theta) = 0 exactly, so the residual measures only the
-// mass balance. A solve is converged when this number is <= FilmSolverOptions::tolerance.
+/// @file
+/// Inputs, warm-start state and results of the film solver (FilmSolver.h).
+///
+/// Frame and sign conventions
+/// --------------------------
+/// * The grid (FilmGrid.h) is attached to surface 2 (e.g. the piston skirt, a bearing shell).
+///   Surface 1 (the liner, a journal) moves with the sliding velocity U = (Ux, Uy) relative to
+///   surface 2, as in FlowFactorModel.h. The mean (Couette) velocity of a full film is U/2.
+/// * gapRate_mps is dh/dt at a fixed grid node (in the frame of surface 2).
+/// * Nodal fields use the flat index k = i + nx * j of FilmGrid.
+///
+/// Discrete equation (vertex-centred finite volumes; one balance per control volume):
+/// ~~~
+///   net outflow_k = sum_faces [ -K_f (p_nb - p_k) / d_f + (U.n_f / 2) * theta_up * C_f ] * L_f
+///                 + A_k * [ theta_k * dhT/dt_k + hT_k * (theta_k - thetaPrev_k) / dt ] = 0
+/// ~~~
+/// with K = phi_p * h^3 / (12 eta) (phi_p: pressure flow factor of the face direction),
+/// C = hT + sigma*phiS (expected gap plus shear-flow term of Patir & Cheng), face values K_f,
+/// C_f as chosen by FilmProblem::faces (FaceValues below: the arithmetic means of the two nodes
+/// by default), L_f the face length, d_f the node spacing,
+/// A_k the control-volume area. theta_up is the fill fraction of the upwind node (mass-conserving
+/// model only; 1 otherwise): in a full film this is exactly the central second-order Reynolds
+/// discretisation, in a cavitated zone it is the monotone upwind transport of the oil content.
+/// FillFractionFlux::LimitedSecondOrder (below) adds a known correction flux per face to it.
+/// Without a time step (steady state, dt = inf) the last term vanishes.
+///
+/// Residual tolerance (same definition for both solvers)
+/// ------------------------------------------------------
+///   relative residual = max over unknown nodes k of |R_k| / F
+/// where R_k is the net outflow above (m^3/s), except that at a node held at the cavitation
+/// pressure by the Reynolds (Swift-Stieber) condition only a mass deficit counts, R_k -> max(0,
+/// -R_k) (the sign condition of the complementarity problem); and F is the largest over the
+/// unknown nodes of the sum of the magnitudes of the driving fluxes of that node's balance
+/// (Couette fluxes through its faces, |A dhT/dt|, A hT / dt, and the Poiseuille flux that the
+/// spread of the prescribed pressures would drive through its faces). Both solvers enforce
+/// p >= p_cav, 0 <= theta <= 1 and p (1 - theta) = 0 exactly, so the residual measures only the
+/// mass balance. A solve is converged when this number is <= FilmSolverOptions::tolerance.
 
 #include <cstdint>
 #include <limits>
@@ -45,6 +48,7 @@
 
 namespace pistondyn::lubrication {
 
+/// How the film treats sub-cavitation pressures (the complementarity conditions it enforces).
 enum class CavitationModel {
   /// Full Sommerfeld: the Reynolds equation everywhere, sub-ambient pressures kept.
   None,
@@ -52,6 +56,7 @@ enum class CavitationModel {
   MassConserving,  ///< JFO / Elrod-Adams: p >= p_cav, 0 <= theta <= 1, (p - p_cav)(1 - theta) = 0
 };
 
+/// Which algorithm solves the film (both to the same residual, top of this file).
 enum class FilmSolverType {
   /// The thesis' Gauss-Seidel with over-relaxation (projected / Elrod-Adams).
   ReferenceGaussSeidel,

@@ -1,11 +1,12 @@
 #pragma once
-// Role interface of the element that holds the piston in the bore (the ideal liner
-// guide, the lubricated skirt, a user's own liner model). Summaries, convergence checks
-// and plots ask the model's liner element for these physics figures through this interface,
-// so they work with whatever liner a deck selects and never look up columns by name or cast
-// to a concrete element. Solver counters are not figures: ForceElement::getSolverCounters().
-//
-// Every getter needs a state realized through Stage::Acceleration.
+/// @file
+/// Role interface of the element that holds the piston in the bore (the ideal liner
+/// guide, the lubricated skirt, a user's own liner model). Summaries, convergence checks
+/// and plots ask the model's liner element for these physics figures through this interface,
+/// so they work with whatever liner a deck selects and never look up columns by name or cast
+/// to a concrete element. Solver counters are not figures: ForceElement::getSolverCounters().
+///
+/// Every getter needs a state realized through Stage::Acceleration.
 
 #include <optional>
 
@@ -14,6 +15,8 @@
 
 namespace pistondyn::plugin {
 
+/// A side of the skirt: Thrust (+x, the side the piston presses on in the expansion stroke)
+/// or AntiThrust (-x).
 enum class SkirtSide { Thrust, AntiThrust };
 
 /// The element that holds the piston in the bore, seen through the physics figures that

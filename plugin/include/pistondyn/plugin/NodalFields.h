@@ -1,8 +1,9 @@
 #pragma once
-// Nodal fields an element can give at a state: values on the nodes of one or more regions
-// (the lubricated skirt: its thrust and anti-thrust sides), declared once with name and unit
-// like ElementOutput.h, so that field dumps and skirt maps work for any element that has them
-// without knowing its type.
+/// @file
+/// Nodal fields an element can give at a state: values on the nodes of one or more regions
+/// (the lubricated skirt: its thrust and anti-thrust sides), declared once with name and unit
+/// like ElementOutput.h, so that field dumps and skirt maps work for any element that has them
+/// without knowing its type.
 
 #include <string>
 #include <vector>

@@ -1,82 +1,87 @@
 #pragma once
-// Film and asperity contact on one skirt side for one force evaluation: the gap fields of a
-// GapAssembly go in, the film (lubrication::FilmSolver), the asperity contact
-// (contact_forces::AsperityContactLaw) and the boundary friction
-// (contact_forces::BoundaryFriction) are evaluated on the side's grid, and the loads on the
-// piston come out with their derivatives with respect to the pose and its rates.
-//
-// Surfaces and velocities (FilmProblem.h, SurfacePair.h): the grid is attached to the skirt
-// (surface 2); the liner (surface 1) moves with U relative to it. U along the film grid's
-// axes: U_y (axial, +y) = -v_y of the piston; U_x (circumferential, along +e_phi = the film
-// grid's +x) = minus the skirt's tangential velocity at the side's centre line.
-//
-// Per node (k = i + nPhi j, SkirtSideGrid.h):
-//   film gap       h_f = (h + h_c + sqrt((h - h_c)^2 + h_c^2)) / 2 of the nominal gap h, a
-//                  smooth clamp >= h_c = max(clampFraction * sigma, minimumClampGap_m),
-//                  sigma = getCompositeSigma_m() (PatirChengFlowFactors.h: it changes the
-//                  film gap by < 1.2 % at h/sigma >= 0.5); the gap rate and the squeeze
-//                  basis are multiplied by dh_f/dh (lubrication::calcFlooredGap); with
-//                  faceValues = LinearGap the film also solves with FilmProblem::gapFloor_m
-//                  = h_c, so its faces follow the nominal gap through the clamp's knee at a
-//                  contact's rim
-//   film           lubrication::FilmSolver on SkirtSideGrid::getFilmGrid(), all four edges
-//                  open at edgePressure_Pa, the inlet supply film on both axial edges (it
-//                  matters only where the liner slides in), the flow-factor model of the
-//                  side (Patir & Cheng; smooth when sigma = 0)
-//   contact        p_c(h) of the asperity law on the NOMINAL gap (it carries the load where
-//                  the clamp holds the film open), its slope dp_c/dh; its loads are those
-//                  of the nodal interpolant except in cells whose smallest corner gap is
-//                  below 4.5 sigma, where p_c(h) is integrated at 6 x 6 Gauss points of the
-//                  gap interpolated bicubically from the 4 x 4 nearest nodes (a contact at an
-//                  edge is often narrower than a cell: the interpolant alone overestimated an
-//                  edge contact 4.8-fold at 64 x 48; and the bilinear gap of a barrel lies
-//                  above it between the nodes: 7 % of a mid-skirt contact's load)
-//   boundary shear tau_b = BoundaryFriction::calcShearStress_Pa(p_c, -U) on the skirt
-// Tractions on the skirt: normal p = p_film + p_c (minus edgePressure_Pa, see below), axial
-// tau_y = film shear on surface 2 along y - (p_film - edgePressure) s + tau_b,y, circumferential
-// tau_phi = film shear on surface 2 along x + tau_b,x. s = GapFields::skirtGapSlope is the axial
-// slope of the skirt surface's own gap terms (profile, thermal, elastic): the film pressure acts
-// normal to the skirt surface r_s = R - h_s, whose normal has the axial component -dr_s/dy = s,
-// so the pressure pushes the skirt along -s p per area. With it the film's force on the skirt
-// is minus its force on the (straight) liner, and U . F of the film equals the power it
-// dissipates, int [eta U^2 / h + h^3 |grad p|^2 / (12 eta)] dA for a smooth film (the
-// tilt's part of that balance is the rotation of the loads into the bore frame, the element's).
-// The circumferential slope of an oval skirt is left out, as the linear gap model leaves it out
-// of the gap rate. Loads by SkirtSideGrid::calcLoadsOnPiston (exact for the bilinear fields),
-// split into the hydrodynamic part (film pressure and film shear) and the asperity part
-// (contact pressure, normal to the liner, and boundary shear).
-//
-// Derivatives (for the implicit time stepper; pose order kLateral, kTilt, kTertiary):
-//   dLoads_dPoseRate  6 x 3: (force; moment) per unit pose rate, from the film's squeeze
-//                     derivatives (FilmResult::dPressure_dVelocity; exact for the final
-//                     cavitation set), pressure part only (the film shear's part is
-//                     ~h/L and h/(2R) of it); columns beyond
-//                     squeezeColumns are zero
-//   dLoads_dPose      6 x 3: the derivative of asperityLoads (contact pressure AND the
-//                     boundary shear it carries, for the fixed sliding velocity) from the
-//                     asperity law's exact slope, dp_c/dh * dh/dpose: of the nodal
-//                     interpolant plus the Gauss correction (above), i.e. exact for the
-//                     loads as computed while the set of Gauss-corrected cells stays. The
-//                     boundary shear is f g(|U|) p_c: its stiffness is all of dF_y and, with
-//                     the arm R against the pressure's y, ~R f / |y| (15..20 % on a skirt) of
-//                     the tilt moment's. The film's own stiffness (the change of the wedge
-//                     pressure with the pose) is NOT included: it is not stiff (the film is
-//                     overdamped: K/C is slow), LinearlyImplicitStepper.h explains why that
-//                     is enough.
-//
-// Cost and state: one film solve per call (with squeezeColumns extra back-substitutions),
-// one contact field, a few weighted sums. No allocation after the first call at a size. The
-// object keeps the film solver's workspace and the last film state as the warm start of the
-// next call (a mutable workspace in the sense of ForceElement.h: results depend on it only
-// within the solver tolerance). History that matters (the mass-conserving model's fill
-// fraction) is NOT kept here: the caller passes the previous fill fraction and the time step
-// and stores the result's fill fraction in its own State.
-//
-// Errors: std::invalid_argument for inputs of the wrong size or not finite (naming them: the
-// GapFields members gap_m, gapRate_mps, dGap_dPose (nodeCount x 3), squeezeBasis (nodeCount x
-// at least squeezeColumns), every SkirtSideInputs member, with the value and unit); a
-// film solve that does not converge (after the solver's own fallback) throws
-// std::runtime_error naming the side, the residual and the iterations, never returns NaN.
+/// @file
+/// Film and asperity contact on one skirt side for one force evaluation: the gap fields of a
+/// GapAssembly go in, the film (lubrication::FilmSolver), the asperity contact
+/// (contact_forces::AsperityContactLaw) and the boundary friction
+/// (contact_forces::BoundaryFriction) are evaluated on the side's grid, and the loads on the
+/// piston come out with their derivatives with respect to the pose and its rates.
+///
+/// Surfaces and velocities (FilmProblem.h, SurfacePair.h): the grid is attached to the skirt
+/// (surface 2); the liner (surface 1) moves with U relative to it. U along the film grid's
+/// axes: U_y (axial, +y) = -v_y of the piston; U_x (circumferential, along +e_phi = the film
+/// grid's +x) = minus the skirt's tangential velocity at the side's centre line.
+///
+/// Per node (k = i + nPhi j, SkirtSideGrid.h):
+/// ~~~
+///   film gap       h_f = (h + h_c + sqrt((h - h_c)^2 + h_c^2)) / 2 of the nominal gap h, a
+///                  smooth clamp >= h_c = max(clampFraction * sigma, minimumClampGap_m),
+///                  sigma = getCompositeSigma_m() (PatirChengFlowFactors.h: it changes the
+///                  film gap by < 1.2 % at h/sigma >= 0.5); the gap rate and the squeeze
+///                  basis are multiplied by dh_f/dh (lubrication::calcFlooredGap); with
+///                  faceValues = LinearGap the film also solves with FilmProblem::gapFloor_m
+///                  = h_c, so its faces follow the nominal gap through the clamp's knee at a
+///                  contact's rim
+///   film           lubrication::FilmSolver on SkirtSideGrid::getFilmGrid(), all four edges
+///                  open at edgePressure_Pa, the inlet supply film on both axial edges (it
+///                  matters only where the liner slides in), the flow-factor model of the
+///                  side (Patir & Cheng; smooth when sigma = 0)
+///   contact        p_c(h) of the asperity law on the NOMINAL gap (it carries the load where
+///                  the clamp holds the film open), its slope dp_c/dh; its loads are those
+///                  of the nodal interpolant except in cells whose smallest corner gap is
+///                  below 4.5 sigma, where p_c(h) is integrated at 6 x 6 Gauss points of the
+///                  gap interpolated bicubically from the 4 x 4 nearest nodes (a contact at an
+///                  edge is often narrower than a cell: the interpolant alone overestimated an
+///                  edge contact 4.8-fold at 64 x 48; and the bilinear gap of a barrel lies
+///                  above it between the nodes: 7 % of a mid-skirt contact's load)
+///   boundary shear tau_b = BoundaryFriction::calcShearStress_Pa(p_c, -U) on the skirt
+/// ~~~
+/// Tractions on the skirt: normal p = p_film + p_c (minus edgePressure_Pa, see below), axial
+/// tau_y = film shear on surface 2 along y - (p_film - edgePressure) s + tau_b,y, circumferential
+/// tau_phi = film shear on surface 2 along x + tau_b,x. s = GapFields::skirtGapSlope is the axial
+/// slope of the skirt surface's own gap terms (profile, thermal, elastic): the film pressure acts
+/// normal to the skirt surface r_s = R - h_s, whose normal has the axial component -dr_s/dy = s,
+/// so the pressure pushes the skirt along -s p per area. With it the film's force on the skirt
+/// is minus its force on the (straight) liner, and U . F of the film equals the power it
+/// dissipates, int [eta U^2 / h + h^3 |grad p|^2 / (12 eta)] dA for a smooth film (the
+/// tilt's part of that balance is the rotation of the loads into the bore frame, the element's).
+/// The circumferential slope of an oval skirt is left out, as the linear gap model leaves it out
+/// of the gap rate. Loads by SkirtSideGrid::calcLoadsOnPiston (exact for the bilinear fields),
+/// split into the hydrodynamic part (film pressure and film shear) and the asperity part
+/// (contact pressure, normal to the liner, and boundary shear).
+///
+/// Derivatives (for the implicit time stepper; pose order kLateral, kTilt, kTertiary):
+/// ~~~
+///   dLoads_dPoseRate  6 x 3: (force; moment) per unit pose rate, from the film's squeeze
+///                     derivatives (FilmResult::dPressure_dVelocity; exact for the final
+///                     cavitation set), pressure part only (the film shear's part is
+///                     ~h/L and h/(2R) of it); columns beyond
+///                     squeezeColumns are zero
+///   dLoads_dPose      6 x 3: the derivative of asperityLoads (contact pressure AND the
+///                     boundary shear it carries, for the fixed sliding velocity) from the
+///                     asperity law's exact slope, dp_c/dh * dh/dpose: of the nodal
+///                     interpolant plus the Gauss correction (above), i.e. exact for the
+///                     loads as computed while the set of Gauss-corrected cells stays. The
+///                     boundary shear is f g(|U|) p_c: its stiffness is all of dF_y and, with
+///                     the arm R against the pressure's y, ~R f / |y| (15..20 % on a skirt) of
+///                     the tilt moment's. The film's own stiffness (the change of the wedge
+///                     pressure with the pose) is NOT included: it is not stiff (the film is
+///                     overdamped: K/C is slow), LinearlyImplicitStepper.h explains why that
+///                     is enough.
+/// ~~~
+///
+/// Cost and state: one film solve per call (with squeezeColumns extra back-substitutions),
+/// one contact field, a few weighted sums. No allocation after the first call at a size. The
+/// object keeps the film solver's workspace and the last film state as the warm start of the
+/// next call (a mutable workspace in the sense of ForceElement.h: results depend on it only
+/// within the solver tolerance). History that matters (the mass-conserving model's fill
+/// fraction) is NOT kept here: the caller passes the previous fill fraction and the time step
+/// and stores the result's fill fraction in its own State.
+///
+/// Errors: std::invalid_argument for inputs of the wrong size or not finite (naming them: the
+/// GapFields members gap_m, gapRate_mps, dGap_dPose (nodeCount x 3), squeezeBasis (nodeCount x
+/// at least squeezeColumns), every SkirtSideInputs member, with the value and unit); a
+/// film solve that does not converge (after the solver's own fallback) throws
+/// std::runtime_error naming the side, the residual and the iterations, never returns NaN.
 
 #include <limits>
 #include <memory>

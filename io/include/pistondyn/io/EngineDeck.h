@@ -28,6 +28,8 @@ enum class Fidelity { Full, Preview };
 /// "full" / "preview".
 const char* getFidelityName(Fidelity fidelity);
 
+/// An engine deck read, overridden and checked (loadEngineDeck): the crank train, cylinder
+/// pressure, liner model and simulation settings in SI, with the record of what was read.
 struct EngineDeck {
   std::string deckPath;                ///< the deck file as given
   std::vector<std::string> overrides;  ///< the --set assignments applied, in order
@@ -48,12 +50,14 @@ struct EngineDeck {
   /// Crank angles [deg, in [0, 720)] of the last cycle at which a run writes the liner's
   /// nodal fields (liner.field_dumps.crank_angles_deg of the lubricated skirt); output rows.
   std::vector<double> fieldDumpAngles_deg;
+  /// The simulation section: start angle, initial pose, cycles, output step, integrator and
+  /// its tolerances (plugin::SimulationSettings), in SI.
   plugin::SimulationSettings simulation;
   /// What the deck was loaded for, and what the preview changed in words ("" when nothing:
   /// full, or a liner without a film grid). The preview's changes are also among
   /// `overrides` (as --set assignments after the user's) and `inputs`.
   Fidelity fidelity = Fidelity::Full;
-  std::string fidelityNote;
+  std::string fidelityNote;  ///< the preview's changes in words; "" when nothing changed
 };
 
 /// Reads, overrides and checks a deck; the liner model comes from `registry`. Throws

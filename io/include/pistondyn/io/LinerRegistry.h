@@ -90,8 +90,8 @@ struct LinerModelNeeds {
 using LinerElementMaker = std::function<std::unique_ptr<plugin::LinerElement>()>;
 /// A factory's result: the maker and what the model needs for it.
 struct LinerModel {
-  LinerElementMaker maker;
-  LinerModelNeeds needs;
+  LinerElementMaker maker;  ///< builds one element with the parameters the factory read
+  LinerModelNeeds needs;    ///< what the model and the run need for this element
 };
 /// Reads the liner section; problems go to the section (never thrown for bad input).
 using LinerFactory = std::function<LinerElementMaker(DeckSection& liner)>;

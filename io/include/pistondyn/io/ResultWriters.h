@@ -23,8 +23,9 @@ namespace pistondyn::io {
 std::string formatNumber(double value);
 
 /// `text` made fit for one '#' comment line of a result file: a control character (a newline
-/// in a deck's path, a tab, ...) written as a C escape (\n, \r, \t, \xNN) and a backslash
-/// as \\, so that the line ends where it should and the text can be read back exactly.
+/// in a deck's path, a tab, ...) written as a C escape (`\n`, `\r`, `\t`, `\xNN`) and a
+/// backslash as `\\`, so that the line ends where it should and the text can be read back
+/// exactly.
 std::string escapeForCommentLine(const std::string& text);
 
 /// '#'-prefixed comment lines (escapeForCommentLine), then a header of column names (with

@@ -85,7 +85,7 @@ SweepCaseResult runSweepCase(const SweepPlan& plan, const std::string& dir, int 
 /// what each evaluation of the design loop is (pistondyn::design: optimize, fit,
 /// propagate), so both run the same way on threads and MPI ranks.
 struct CaseInFolder {
-  std::string baseDeckPath;
+  std::string baseDeckPath;            ///< the deck the overrides apply to
   std::vector<std::string> overrides;  ///< --set assignments, in order
   std::string folder;                  ///< the run folder (cycle.csv, summary.json)
   /// Files the case's deck reads (a generated skirt profile table): written into the
@@ -93,7 +93,9 @@ struct CaseInFolder {
   std::vector<std::pair<std::string, std::string>> inputFiles;  ///< name, content
   /// The marker written (all-or-nothing) once the run and its summary.json are complete:
   /// what tells a resumed sweep or design loop that the case need not run again.
+  ///@{
   std::string markerName, markerText;
+  ///@}
 };
 /// Removes what an earlier, interrupted run left in the folder, writes the input files,
 /// loads the deck with the overrides (deck reading is serialised across threads), runs it
@@ -105,8 +107,8 @@ SweepCaseResult runCaseInFolder(const CaseInFolder& c,
 /// The text of sweep.csv for the results given (any order, at most one per case): '#'
 /// comment lines (program, sweep, conventions), a header, then one row per case in index
 /// order:
-///   case, <one column per swept key>, status, <every numeric or true/false key under
-///   summary.json's results, named after it>, wall_time_s, integrator_steps, message
+/// `case`, one column per swept key, `status`, every numeric or true/false key under
+/// summary.json's results (named after it), `wall_time_s`, `integrator_steps`, `message`.
 /// status is ok or failed; message is the failure (quoted). Numbers are copied as
 /// summary.json has them (shortest text reading back to the same double); a case that does
 /// not set a key or lacks a figure leaves its cell empty (never nan or inf). wall_time_s

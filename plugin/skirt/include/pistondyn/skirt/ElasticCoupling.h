@@ -161,7 +161,7 @@ using FilmPressureFunction =
 
 /// What one solve() did.
 struct ElasticCouplingReport {
-  bool converged = false;
+  bool converged = false;    ///< the residual met the tolerance (judgeResidual)
   int iterations = 0;        ///< film evaluations in this solve
   double residual_m = 0.0;   ///< max |residual| on the film grid, last iteration [m]
   double tolerance_m = 0.0;  ///< the tolerance it was compared with [m]
@@ -216,11 +216,13 @@ class ElasticCoupling {
   /// @throws std::invalid_argument when a skirt structural node would lie outside the liner's
   ///         heights, or without a liner.
   void setLinerPosition(double pinHeight_m);
+  /// Whether the coupling was built with a liner compliance (setLinerPosition() needed).
   bool hasLiner() const { return linerGrid_.has_value(); }
 
   /// Starting guess of the next solve: structural radial displacement [m] (one finite entry
   /// per structural node). A converged solve replaces it by its result.
   void setStart(const Eigen::Ref<const Eigen::VectorXd>& structuralDisplacement_m);
+  /// The starting guess of the next solve [m], one entry per structural node (setStart()).
   const Eigen::VectorXd& getStart() const { return start_m_; }
   /// Start the next solve from zero deformation (and a scheme's initial settings).
   virtual void resetWarmStart();
@@ -234,9 +236,13 @@ class ElasticCoupling {
   /// The film evaluation at the returned deformation.
   const FilmPressureEvaluation& film() const { return film_; }
 
+  /// The skirt's structural grid (the compliance's nodes), piston frame.
   const mapping::CylinderGrid& getStructuralGrid() const { return structural_; }
+  /// The parameters given to the constructor.
   const ElasticCouplingParameters& getParameters() const { return parameters_; }
+  /// Nodes of the structural grid (size of structuralDisplacement_m()).
   int structuralNodeCount() const { return structural_.nodeCount(); }
+  /// Nodes of the side's film grid (size of pistonElastic_m()).
   int filmNodeCount() const { return filmGrid_.nodeCount(); }
 
  protected:
@@ -278,22 +284,30 @@ class ElasticCoupling {
   /// The node sets S (move the film gap), F (take film forces) and the Hermite rows on S.
   void setUpNodeSets();
 
-  ElasticCouplingParameters parameters_;
+  ElasticCouplingParameters parameters_;  ///< as given, checked
+  ///@{
+  /// The side's film grid and the skirt's structural grid, as cylinder grids for mapping.
   mapping::CylinderGrid filmGrid_, structural_;
+  ///@}
   Eigen::MatrixXd compliance_m_per_N_;  ///< the skirt's, or with a liner the effective one
   Eigen::VectorXd gas_m_per_Pa_;        ///< empty without a gas field
-  mapping::ForceMap forceMap_;
+  mapping::ForceMap forceMap_;  ///< film nodal pressures -> structural nodal forces
+  /// Hermite interpolation of structural nodal values onto the film nodes (toFilmGrid()).
   mapping::HermiteSurface surface_;
-  mapping::HermiteGridWorkspace hermiteWs_;
+  mapping::HermiteGridWorkspace hermiteWs_;  ///< surface_'s workspace (no allocation per call)
   Eigen::VectorXd start_m_;  ///< warm start
 
   /// Iterates and scratch (sized once).
+  ///@{
   Eigen::VectorXd u_m_, force_N_, target_m_, residual_m_, residualFilm_m_, uFilm_m_;
-  Eigen::ArrayXd pistonElastic_m_;
-  FilmPressureEvaluation film_;
+  ///@}
+  Eigen::ArrayXd pistonElastic_m_;  ///< see pistonElastic_m()
+  FilmPressureEvaluation film_;     ///< see film()
 
   /// Node sets (setUpNodeSets(); Newton and Modal): S moves the film gap, F takes film forces.
+  ///@{
   Eigen::VectorXi nodesS_, nodesF_;
+  ///@}
   Eigen::SparseMatrix<double, Eigen::RowMajor> hermiteS_;  ///< film node x S
 
  private:

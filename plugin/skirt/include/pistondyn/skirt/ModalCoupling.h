@@ -47,9 +47,10 @@ class ModalCoupling final : public ElasticCoupling {
   void readFilm(const SkirtSideResults& side, const GapFields& gap, double compositeSigma_m,
                 FilmPressureEvaluation& out) const override;
 
+  /// The number of modes in use (columns of modalShapes()).
+  int modeCount() const { return static_cast<int>(modalShapes_.cols()); }
   /// The film-grid shape of each mode's structural displacement (film nodes x modes, +
   /// outward; the gap term changes by -Psi_j per unit w_j [m/m]).
-  int modeCount() const { return static_cast<int>(modalShapes_.cols()); }
   const Eigen::MatrixXd& modalShapes() const { return modalShapes_; }
   /// The modal coordinates of the last solve [m].
   const Eigen::VectorXd& modalCoordinates_m() const { return modal_m_; }

@@ -152,18 +152,18 @@ class LinerOilFilm {
   double calcRingFilm_m(double crankAngle_deg) const;
 
  private:
-  // Row index of the first free row above height H (may be rows_ when none) and the last
-  // free row below it (may be -1).
+  /// Row index of the first free row above height H (may be rows_ when none) and the last
+  /// free row below it (may be -1).
   int rowAbove(double height_m) const;
   int rowBelow(double height_m) const;
   bool covered(int m, double pinHeight_m) const;
   double cellCapacity_m3(int i, double film_m) const { return film_m * width_m_[i] * dY_; }
 
   LinerOilParameters parameters_;
-  double yBottom_, yTop_;   // the skirt's ends above the pin [m]
-  double y0_, dY_;          // first row's height, spacing [m]
+  double yBottom_, yTop_;   ///< the skirt's ends above the pin [m]
+  double y0_, dY_;          ///< first row's height, spacing [m]
   int rows_;
-  Eigen::ArrayXd width_m_;  // per column
+  Eigen::ArrayXd width_m_;  ///< per column
 };
 
 }  // namespace pistondyn::skirt

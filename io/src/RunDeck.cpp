@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "CycleMaps.h"
 #include "FieldDumps.h"
 #include "pistondyn/common/Validation.h"
 #include "pistondyn/io/ResultWriters.h"
@@ -206,6 +207,16 @@ RunOutcome runModel(const EngineDeck& deck, plugin::PistonAssemblyModel& model,
     dumps.emplace(*fields, deck.fieldDumpAngles_deg, deck.simulation.stepsPerCycle(),
                   makeCycleCsvComments(deck), *files);
     sinks.push_back(&*dumps);
+  }
+  // The maps of the liner's nodal fields over the last cycle (CycleMaps.h), staged likewise.
+  std::optional<detail::CycleMapSink> maps;
+  if (files) {
+    const plugin::LinerElement* liner =
+        static_cast<const plugin::PistonAssemblyModel&>(model).findLinerElement();
+    if (const plugin::NodalFieldSource* fields = liner ? liner->getNodalFields() : nullptr) {
+      maps.emplace(*fields, deck.simulation.stepsPerCycle(), makeCycleCsvComments(deck), *files);
+      sinks.push_back(&*maps);
+    }
   }
   sinks.insert(sinks.end(), extraSinks.begin(), extraSinks.end());
   sim.run(sinks, progress);

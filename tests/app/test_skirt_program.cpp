@@ -301,17 +301,19 @@ TEST_F(SkirtScratchDeck, AShortRunWritesEverySkirtFigure) {
   for (const auto& e : fs::directory_iterator(out))
     files.push_back(e.path().filename().string());
   std::sort(files.begin(), files.end());
-  EXPECT_EQ(files, (std::vector<std::string>{"cycle.csv", "field_dump_0deg_antithrust.csv",
-                                             "field_dump_0deg_thrust.csv",
-                                             "field_dump_380deg_antithrust.csv",
-                                             "field_dump_380deg_thrust.csv", "summary.json"}));
+  EXPECT_EQ(files, (std::vector<std::string>{
+                       "cycle.csv", "cycle_map_antithrust.csv", "cycle_map_thrust.csv",
+                       "field_dump_0deg_antithrust.csv", "field_dump_0deg_thrust.csv",
+                       "field_dump_380deg_antithrust.csv", "field_dump_380deg_thrust.csv",
+                       "field_frames_antithrust.csv", "field_frames_thrust.csv",
+                       "summary.json"}));
   const Csv dump = readCsv(out / "field_dump_380deg_antithrust.csv");
   EXPECT_EQ(dump.columns,
             (std::vector<std::string>{"phi_deg", "y_mm", "gap_um", "rigid_um", "skirt_profile_um",
                                       "liner_shape_um", "piston_thermal_um", "liner_thermal_um",
                                       "piston_elastic_um", "liner_elastic_um", "film_gap_um",
                                       "h_over_sigma", "film_pressure_Pa", "fill_fraction",
-                                      "contact_pressure_Pa"}));
+                                      "contact_pressure_Pa", "wear_depth_rate_um_per_h"}));
   ASSERT_EQ(dump.rows.size(), 16u * 12u);
   for (const auto& row : dump.rows) {
     for (double v : row)

@@ -234,7 +234,8 @@ class LubricatedSkirtElement final : public LinerElement, public NodalFieldSourc
     return integrals_.getValue(s, kSecondaryMotionWork);
   }
   // Its nodal fields (NodalFieldSource below): the gap with its seven terms, the film gap,
-  // h/sigma, film pressure, fill fraction and asperity pressure on both sides.
+  // h/sigma, film pressure, fill fraction, asperity pressure and the Archard wear depth rate on
+  // both sides.
   const NodalFieldSource* getNodalFields() const override { return this; }
   // Film solves, fallbacks, derivative failures and the time of the phases of both sides.
   std::optional<SolverCounters> getSolverCounters() const override { return counters_; }

@@ -86,6 +86,15 @@ const char* getCaseColour(std::size_t k) {
   return colours[k % (sizeof colours / sizeof colours[0])];
 }
 
+double chooseColourTop(std::vector<double>& positive, double largest) {
+  if (positive.empty())
+    return largest;
+  const std::size_t k = (positive.size() - 1) * 99 / 100;
+  std::nth_element(positive.begin(), positive.begin() + static_cast<std::ptrdiff_t>(k),
+                   positive.end());
+  return std::min(largest, positive[k]);
+}
+
 void writeTdcMarks(std::ostream& gp) {
   gp << "set xrange [0:720]\nset xtics 0,90,720 nomirror\nset mxtics 3\n"
         "set x2range [0:720]\n"

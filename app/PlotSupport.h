@@ -52,6 +52,11 @@ inline const char* const kPurple = "#9467bd";
 // Colour of curve k of a comparison (ten distinguishable colours, then again).
 const char* getCaseColour(std::size_t k);
 
+// The top of a colour scale for values whose largest is `largest`: that, unless a few peaks
+// would leave the rest of a map in one colour - then the 99th percentile of the positive
+// values (`positive`, reordered). The maps draw values above it in the top colour and say so.
+double chooseColourTop(std::vector<double>& positive, double largest);
+
 // The crank-angle x axis 0 ... 720 deg with firing TDC (0, 720) and gas-exchange TDC (360)
 // marked on the top axis and by dashed lines.
 void writeTdcMarks(std::ostream& gp);

@@ -372,18 +372,9 @@ struct MapPanelField {
   std::vector<double> positive;          // the values > 0, for the colour scale's top
 };
 
-// The top of a field's colour scale: its largest value, unless a few peaks would leave the rest
-// of the map in one colour: then the 99th percentile of its positive values (the peaks drawn
-// in the top colour, the title says so); at most the style's colourTop.
+// The top of a field's colour scale (chooseColourTop), at most the style's colourTop.
 double colourTop(MapPanelField& f) {
-  double top = f.hi;
-  if (!f.positive.empty()) {
-    const std::size_t k = (f.positive.size() - 1) * 99 / 100;
-    std::nth_element(f.positive.begin(), f.positive.begin() + static_cast<std::ptrdiff_t>(k),
-                     f.positive.end());
-    top = std::min(top, f.positive[k]);
-  }
-  return std::min(top, f.style.colourTop);
+  return std::min(chooseColourTop(f.positive, f.hi), f.style.colourTop);
 }
 
 // Reads the maps' files; per region a data file (angle, height, then one column per entry of

@@ -118,8 +118,10 @@ inline std::string findChromium() {
 
 // Renders the page headless and checks the DOM after its scripts ran: no error caught by
 // the page's error handler or printed on the console, the animation's script ran to its
-// end and wrote its status, and `images` images decoded with a width.
-inline void renderInChromium(const fs::path& page, int images) {
+// end and wrote its status, `images` images decoded with a width, and <body> carries each
+// of `bodyAttributes` (e.g. data-field-map="ready": the field map's script ran to its end).
+inline void renderInChromium(const fs::path& page, int images,
+                             const std::vector<std::string>& bodyAttributes = {}) {
   const std::string chromium = findChromium();
   if (chromium.empty())
     GTEST_SKIP() << "chromium is not installed (Debian: apt-get install chromium): the report "
@@ -147,6 +149,8 @@ inline void renderInChromium(const fs::path& page, int images) {
   EXPECT_NE(body.find("data-animation=\"ready\""), std::string::npos) << body;
   EXPECT_NE(body.find("data-images-shown=\"" + std::to_string(images) + "\""), std::string::npos)
       << body;
+  for (const std::string& attribute : bodyAttributes)
+    EXPECT_NE(body.find(attribute), std::string::npos) << attribute << "\n" << body;
   const std::string statusText = "<p id=\"animation-status\">crank angle ";
   const std::size_t at = dom.find(statusText);
   ASSERT_NE(at, std::string::npos) << "the script did not fill in the animation's status";

@@ -50,6 +50,8 @@ RegionFrames readFrames(const io::RegionFile& file) {
   r.frames_deg = distinct(t.getColumn("crank_angle_deg"));
   r.phi_deg = distinct(t.getColumn("phi_deg"));
   r.y_mm = distinct(t.getColumn("y_mm"));
+  if (t.rows.empty())
+    throw io::ResultFolderError(file.path + ": no frames (a header and no rows)");
   const std::size_t cells = r.phi_deg.size() * r.y_mm.size();
   if (t.rows.size() != r.frames_deg.size() * cells) {
     throw io::ResultFolderError(file.path + ": " + std::to_string(t.rows.size()) +
@@ -72,9 +74,12 @@ RegionFrames readFrames(const io::RegionFile& file) {
     for (std::size_t f = 0; f < columns.size(); ++f)
       r.values[f][k] = row[columns[f]];
   }
+  // Every cell filled (no node twice, none missing) and every value a number the colour
+  // scale can place.
   for (const auto& v : r.values) {
-    if (std::any_of(v.begin(), v.end(), [](double x) { return std::isnan(x); }))
-      throw io::ResultFolderError(file.path + ": a node is missing from a frame");
+    if (std::any_of(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }))
+      throw io::ResultFolderError(file.path +
+                                  ": a node is missing from a frame, or a value is not finite");
   }
   return r;
 }

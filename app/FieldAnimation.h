@@ -20,8 +20,10 @@ namespace pistondyn::app {
 //                "lo": 0, "top": 24.1, "peak": 652, "blues": false,
 //                "data": ["<base64 of region 0>", ...]}]}
 // "" when the folder has no field frames. Throws io::ResultFolderError naming the file when
-// a frame file's grid is not complete (every frame the same nodes) or the regions' frames
-// differ.
+// a frame file has no rows, its grid is not complete (every frame the same nodes, each
+// once), a value is not finite, or the regions' frames differ (io::DeckError from
+// io::readCsvTable for a file that is not a numeric CSV with crank_angle_deg, phi_deg and
+// y_mm).
 std::string makeFieldAnimationJson(const io::ResultFolder& folder);
 
 }  // namespace pistondyn::app

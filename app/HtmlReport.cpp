@@ -10,9 +10,9 @@
 #include <stdexcept>
 
 #include "DisplayUnits.h"
-#include "FieldAnimation.h"
 #include "ReportInputs.h"
 #include "ReportSummary.h"
+#include "SvgChart.h"
 #include "pistondyn/io/ResultWriters.h"
 #include "pistondyn/io/Version.h"
 
@@ -22,17 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
+  return escapeHtml(s);
 }
 
 std::string readBytes(const std::string& path) {
@@ -210,8 +200,7 @@ void animation(std::ostream& html, const io::ResultFolder& f) {
 // The animated map of the skirt's film: each side's skirt unwrapped, the fields of the
 // decimated frames (FieldAnimation.h) drawn by the page's script at the frame nearest the
 // piston animation's crank angle. Nothing when the run wrote no field frames.
-void fieldMap(std::ostream& html, const io::ResultFolder& f) {
-  const std::string json = makeFieldAnimationJson(f);
+void fieldMap(std::ostream& html, const io::ResultFolder& f, const std::string& json) {
   if (json.empty())
     return;
   html << "<h3>The skirt's film, following the animation</h3>\n"
@@ -426,7 +415,7 @@ double chooseExaggeration(double bore_m, double clearance_m) {
 }
 
 std::string makeHtmlReport(const io::ResultFolder& f, const std::vector<std::string>& pngPaths,
-                           const std::string& plotNote) {
+                           const std::string& plotNote, const std::string& fieldFramesJson) {
   std::ostringstream html;
   const std::string engine = f.getSummaryValue("inputs.engine.name");
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>pistondyn "
@@ -442,7 +431,7 @@ std::string makeHtmlReport(const io::ResultFolder& f, const std::vector<std::str
   headline(html, f);
   html << "<h2>Secondary motion in the bore</h2>\n";
   animation(html, f);
-  fieldMap(html, f);
+  fieldMap(html, f, fieldFramesJson);
   html << "<h2>Summary</h2>\n<p>" << escape(f.getSummaryValue("results.note"))
        << ", each in the unit an engine engineer reads it in and to the digits that mean "
           "something (summary.json holds every digit, in the units its keys name).</p>\n";

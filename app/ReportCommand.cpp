@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include "CommandSupport.h"
+#include "FieldAnimation.h"
 #include "Gnuplot.h"
 #include "HtmlReport.h"
 #include "Logging.h"
@@ -53,9 +54,11 @@ class ReportCommand final : public Subcommand {
         return refused;
     }
     io::ResultFolder folder;
+    std::string fieldFrames;
     try {
       folder = io::readResultFolder(dir_);
       checkResultPlotColumns(folder);
+      fieldFrames = makeFieldAnimationJson(folder);
     } catch (const std::exception& e) {
       std::cerr << "pistondyn: cannot write a report: " << e.what() << "\n";
       return kExitBadInput;
@@ -72,7 +75,7 @@ class ReportCommand final : public Subcommand {
     }
     try {
       common::throwIfCancelled();
-      io::writeFilesAtomically(dir_, {{"report.html", makeHtmlReport(folder, pngs, note)}});
+      io::writeFilesAtomically(dir_, {{"report.html", makeHtmlReport(folder, pngs, note, fieldFrames)}});
     } catch (const common::Cancelled&) {
       throw;
     } catch (const std::exception& e) {

@@ -209,6 +209,67 @@ TEST_F(ProgramPlots, ReportInputsTableNamesEachValuesSource) {
   EXPECT_NE(html.find("<pre id=\"deck\">"), std::string::npos);
 }
 
+// The report's animated map from a field_frames file written here (2 frames x 2 x 2 nodes,
+// rows in no particular order): each field in its display unit, quantised linearly from its
+// lowest value (0 .. 255) to the top of its colour scale, which is the largest value when
+// it occurs twice (the cycle maps' 99th-percentile rule keeps a repeated maximum); the
+// map's script runs in Chromium. A file with a node missing is refused: exit 1, the file
+// named, no report.
+TEST_F(ProgramPlots, ReportAnimatedMapHoldsTheFramesInDisplayUnits) {
+  const fs::path out = dir_ / "results";
+  ASSERT_EQ(program(runArgs(out) + " --quiet --no-plot"), 0) << err();
+  // film_pressure_Pa in MPa: frame 0 (y 0: 0, 1.6; y 5: 4, 1), frame 10 (y 0: 4, 3; y 5: 1,
+  // 0.5): no value on a half step of the 255 levels, where rounding would depend on the
+  // last bit of the conversion.
+  const std::string rows =
+      "10,10,5,0.5e6,1\n0,-10,0,0,1\n0,10,5,1e6,0.25\n10,-10,0,4e6,1\n0,10,0,1.6e6,0.5\n"
+      "10,10,0,3e6,1\n0,-10,5,4e6,1\n10,-10,5,1e6,0.75\n";
+  std::ofstream(out / "field_frames_thrust.csv")
+      << "crank_angle_deg,phi_deg,y_mm,film_pressure_Pa,fill_fraction\n" << rows;
+  ASSERT_EQ(program("report " + out.string()), 0) << err();
+  const std::string html = readFile(out / "report.html");
+  const std::string tag = "<script type=\"application/json\" id=\"field-frames\">";
+  const std::string json = between(html, tag, "</script>");
+  ASSERT_FALSE(json.empty());
+  const nlohmann::json d = nlohmann::json::parse(json.substr(tag.size()));
+  EXPECT_EQ(d["frames_deg"], nlohmann::json::parse("[0, 10]"));
+  ASSERT_EQ(d["regions"].size(), 1u);
+  EXPECT_EQ(d["regions"][0]["phi_deg"], nlohmann::json::parse("[-10, 10]"));
+  EXPECT_EQ(d["regions"][0]["y_mm"], nlohmann::json::parse("[0, 5]"));
+  ASSERT_EQ(d["fields"].size(), 2u);
+  const nlohmann::json& p = d["fields"][0];
+  EXPECT_EQ(p["name"], "film_pressure");
+  EXPECT_EQ(p["unit"], "MPa");
+  EXPECT_EQ(p["lo"], "0");
+  EXPECT_EQ(p["top"], "4.00");
+  // Frame-major, then height, then angle: the values above in MPa over 4 MPa x 255.
+  const std::vector<double> pressure_MPa = {0, 1.6, 4, 1, 4, 3, 1, 0.5};
+  const std::string bytes = decodeBase64(p["data"][0].get<std::string>());
+  ASSERT_EQ(bytes.size(), pressure_MPa.size());
+  for (std::size_t k = 0; k < bytes.size(); ++k)
+    EXPECT_EQ(static_cast<unsigned char>(bytes[k]), std::lround(255.0 * pressure_MPa[k] / 4.0)) << k;
+  const nlohmann::json& fill = d["fields"][1];
+  EXPECT_EQ(fill["name"], "fill_fraction");
+  EXPECT_EQ(fill["blues"], true);
+  EXPECT_EQ(fill["lo"], "0.250");
+  const std::string fillBytes = decodeBase64(fill["data"][0].get<std::string>());
+  ASSERT_EQ(fillBytes.size(), 8u);
+  EXPECT_EQ(static_cast<unsigned char>(fillBytes[0]), 255);  // 1 at the top of 0.25 .. 1
+  EXPECT_EQ(static_cast<unsigned char>(fillBytes[1]), 85);   // 0.5: 1/3 of 255
+  EXPECT_EQ(static_cast<unsigned char>(fillBytes[3]), 0);    // 0.25 at the bottom
+  EXPECT_EQ(static_cast<unsigned char>(fillBytes[6]), 170);  // 0.75: 2/3 of 255
+  renderInChromium(out / "report.html", 2, {"data-field-map=\"ready\""});
+
+  // A node missing from the last frame: refused before anything is written.
+  fs::remove(out / "report.html");
+  std::ofstream(out / "field_frames_thrust.csv")
+      << "crank_angle_deg,phi_deg,y_mm,film_pressure_Pa,fill_fraction\n"
+      << rows.substr(0, rows.rfind('\n', rows.size() - 2) + 1);
+  EXPECT_EQ(program("report " + out.string()), 1);
+  EXPECT_NE(err().find("field_frames_thrust.csv"), std::string::npos) << err();
+  EXPECT_FALSE(fs::exists(out / "report.html"));
+}
+
 // The progress line: on a terminal (a pseudo-terminal from script(1)) a line with the
 // cycle, crank angle and time left, rewritten with carriage returns; off a terminal no
 // carriage return at all; --quiet: none.

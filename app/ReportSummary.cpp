@@ -97,6 +97,8 @@ std::vector<HeadlineItem> makeHeadline(const io::ResultFolder& f) {
   add("hot clearance", "hot_clearance_um", "radial running clearance at the profile's zero drop");
   add("peak cylinder pressure", "peak_cylinder_pressure_Pa", "",
       "peak_cylinder_pressure_angle_deg");
+  add("largest side force on the liner", "side_force_max_N",
+      "film and contact force towards the thrust side", "side_force_max_angle_deg");
   items.push_back(describeConvergence(f));
   return items;
 }

@@ -21,8 +21,8 @@ struct HeadlineItem {
 // The headline of a run, in this order, each item only when summary.json has its figure:
 // fmep, imep, mean friction power, asperity share of the friction work, minimum h/σ and
 // minimum film thickness per side (with their crank angles), largest slap energy, max |tilt|,
-// max |lateral displacement|, hot running clearance, peak cylinder pressure (with its crank
-// angle), and always whether the run converged to a periodic cycle and after how many cycles
+// max |lateral displacement|, hot running clearance, peak cylinder pressure and largest side
+// force on the liner (with their crank angles), and always whether the run converged to a periodic cycle and after how many cycles
 // ("not converged" when cycles_to_converge is null or absent).
 std::vector<HeadlineItem> makeHeadline(const io::ResultFolder& folder);
 

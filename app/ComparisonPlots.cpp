@@ -37,28 +37,31 @@ struct ComparedFigure {
 std::vector<ComparedFigure> describeFigures() {
   const std::vector<std::pair<double, std::string>> regimes = {
       {1.0, "h/σ = 1 and 3 (regime limits)"}, {3.0, ""}};
+  const std::string film = axisUnit("min_film_thickness_thrust_um");
+  const std::string ratio = axisUnit("min_h_over_sigma_thrust");
   return {
       {"comparison_side_force",
        "Side force on the liner (+ thrust)",
-       {{"side_force", "side force", "N", {}}},
+       {{"side_force", "side force", axisUnit("side_force_N"), {}}},
        ""},
       {"comparison_secondary_motion",
        "Secondary motion (+ towards thrust; tilt > 0: crown towards thrust)",
-       {{"u_lat", "lateral displacement at the pin axis", "um", {}}, {"tilt", "tilt", "mrad", {}}},
+       {{"u_lat", "lateral displacement at the pin axis", axisUnit("u_lat_um"), {}},
+        {"tilt", "tilt", axisUnit("tilt_mrad"), {}}},
        "u_lat_skirt_top"},
       {"comparison_friction_power",
        "Skirt friction power",
-       {{"friction_power", "friction power", "W", {}}},
+       {{"friction_power", "friction power", axisUnit("friction_power_W"), {}}},
        ""},
       {"comparison_film_thickness",
        "Minimum film thickness",
-       {{"min_film_thickness_thrust", "minimum film, thrust side", "um", {{0.0, ""}}},
-        {"min_film_thickness_antithrust", "minimum film, anti-thrust side", "um", {{0.0, ""}}}},
+       {{"min_film_thickness_thrust", "minimum film, thrust side", film, {{0.0, ""}}},
+        {"min_film_thickness_antithrust", "minimum film, anti-thrust side", film, {{0.0, ""}}}},
        ""},
       {"comparison_h_over_sigma",
        "Minimum h/σ",
-       {{"min_h_over_sigma_thrust", "minimum h/σ, thrust side", "", regimes},
-        {"min_h_over_sigma_antithrust", "minimum h/σ, anti-thrust side", "", regimes}},
+       {{"min_h_over_sigma_thrust", "minimum h/σ, thrust side", ratio, regimes},
+        {"min_h_over_sigma_antithrust", "minimum h/σ, anti-thrust side", ratio, regimes}},
        ""},
   };
 }

@@ -9,6 +9,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "DisplayUnits.h"
+#include "ReportInputs.h"
+#include "ReportSummary.h"
+#include "SvgChart.h"
 #include "pistondyn/io/ResultWriters.h"
 #include "pistondyn/io/Version.h"
 
@@ -18,17 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
+  return escapeHtml(s);
 }
 
 std::string readBytes(const std::string& path) {
@@ -40,52 +34,71 @@ std::string readBytes(const std::string& path) {
   return ss.str();
 }
 
-std::string prettyUnit(const std::string& u) {
-  static const std::pair<const char*, const char*> names[] = {
-      {"um", "µm"},       {"Nm", "N·m"},          {"deg", "°"},        {"mps", "m/s"},
-      {"mps2", "m/s²"},   {"m_per_s2", "m/s²"},   {"rad_per_s", "rad/s"}, {"kg_m2", "kg·m²"},
-      {"m3", "m³"},       {"m2", "m²"},           {"mm3", "mm³"},      {"mm3ph", "mm³/h"},
-      {"degC", "°C"},     {"Pas", "Pa·s"},        {"per_K", "1/K"},    {"kg_per_m3", "kg/m³"}};
-  for (const auto& [a, b] : names) {
-    if (u == a)
-      return b;
-  }
-  return u.empty() ? "–" : u;
-}
-
-// "results.min_film_thickness_thrust_um" -> ("min film thickness thrust", "µm").
-std::pair<std::string, std::string> describeKey(const std::string& key, const std::string& prefix) {
-  std::string name = key.substr(prefix.size());
-  const std::string last = name.substr(name.rfind('.') == std::string::npos ? 0 : name.rfind('.') + 1);
-  const std::string unit = io::getColumnUnit(last);
-  if (!unit.empty())
-    name.erase(name.size() - unit.size() - 1);
-  std::replace(name.begin(), name.end(), '_', ' ');
-  return {name, prettyUnit(unit)};
-}
-
-// Numbers to 6 significant digits for reading (summary.json keeps every digit).
-std::string displayValue(const std::string& v) {
-  char* end = nullptr;
-  const double x = std::strtod(v.c_str(), &end);
-  if (v.empty() || end != v.c_str() + v.size() || !std::isfinite(x))
-    return v;
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", x);
-  return text;
-}
-
-void summaryTable(std::ostream& html, const io::ResultFolder& f, const std::string& prefix,
-                  const std::vector<std::string>& skip) {
-  html << "<table class=\"summary\"><thead><tr><th>quantity</th><th>value</th><th>unit</th>"
-          "</tr></thead><tbody>\n";
+// The results table: every figure of summary.json's `results` in its display unit.
+void summaryTable(std::ostream& html, const io::ResultFolder& f) {
+  html << "<table class=\"summary\" id=\"summary\"><thead><tr><th>quantity</th><th>value</th>"
+          "<th>unit</th></tr></thead><tbody>\n";
+  const std::string prefix = "results.";
   for (const auto& e : f.summary) {
-    if (e.key.rfind(prefix, 0) != 0 ||
-        std::find(skip.begin(), skip.end(), e.key) != skip.end())
+    if (e.key.rfind(prefix, 0) != 0 || e.key == "results.note")
       continue;
-    const auto [name, unit] = describeKey(e.key, prefix);
-    html << "<tr><td>" << escape(name) << "</td><td class=\"num\">" << escape(displayValue(e.value))
-         << "</td><td>" << escape(unit) << "</td></tr>\n";
+    const std::string key = e.key.substr(prefix.size());
+    const bool number = e.value != "null" && e.value != "true" && e.value != "false";
+    html << "<tr><td>" << escape(units::describeName(key)) << "</td><td class=\"num\">"
+         << escape(formatSummaryValue(key, e.value)) << "</td><td>"
+         << escape(number ? units::getDisplayUnitText(key) : "") << "</td></tr>\n";
+  }
+  html << "</tbody></table>\n";
+}
+
+// The headline: the figures a run is judged by, each with what it is.
+void headline(std::ostream& html, const io::ResultFolder& f) {
+  html << "<section id=\"headline\"><h2>Headline</h2>\n<table class=\"headline\"><tbody>\n";
+  for (const HeadlineItem& item : makeHeadline(f)) {
+    html << "<tr><th>" << escape(item.label) << "</th><td class=\"num\">" << escape(item.value)
+         << "</td><td class=\"note\">" << escape(item.note) << "</td></tr>\n";
+  }
+  html << "</tbody></table></section>\n";
+}
+
+// The comment block a deck opens with (its title and the legend of its source marks).
+std::string getLeadingComment(const std::string& deckText) {
+  std::istringstream in(deckText);
+  std::string line, block;
+  while (std::getline(in, line) && !line.empty() && line.front() == '#')
+    block += line + "\n";
+  return block;
+}
+
+// The inputs: a row per input in its deck unit with its source (the deck's marks), then the
+// deck's text.
+void inputsTable(std::ostream& html, const io::ResultFolder& f, const std::string& deckText) {
+  const std::vector<InputRow> rows = makeInputRows(f.summaryJson, deckText);
+  std::size_t estimated = 0;
+  for (const InputRow& r : rows)
+    estimated += r.estimated;
+  html << "<p>" << rows.size() << " inputs, " << estimated
+       << " of them marked EST in the deck (engineering estimates: replace them with your "
+          "engine's data). Source: the marks of the deck's comment on the key's line (the "
+          "deck's legend below), <em>deck</em> for a value the deck sets without a mark, "
+          "<code>--set</code> for an override, <em>default</em> for a "
+          "key the deck leaves out, <em>derived</em> for a figure the program computed from "
+          "the inputs.</p>\n";
+  const std::string legend = getLeadingComment(deckText);
+  if (!legend.empty())
+    html << "<pre class=\"legend\">" << escape(legend) << "</pre>\n";
+  html       << "<table class=\"summary inputs\" id=\"inputs\"><thead><tr><th>key</th><th>value</th>"
+          "<th>unit</th><th>source</th><th>note</th></tr></thead><tbody>\n";
+  std::string section;
+  for (const InputRow& r : rows) {
+    if (r.section != section) {
+      section = r.section;
+      html << "<tr class=\"section\"><th colspan=\"5\">" << escape(section) << "</th></tr>\n";
+    }
+    html << "<tr" << (r.estimated ? " class=\"est\"" : "") << "><td><code>" << escape(r.key)
+         << "</code></td><td class=\"num\">" << escape(r.value) << "</td><td>"
+         << escape(r.unit) << "</td><td>" << escape(r.source) << "</td><td class=\"note\">"
+         << escape(r.note) << "</td></tr>\n";
   }
   html << "</tbody></table>\n";
 }
@@ -184,6 +197,26 @@ void animation(std::ostream& html, const io::ResultFolder& f) {
        << "],\"u_lat_um\":[" << u.str() << "],\"tilt_mrad\":[" << tilt.str() << "]}</script>\n";
 }
 
+// The animated map of the skirt's film: each side's skirt unwrapped, the fields of the
+// decimated frames (FieldAnimation.h) drawn by the page's script at the frame nearest the
+// piston animation's crank angle. Nothing when the run wrote no field frames.
+void fieldMap(std::ostream& html, const io::ResultFolder& f, const std::string& json) {
+  if (json.empty())
+    return;
+  html << "<h3>The skirt's film, following the animation</h3>\n"
+          "<p>Each side of the skirt unwrapped as seen from the liner: the angle around the "
+          "bore across (thrust side centred on 0°, anti-thrust on 180°), the height on the skirt "
+          "up; a cell per node of a decimated grid, a frame every 10° of crank angle of the last "
+          "cycle - the frame nearest the crank angle of the animation above. One colour scale "
+          "per field for both sides; values above its top are drawn in the top colour.</p>\n"
+          "<p><label>field <select id=\"field-map-field\"></select></label> "
+          "<span id=\"field-map-status\"></span></p>\n"
+          "<div class=\"fieldmap\" id=\"field-map\" data-bore-mm=\""
+       << io::formatNumber(1e3 * summaryNumber(f, "inputs.geometry.bore_m", 0.08))
+       << "\"></div>\n"
+       << "<script type=\"application/json\" id=\"field-frames\">" << json << "</script>\n";
+}
+
 const char* kStyle = R"(body{font-family:sans-serif;max-width:1250px;margin:1em auto;padding:0 1em;color:#222}
 table.summary{border-collapse:collapse;margin:0.5em 0}
 table.summary td,table.summary th{border:1px solid #ccc;padding:2px 8px;text-align:left}
@@ -191,11 +224,121 @@ td.num{font-family:monospace;text-align:right}
 figure{margin:1em 0}figure img{max-width:100%;border:1px solid #ddd}
 pre{background:#f6f6f6;padding:0.6em;overflow:auto;font-size:90%}
 .anim{display:flex;gap:1.5em;align-items:flex-start}
-#animation-status{font-family:monospace;min-width:32em})";
+#animation-status{font-family:monospace;min-width:32em}
+table.headline{border-collapse:collapse;margin:0.5em 0;font-size:105%}
+table.headline th{text-align:left;padding:3px 12px 3px 0;font-weight:normal}
+table.headline td.num{font-weight:bold;text-align:left;padding:3px 12px}
+td.note{color:#555;font-size:90%}
+tr.est td{background:#fff4d6}tr.section th{background:#eef2f7;text-align:left}
+pre.legend{font-size:85%}
+.fieldmap{display:flex;gap:1.5em;align-items:flex-end;flex-wrap:wrap}
+.fieldmap figure{margin:0}.fieldmap canvas{border:1px solid #999}
+#field-map-status{font-family:monospace})";
 
 const char* kScript = R"(window.addEventListener('error', function (e) {
   document.body.setAttribute('data-js-error', String(e.message));
 });
+// The animated field map: window.pistondynShowFieldFrame(angle) draws the frame nearest a
+// crank angle (the motion's loop below calls it).
+(function () {
+  var node = document.getElementById('field-frames');
+  if (!node) { return; }
+  var d = JSON.parse(node.textContent);
+  var box = document.getElementById('field-map');
+  var select = document.getElementById('field-map-field');
+  var status = document.getElementById('field-map-status');
+  var bore = Number(box.getAttribute('data-bore-mm'));
+  function decode(s) {
+    var b = atob(s), a = new Uint8Array(b.length);
+    for (var i = 0; i < b.length; ++i) { a[i] = b.charCodeAt(i); }
+    return a;
+  }
+  var bytes = d.fields.map(function (f) { return f.data.map(decode); });
+  function palette(stops) {
+    var p = [];
+    for (var k = 0; k < 256; ++k) {
+      var t = k / 255 * (stops.length - 1), i = Math.min(Math.floor(t), stops.length - 2), u = t - i;
+      p.push('rgb(' + [0, 1, 2].map(function (j) {
+        return Math.round(stops[i][j] + u * (stops[i + 1][j] - stops[i][j]));
+      }).join(',') + ')');
+    }
+    return p;
+  }
+  // The colours of the cycle maps (cycle_maps.png): magma, blues for the fill fraction.
+  var magma = palette([[0, 0, 4], [59, 15, 112], [140, 41, 129], [222, 73, 104], [254, 159, 109], [252, 253, 191]]);
+  var blues = palette([[255, 255, 255], [198, 219, 239], [107, 174, 214], [8, 81, 156]]);
+  // A cell per node reaching halfway to its neighbours, in pixels of a physical scale.
+  function edges(v) {
+    var e = [v[0]];
+    for (var i = 1; i < v.length; ++i) { e.push((v[i - 1] + v[i]) / 2); }
+    e.push(v[v.length - 1]);
+    return e;
+  }
+  var maps = d.regions.map(function (g) {
+    var arc = (g.phi_deg[g.phi_deg.length - 1] - g.phi_deg[0]) * Math.PI / 180 * bore / 2;
+    var height = g.y_mm[g.y_mm.length - 1] - g.y_mm[0];
+    var scale = 260 / Math.max(arc, height, 1e-9);
+    var fig = document.createElement('figure');
+    var c = document.createElement('canvas');
+    c.width = Math.max(20, Math.round(arc * scale));
+    c.height = Math.max(20, Math.round(height * scale));
+    c.className = 'field-map';
+    var cap = document.createElement('figcaption');
+    cap.textContent = g.title + ': φ ' + g.phi_deg[0] + '…' + g.phi_deg[g.phi_deg.length - 1] +
+        '°, y ' + g.y_mm[0] + '…' + g.y_mm[g.y_mm.length - 1] + ' mm';
+    fig.appendChild(c); fig.appendChild(cap); box.appendChild(fig);
+    var ex = edges(g.phi_deg), ey = edges(g.y_mm);
+    function px(v, e, n) { return (v - e[0]) / Math.max(e[e.length - 1] - e[0], 1e-12) * n; }
+    return {c: c, nx: g.phi_deg.length, ny: g.y_mm.length,
+            x: ex.map(function (v) { return px(v, ex, c.width); }),
+            y: ey.map(function (v) { return c.height - px(v, ey, c.height); })};
+  });
+  var bar = document.createElement('figure');
+  var bc = document.createElement('canvas');
+  bc.width = 18; bc.height = 200; bc.className = 'field-map-bar';
+  var bt = document.createElement('figcaption');
+  bar.appendChild(bc); bar.appendChild(bt); box.appendChild(bar);
+  d.fields.forEach(function (f, k) {
+    var o = document.createElement('option');
+    o.value = String(k); o.textContent = f.label + (f.unit ? ' [' + f.unit + ']' : '');
+    select.appendChild(o);
+  });
+  var field = 0, frame = 0, angle = d.frames_deg[0];
+  function draw() {
+    var f = d.fields[field], pal = f.blues ? blues : magma;
+    maps.forEach(function (m, r) {
+      var ctx = m.c.getContext('2d'), data = bytes[field][r], n = m.nx * m.ny;
+      ctx.fillStyle = '#fff'; ctx.fillRect(0, 0, m.c.width, m.c.height);
+      if (data.length < (frame + 1) * n) { return; }  // this side has no such field
+      for (var j = 0; j < m.ny; ++j) {
+        for (var i = 0; i < m.nx; ++i) {
+          ctx.fillStyle = pal[data[frame * n + j * m.nx + i]];
+          ctx.fillRect(m.x[i], m.y[j + 1], m.x[i + 1] - m.x[i] + 0.5, m.y[j] - m.y[j + 1] + 0.5);
+        }
+      }
+    });
+    var b = bc.getContext('2d');
+    for (var k = 0; k < 256; ++k) {
+      b.fillStyle = pal[k];
+      b.fillRect(0, bc.height * (1 - (k + 1) / 256), bc.width, bc.height / 256 + 1);
+    }
+    bt.textContent = f.lo + ' … ' + f.top + ' ' + f.unit + ' (bottom to top)' +
+        (f.peak !== f.top ? ' (peak ' + f.peak + ')' : '');
+    status.textContent = 'crank angle ' + angle.toFixed(1) + ' deg: frame of ' +
+        d.frames_deg[frame].toFixed(0) + ' deg';
+  }
+  select.addEventListener('change', function () { field = Number(select.value); draw(); });
+  window.pistondynShowFieldFrame = function (a) {
+    var best = 0, bestGap = Infinity;
+    for (var k = 0; k < d.frames_deg.length; ++k) {
+      var t = ((a - d.frames_deg[k]) % 720 + 720) % 720, gap = Math.min(t, 720 - t);
+      if (gap < bestGap) { bestGap = gap; best = k; }  // nearest over the periodic cycle
+    }
+    angle = a; frame = best; draw();
+  };
+  window.pistondynShowFieldFrame(d.frames_deg[0]);
+  document.body.setAttribute('data-field-map', 'ready');
+})();
 (function () {
   var node = document.getElementById('motion-data');
   if (!node) { return; }
@@ -213,6 +356,7 @@ const char* kScript = R"(window.addEventListener('error', function (e) {
     status.textContent = 'crank angle ' + d.angle_deg[k].toFixed(1) + ' deg   u_lat ' +
         d.u_lat_um[k].toFixed(2) + ' um   tilt ' + d.tilt_mrad[k].toFixed(3) + ' mrad';
     slider.value = String(k);
+    if (window.pistondynShowFieldFrame) { window.pistondynShowFieldFrame(d.angle_deg[k]); }
   }
   slider.max = String(n - 1);
   slider.addEventListener('input', function () {
@@ -271,7 +415,7 @@ double chooseExaggeration(double bore_m, double clearance_m) {
 }
 
 std::string makeHtmlReport(const io::ResultFolder& f, const std::vector<std::string>& pngPaths,
-                           const std::string& plotNote) {
+                           const std::string& plotNote, const std::string& fieldFramesJson) {
   std::ostringstream html;
   const std::string engine = f.getSummaryValue("inputs.engine.name");
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>pistondyn "
@@ -284,11 +428,14 @@ std::string makeHtmlReport(const io::ResultFolder& f, const std::vector<std::str
        << escape(io::getVersion()) << "). "
        << escape(f.getSummaryValue("crank_angle_convention")) << "; "
        << escape(f.getSummaryValue("frame_convention")) << ".</p>\n";
-  html << "<h2>Summary</h2>\n<p>" << escape(f.getSummaryValue("results.note"))
-       << " (6 significant digits; summary.json holds every digit).</p>\n";
-  summaryTable(html, f, "results.", {"results.note"});
+  headline(html, f);
   html << "<h2>Secondary motion in the bore</h2>\n";
   animation(html, f);
+  fieldMap(html, f, fieldFramesJson);
+  html << "<h2>Summary</h2>\n<p>" << escape(f.getSummaryValue("results.note"))
+       << ", each in the unit an engine engineer reads it in and to the digits that mean "
+          "something (summary.json holds every digit, in the units its keys name).</p>\n";
+  summaryTable(html, f);
   html << "<h2>Plots</h2>\n";
   if (pngPaths.empty())
     html << "<p class=\"noplots\">" << escape(plotNote) << "</p>\n";
@@ -301,17 +448,21 @@ std::string makeHtmlReport(const io::ResultFolder& f, const std::vector<std::str
   html << "<h2>Inputs</h2>\n";
   const std::string deck = f.getSummaryValue("deck_file");
   std::error_code ec;
-  if (!deck.empty() && fs::is_regular_file(deck, ec)) {
-    html << "<h3>Deck <code>" << escape(deck) << "</code></h3>\n<pre id=\"deck\">"
-         << escape(readBytes(deck)) << "</pre>\n";
-  } else {
+  const bool deckReadable = !deck.empty() && fs::is_regular_file(deck, ec);
+  const std::string deckText = deckReadable ? readBytes(deck) : "";
+  if (!deckReadable) {
     html << "<p>The deck file <code>" << escape(deck)
-         << "</code> is not readable from here; the resolved inputs follow.</p>\n";
+         << "</code> is not readable from here: the inputs follow without their sources.</p>\n";
   }
   const std::string overrides = f.getSummaryValue("overrides");
   html << "<p>Overrides (--set): <code>" << escape(overrides.empty() ? "[]" : overrides)
-       << "</code></p>\n<h3>Resolved inputs (SI, from summary.json)</h3>\n";
-  summaryTable(html, f, "inputs.", {});
+       << "</code></p>\n";
+  inputsTable(html, f, deckText);
+  if (deckReadable) {
+    html << "<details><summary>The deck <code>" << escape(deck)
+         << "</code> as written</summary>\n<pre id=\"deck\">" << escape(deckText)
+         << "</pre></details>\n";
+  }
   html << "<script>" << kScript << "</script>\n</body></html>\n";
   return html.str();
 }

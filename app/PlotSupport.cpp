@@ -8,6 +8,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "DisplayUnits.h"
 #include "Gnuplot.h"
 #include "pistondyn/io/ResultFolder.h"
 #include "pistondyn/io/ResultWriters.h"
@@ -16,20 +17,6 @@ namespace pistondyn::app::plot {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct UnitInfo {
-  const char* unit;
-  const char* quantity;
-  double toSI;
-};
-const UnitInfo kUnits[] = {
-    {"N", "force", 1.0},      {"kN", "force", 1e3},     {"Nm", "moment", 1.0},
-    {"m", "length", 1.0},     {"mm", "length", 1e-3},   {"um", "length", 1e-6},
-    {"rad", "angle", 1.0},    {"mrad", "angle", 1e-3},  {"deg", "angle", M_PI / 180.0},
-    {"Pa", "pressure", 1.0},  {"kPa", "pressure", 1e3}, {"MPa", "pressure", 1e6},
-    {"bar", "pressure", 1e5}, {"W", "power", 1.0},      {"kW", "power", 1e3},
-    {"J", "energy", 1.0},     {"mJ", "energy", 1e-3},   {"", "dimensionless", 1.0},
-};
 
 // The written unit if column `c` is output `name` in some unit ("" for no unit).
 std::optional<std::string> unitOfOutput(const std::string& c, const std::string& name) {
@@ -43,28 +30,15 @@ std::optional<std::string> unitOfOutput(const std::string& c, const std::string&
 }  // namespace
 
 std::optional<double> conversionFactor(const std::string& from, const std::string& to) {
-  const UnitInfo *a = nullptr, *b = nullptr;
-  for (const auto& u : kUnits) {
-    if (from == u.unit)
-      a = &u;
-    if (to == u.unit)
-      b = &u;
-  }
-  if (a == nullptr || b == nullptr || std::string(a->quantity) != b->quantity)
-    return std::nullopt;
-  return a->toSI / b->toSI;
+  return units::conversionFactor(from, to);
 }
 
 std::string displayUnit(const std::string& unit) {
-  if (unit == "um")
-    return "µm";
-  if (unit == "Nm")
-    return "N·m";
-  if (unit == "deg")
-    return "°";
-  if (unit.empty())
-    return "–";
-  return unit;
+  return unit.empty() ? "–" : units::getUnitText(unit);
+}
+
+std::string axisUnit(const std::string& name) {
+  return units::getDisplayFormat(name).unit;
 }
 
 std::optional<Column> findOutput(const io::CsvTable& t, const std::string& name,
@@ -110,6 +84,15 @@ const char* getCaseColour(std::size_t k) {
   static const char* const colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
                                         "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
   return colours[k % (sizeof colours / sizeof colours[0])];
+}
+
+double chooseColourTop(std::vector<double>& positive, double largest) {
+  if (positive.empty())
+    return largest;
+  const std::size_t k = (positive.size() - 1) * 99 / 100;
+  std::nth_element(positive.begin(), positive.begin() + static_cast<std::ptrdiff_t>(k),
+                   positive.end());
+  return std::min(largest, positive[k]);
 }
 
 void writeTdcMarks(std::ostream& gp) {

@@ -17,10 +17,15 @@
 namespace pistondyn::app::plot {
 
 // The factor from a column's unit to an axis' unit of the same quantity ("um" -> "mm":
-// 1e-3); nullopt if either is unknown or they measure different quantities.
+// 1e-3); nullopt if either is unknown or they measure different quantities
+// (units::conversionFactor, DisplayUnits.h).
 std::optional<double> conversionFactor(const std::string& from, const std::string& to);
 // How an axis label writes a unit ("um" -> "µm", "" -> "–").
 std::string displayUnit(const std::string& unit);
+// The unit an axis shows the named quantity in (DisplayUnits.h: "gas_force_N" -> "kN",
+// "film_pressure_Pa" -> "MPa", "u_lat_um" -> "um"): every figure shows a quantity in the unit
+// the report's tables use.
+std::string axisUnit(const std::string& name);
 
 // The column of output `name` in whatever unit it was written ("side_force" finds
 // side_force_N), with the factor to `unit`; nullopt if absent or not convertible (the
@@ -46,6 +51,11 @@ inline const char* const kRed = "#d62728";
 inline const char* const kPurple = "#9467bd";
 // Colour of curve k of a comparison (ten distinguishable colours, then again).
 const char* getCaseColour(std::size_t k);
+
+// The top of a colour scale for values whose largest is `largest`: that, unless a few peaks
+// would leave the rest of a map in one colour - then the 99th percentile of the positive
+// values (`positive`, reordered). The maps draw values above it in the top colour and say so.
+double chooseColourTop(std::vector<double>& positive, double largest);
 
 // The crank-angle x axis 0 ... 720 deg with firing TDC (0, 720) and gas-exchange TDC (360)
 // marked on the top axis and by dashed lines.

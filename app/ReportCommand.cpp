@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include "CommandSupport.h"
+#include "FieldAnimation.h"
 #include "Gnuplot.h"
 #include "HtmlReport.h"
 #include "Logging.h"
@@ -32,11 +33,14 @@ class ReportCommand final : public Subcommand {
     app_->footer(
         "report.html needs no network: images are embedded (base64), style and script inline.\n"
         "It (re)draws DIR/plots/ first (as pistondyn plot); without gnuplot the page says so\n"
-        "and has no figures. The summary table gives every figure of summary.json with its\n"
-        "unit; the inputs are the deck's text (deck_file of summary.json, an absolute path)\n"
-        "and the resolved inputs in SI. The animation draws the\n"
-        "piston over the last cycle, lateral motion, clearance and tilt exaggerated by the\n"
-        "factor the page states. Exit codes: 0 ok; 1 DIR is not a result folder; 2 bad\n"
+        "and has no figures. A headline (fmep, friction power, asperity share, min h/sigma\n"
+        "per side, slap, tilt, clearance, convergence) opens it; the summary table gives\n"
+        "every figure of summary.json in engineering units (bar, kPa, mm, um, mrad, mJ).\n"
+        "The inputs are a table in the deck's units with each value's source (the marks of\n"
+        "the deck's comments: EST, [T], ...; --set; default) and the deck's text (deck_file\n"
+        "of summary.json, an absolute path). The animation draws the piston over the last\n"
+        "cycle, lateral motion, clearance and tilt exaggerated by the factor the page states;\n"
+        "with the lubricated skirt a map of each side's film follows it. Exit codes: 0 ok; 1 DIR is not a result folder; 2 bad\n"
         "command line, or another pistondyn process is writing DIR now; 3 writing failed.");
   }
 
@@ -50,9 +54,11 @@ class ReportCommand final : public Subcommand {
         return refused;
     }
     io::ResultFolder folder;
+    std::string fieldFrames;
     try {
       folder = io::readResultFolder(dir_);
       checkResultPlotColumns(folder);
+      fieldFrames = makeFieldAnimationJson(folder);
     } catch (const std::exception& e) {
       std::cerr << "pistondyn: cannot write a report: " << e.what() << "\n";
       return kExitBadInput;
@@ -69,7 +75,7 @@ class ReportCommand final : public Subcommand {
     }
     try {
       common::throwIfCancelled();
-      io::writeFilesAtomically(dir_, {{"report.html", makeHtmlReport(folder, pngs, note)}});
+      io::writeFilesAtomically(dir_, {{"report.html", makeHtmlReport(folder, pngs, note, fieldFrames)}});
     } catch (const common::Cancelled&) {
       throw;
     } catch (const std::exception& e) {

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 
+#include "DisplayUnits.h"
 #include "Gnuplot.h"
 #include "PlotSupport.h"
 #include "pistondyn/io/ResultWriters.h"
@@ -63,7 +64,7 @@ std::vector<Figure> describeFigures(const io::ResultFolder& f) {
        "Crank-train forces",
        "",
        {{"force",
-         "kN",
+         axisUnit("gas_force_N"),
          {{"gas_force", "gas force on the crown (+ down)", kBlue},
           {"conrod_force", "conrod force (+ compression)", kOrange},
           {"crank_train_side_force", "crank-train side force, from the rod (+ thrust)", kPurple},
@@ -72,7 +73,7 @@ std::vector<Figure> describeFigures(const io::ResultFolder& f) {
          0,
          ""},
         {"torque",
-         "Nm",
+         axisUnit("crank_torque_Nm"),
          {{"crank_torque", "crank torque (indicated)", kBlue},
           {"drive_torque", "drive torque", kRed, 2}},
          {},
@@ -83,7 +84,7 @@ std::vector<Figure> describeFigures(const io::ResultFolder& f) {
        "Side force",
        "side_force",
        {{"force",
-         "N",
+         axisUnit("side_force_N"),
          {{"side_force", "side force on the liner (+ thrust)", "black"},
           {"hydrodynamic_normal_force_thrust", "film, thrust side", kBlue, 1, kSkirt},
           {"hydrodynamic_normal_force_antithrust", "film, anti-thrust side", kOrange, 1, kSkirt},
@@ -94,7 +95,7 @@ std::vector<Figure> describeFigures(const io::ResultFolder& f) {
          0,
          ""},
         {"moment on the liner about +z",
-         "Nm",
+         axisUnit("liner_moment_Nm"),
          {{"guide_moment", "guide moment (about the pin axis)", kPurple, 1, "ideal_guide"},
           {"liner_moment", "skirt moment (about the pin axis)", kPurple, 1, kSkirt}},
          {},
@@ -102,36 +103,38 @@ std::vector<Figure> describeFigures(const io::ResultFolder& f) {
          ""}},
        kRunsWithALiner});
   std::vector<ReferenceLine> clearance;
+  const std::string lateral = axisUnit("u_lat_um");
   const std::string hot = f.getSummaryValue("results.hot_clearance_um");
   if (!hot.empty()) {
-    const double c = std::strtod(hot.c_str(), nullptr);
+    const double c = std::strtod(hot.c_str(), nullptr) * *conversionFactor("um", lateral);
     clearance = {{c, "± hot clearance (zero-drop point)"}, {-c, ""}};
   }
   figures.push_back({"secondary_motion",
                      "Secondary motion (+ towards thrust; tilt > 0: crown towards thrust)",
                      "u_lat_skirt_top",
                      {{"lateral displacement",
-                       "um",
+                       lateral,
                        {{"u_lat_skirt_top", "at the skirt top", kBlue},
                         {"u_lat", "at the pin axis", "black", 2},
                         {"u_lat_skirt_bottom", "at the skirt bottom", kOrange}},
                        clearance,
                        0,
                        ""},
-                      {"tilt", "mrad", {{"tilt", "tilt", kGreen}}, {}, 0, ""}},
+                      {"tilt", axisUnit("tilt_mrad"), {{"tilt", "tilt", kGreen}}, {}, 0, ""}},
                      kSkirt});
   figures.push_back({"friction",
                      "Skirt friction",
                      "friction_force",
                      {{"friction force on the piston along +y",
-                       "N",
+                       axisUnit("friction_force_N"),
                        {{"friction_force", "total", "black"},
                         {"hydrodynamic_friction", "film shear", kBlue},
                         {"asperity_friction", "asperity (boundary)", kRed}},
                        {},
                        0,
                        ""},
-                      {"friction power", "W", {{"friction_power", "friction power", kPurple}}, {},
+                      {"friction power", axisUnit("friction_power_W"),
+                       {{"friction_power", "friction power", kPurple}}, {},
                        0, ""}},
                      kSkirt});
   figures.push_back(
@@ -139,33 +142,34 @@ std::vector<Figure> describeFigures(const io::ResultFolder& f) {
        "Minimum film thickness and h/σ",
        "min_film_thickness_thrust",
        {{"minimum film thickness",
-         "um",
+         axisUnit("min_film_thickness_thrust_um"),
          {{"min_film_thickness_thrust", "thrust side", kBlue},
           {"min_film_thickness_antithrust", "anti-thrust side", kOrange}},
          {{0.0, ""}},
          0,
          ""},
         {"minimum h/σ",
-         "",
+         axisUnit("min_h_over_sigma_thrust"),
          {{"min_h_over_sigma_thrust", "thrust side", kBlue},
           {"min_h_over_sigma_antithrust", "anti-thrust side", kOrange}},
          {{1.0, "h/σ = 1 and 3 (regime limits)"}, {3.0, ""}},
          0,
          ""}},
        kSkirt});
+  const std::string share = axisUnit("hydrodynamic_share_thrust");
   Figure regimes{"regime_shares", "Lubrication regimes: area shares of each skirt side",
                  "hydrodynamic_share_thrust", {}, kSkirt};
   for (const auto& [side, label] : {std::pair<std::string, std::string>{"thrust", "thrust side"},
                                     {"antithrust", "anti-thrust side"}}) {
     regimes.panels.push_back({"area share, " + label,
-                              "",
+                              share,
                               {{"boundary_share_" + side, "boundary (h/σ ≤ 1)", kRed},
                                {"mixed_share_" + side, "mixed (1 < h/σ ≤ 3)", kOrange},
                                {"hydrodynamic_share_" + side, "hydrodynamic (h/σ > 3)", kBlue},
                                {"wetted_share_" + side, "wetted (fill fraction > 0)", "black"}},
                               {},
                               3,
-                              "[0:1.05]"});
+                              "[0:" + number(1.05 * *conversionFactor("", share)) + "]"});
   }
   figures.push_back(regimes);
   return figures;
@@ -257,11 +261,11 @@ void writeFieldMap(double angle_deg, const std::vector<const io::FieldDumpFile*>
   struct Field {
     const char* output;
     const char* label;
-    const char* unit;
+    std::string unit;
   };
-  const Field fields[] = {{"film_pressure", "film pressure (gauge)", "MPa"},
-                          {"fill_fraction", "fill fraction", ""},
-                          {"gap", "gap (nominal, all seven terms)", "um"}};
+  const Field fields[] = {{"film_pressure", "film pressure (gauge)", axisUnit("film_pressure_Pa")},
+                          {"fill_fraction", "fill fraction", axisUnit("fill_fraction")},
+                          {"gap", "gap (nominal, all seven terms)", axisUnit("gap_um")}};
   std::vector<fs::path> data;
   std::vector<double> lo(3, INFINITY), hi(3, -INFINITY);
   for (const io::FieldDumpFile* d : sides) {
@@ -320,6 +324,190 @@ void writeFieldMap(double angle_deg, const std::vector<const io::FieldDumpFile*>
   }
   gp << "unset multiplot\nunset output\nunset view\nunset pm3d\nunset title\nunset cblabel\n"
      << "set key\n";
+}
+
+// ---- cycle maps (cycle_map_<region>.csv) ------------------------------------------------
+
+// How a mapped field is drawn; a field of the files not listed is drawn with its name as the
+// label (a region added later needs no code here).
+struct MapStyle {
+  const char* field;  // column without unit
+  const char* label;
+  bool blues;         // a fill fraction: white to blue; else dark to bright
+  double colourTop;   // the top of the colour scale at most (h/σ: the regimes lie below 3)
+};
+const MapStyle kMapStyles[] = {
+    {"film_pressure_max", "largest film pressure (gauge) around the arc", false, INFINITY},
+    {"fill_fraction_mean", "mean fill fraction around the arc", true, INFINITY},
+    {"contact_pressure_max", "largest asperity pressure around the arc", false, INFINITY},
+    {"wear_depth_rate_max", "largest Archard wear depth rate around the arc", false, INFINITY},
+    {"h_over_sigma_min", "smallest h/σ around the arc", false, 6.0},
+};
+// Not drawn: the smallest gap is h/σ times the composite roughness, drawn above.
+const char* const kMapsNotDrawn[] = {"gap_min"};
+
+// The height axis of a region's map: its file's second column.
+std::string describeHeight(const std::string& column) {
+  const auto [name, unit] = units::splitUnit(column);
+  const std::string what = name == "y" ? "height above the pin axis" : units::describeName(name);
+  return what + " (" + displayUnit(unit) + ")";
+}
+
+std::string describeRegion(const std::string& region) {
+  if (region == "thrust")
+    return "thrust side";
+  if (region == "antithrust")
+    return "anti-thrust side";
+  std::string s = region;
+  std::replace(s.begin(), s.end(), '_', ' ');
+  return s;
+}
+
+struct MapPanelField {
+  std::string field;  // column without unit
+  std::string unit;   // the colour bar's unit
+  MapStyle style;
+  int dataColumn = 0;                    // in the data files (gnuplot's, from 1)
+  double lo = INFINITY, hi = -INFINITY;  // over every region, in `unit`
+  std::vector<double> positive;          // the values > 0, for the colour scale's top
+};
+
+// The top of a field's colour scale (chooseColourTop), at most the style's colourTop.
+double colourTop(MapPanelField& f) {
+  return std::min(chooseColourTop(f.positive, f.hi), f.style.colourTop);
+}
+
+// Reads the maps' files; per region a data file (angle, height, then one column per entry of
+// `fields`, NaN where the region lacks it; a blank line between angles: pm3d's scans).
+std::vector<MapPanelField> writeMapData(const std::vector<io::RegionFile>& maps,
+                                        const fs::path& work, std::vector<fs::path>& data,
+                                        std::vector<std::string>& heights) {
+  std::vector<MapPanelField> fields;
+  std::vector<io::CsvTable> tables;
+  for (const io::RegionFile& m : maps) {
+    tables.push_back(io::readCsvTable(m.path, {"crank_angle_deg"}));
+    const io::CsvTable& t = tables.back();
+    heights.push_back(describeHeight(t.columns.at(1)));
+    for (std::size_t c = 2; c < t.columns.size(); ++c) {
+      const std::string name = units::splitUnit(t.columns[c]).first;
+      if (std::find(std::begin(kMapsNotDrawn), std::end(kMapsNotDrawn), name) != std::end(kMapsNotDrawn) ||
+          std::any_of(fields.begin(), fields.end(), [&](const MapPanelField& f) { return f.field == name; }))
+        continue;
+      MapStyle style{nullptr, nullptr, false, INFINITY};
+      for (const MapStyle& s : kMapStyles) {
+        if (name == s.field)
+          style = s;
+      }
+      MapPanelField f;
+      f.field = name;
+      f.unit = axisUnit(t.columns[c]);
+      f.style = style;
+      fields.push_back(std::move(f));
+    }
+  }
+  // The listed fields first, in the table's order.
+  auto rank = [](const MapPanelField& f) {
+    for (std::size_t k = 0; k < std::size(kMapStyles); ++k) {
+      if (f.field == kMapStyles[k].field)
+        return k;
+    }
+    return std::size(kMapStyles);
+  };
+  std::stable_sort(fields.begin(), fields.end(),
+                   [&](const MapPanelField& a, const MapPanelField& b) { return rank(a) < rank(b); });
+  for (std::size_t k = 0; k < fields.size(); ++k)
+    fields[k].dataColumn = 3 + static_cast<int>(k);
+  for (std::size_t r = 0; r < maps.size(); ++r) {
+    const io::CsvTable& t = tables[r];
+    std::vector<std::optional<Column>> columns;
+    for (const MapPanelField& f : fields)
+      columns.push_back(findOutput(t, f.field, f.unit));
+    data.push_back(work / ("cycle_map_" + maps[r].region + ".dat"));
+    std::ofstream out(data.back());
+    for (std::size_t i = 0; i < t.rows.size(); ++i) {
+      if (i > 0 && t.rows[i][0] != t.rows[i - 1][0])
+        out << '\n';
+      out << number(t.rows[i][0]) << ' ' << number(t.rows[i][1]);
+      for (std::size_t k = 0; k < fields.size(); ++k) {
+        if (!columns[k]) {
+          out << " NaN";
+          continue;
+        }
+        const double v = t.rows[i][columns[k]->index] * columns[k]->factor;
+        fields[k].lo = std::min(fields[k].lo, v);
+        fields[k].hi = std::max(fields[k].hi, v);
+        if (v > 0.0)
+          fields[k].positive.push_back(v);
+        out << ' ' << number(v);
+      }
+      out << '\n';
+    }
+    if (!out)
+      throw std::runtime_error(data.back().string() + ": write failed");
+  }
+  return fields;
+}
+
+// cycle_maps.png: one column per region, one row per field that is not zero everywhere, crank
+// angle across and height up; one colour scale per field, shared by the regions. Returns
+// false when there is nothing to draw.
+bool writeCycleMaps(const io::ResultFolder& folder, const fs::path& work,
+                    const std::string& pngPath, std::ostream& gp) {
+  if (folder.cycleMaps.empty())
+    return false;
+  std::vector<fs::path> data;
+  std::vector<std::string> heights;
+  std::vector<MapPanelField> all = writeMapData(folder.cycleMaps, work, data, heights);
+  std::vector<MapPanelField> fields;
+  std::string zero;
+  for (const MapPanelField& f : all) {
+    if (f.lo == 0.0 && f.hi == 0.0)
+      zero += (zero.empty() ? "" : ", ") +
+              (f.style.label ? std::string(f.style.label) : units::describeName(f.field));
+    else if (f.lo <= f.hi)
+      fields.push_back(f);
+  }
+  if (fields.empty())
+    return false;
+  const std::size_t nRegions = folder.cycleMaps.size();
+  gp << "\nset terminal pngcairo size 1200," << 110 + 330 * fields.size()
+     << " noenhanced font 'Sans,10'\n"
+     << "set output " << quoted(pngPath) << "\n"
+     << "unset arrow\nunset x2tics\nset xtics 0,90,720 mirror\nset mxtics 3\n"
+     << "set xrange [0:720]\nset yrange [*:*]\nset autoscale yfix\n"
+     << "set view map\nset pm3d map corners2color c1\nunset key\n"
+     << "set multiplot layout " << fields.size() << "," << nRegions << " title "
+     << twoLines("Over the last cycle, crank angle across (0° and 720° firing TDC, 360° "
+                 "gas-exchange TDC), height up" +
+                     (zero.empty() ? std::string() : "; zero throughout: " + zero),
+                 folder.getSummaryValue("inputs.engine.name"))
+     << " font 'Sans,12'\n";
+  for (MapPanelField& f : fields) {
+    // Values beyond the colour scale are drawn in its end colours.
+    const double top = std::max(colourTop(f), f.lo + 1e-12 * std::max(1.0, std::abs(f.lo)));
+    const std::string label = f.style.label ? f.style.label : units::describeName(f.field);
+    std::string note;
+    if (top < f.hi) {
+      const std::string unit = f.unit.empty() ? "" : " " + displayUnit(f.unit);
+      note = (f.hi > f.style.colourTop ? "above " + number(top)
+                                       : "peaks up to " + units::formatSignificant(f.hi, 3)) +
+             unit + " in the top colour";
+    }
+    gp << (f.style.blues ? "set palette defined (0 '#ffffff', 1 '#c6dbef', 2 '#6baed6', 3 '#08519c')\n"
+                         : "set palette defined (0 '#000004', 1 '#3b0f70', 2 '#8c2981', 3 "
+                           "'#de4968', 4 '#fe9f6d', 5 '#fcfdbf')\n")
+       << "set cbrange [" << number(f.lo) << ":" << number(top) << "]\n"
+       << "set cblabel " << quoted(f.unit.empty() ? "" : displayUnit(f.unit)) << "\n";
+    for (std::size_t r = 0; r < nRegions; ++r) {
+      gp << "set title " << twoLines(describeRegion(folder.cycleMaps[r].region) + ": " + label, note)
+         << "\nset xlabel \"crank angle (°)\"\nset ylabel " << quoted(heights[r]) << "\n"
+         << "splot " << quoted(data[r].string()) << " using 1:2:" << f.dataColumn
+         << " with pm3d\n";
+    }
+  }
+  gp << "unset multiplot\nunset output\nunset view\nunset pm3d\nunset title\nunset cblabel\n"
+     << "set key\n";
+  return true;
 }
 
 // The liner's oil film along the bore over the last cycle (liner_film.csv, written with the
@@ -451,6 +639,16 @@ std::vector<std::string> writeResultPlots(const io::ResultFolder& folder) {
     for (const auto& d : folder.fieldDumps) {
       if (angles.empty() || angles.back() != d.crankAngle_deg)
         angles.push_back(d.crankAngle_deg);
+    }
+    {
+      const std::string name = "cycle_maps.png";
+      std::ostringstream part;
+      part << "set lmargin -1\nset rmargin -1\n";
+      if (writeCycleMaps(folder, work.path, getStagedPath(files, name), part)) {
+        stageFigure(files, name);
+        names.push_back(name);
+        gp << part.str();
+      }
     }
     for (double a : angles) {
       std::vector<const io::FieldDumpFile*> sides;

@@ -13,10 +13,12 @@
 
 #include "CommandSupport.h"
 #include "ComparisonPlots.h"
+#include "ComparisonReport.h"
 #include "Subcommand.h"
 #include "SweepSupport.h"
 #include "pistondyn/common/Cancellation.h"
 #include "pistondyn/io/DeckError.h"
+#include "pistondyn/io/ResultWriters.h"
 
 namespace pistondyn::app {
 
@@ -180,14 +182,35 @@ void drawComparisonPlots(const SweepOptions& options, const io::StudyComparison&
   try {
     for (auto& c : cases)
       c.folder = io::readResultFolder(c.folder.directory);
-    const std::string title = comparison.name.empty() ? comparison.studyDeckPath : comparison.name;
-    const auto files = writeComparisonPlots(cases, options.outDir, title);
+  } catch (const std::exception& e) {
+    std::fflush(stdout);
+    std::cerr << "pistondyn: warning: no comparison figures and no comparison.html (the results "
+                 "are written): "
+              << e.what() << "\n";
+    return;
+  }
+  const std::string title = comparison.name.empty() ? comparison.studyDeckPath : comparison.name;
+  std::vector<std::string> files;
+  std::string note;
+  try {
+    files = writeComparisonPlots(cases, options.outDir, title);
     std::printf("  and %zu comparison figures (%s/plots/comparison_*.png)\n", files.size(),
                 options.outDir.c_str());
   } catch (const std::exception& e) {
+    note = std::string("No comparison figures: ") + e.what();
     std::fflush(stdout);
     std::cerr << "pistondyn: warning: no comparison figures (the results are written): "
               << e.what() << "\n";
+  }
+  // The cases side by side in one page, with the figures when there are any.
+  try {
+    io::writeFilesAtomically(options.outDir,
+                             {{"comparison.html", makeComparisonHtml(title, cases, files, note)}});
+    std::printf("  and the cases side by side in %s/comparison.html\n", options.outDir.c_str());
+  } catch (const std::exception& e) {
+    std::fflush(stdout);
+    std::cerr << "pistondyn: warning: no comparison.html (the results are written): " << e.what()
+              << "\n";
   }
 }
 

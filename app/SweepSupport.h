@@ -50,9 +50,11 @@ std::vector<io::SweepCaseResult> runCasesHere(const SweepOptions& options,
                                               const io::SweepPlan& plan, io::SweepOutcome& outcome,
                                               double& wallTime_s);
 
-// Comparison figures of the cases that finished (ComparisonPlots.h) in DIR/plots/: at most
-// kMaxComparedCases, else none (said on stdout). A failure (gnuplot missing, say) is a
-// warning: the results are complete. Prints what was written.
+// Comparison figures of the cases that finished (ComparisonPlots.h) in DIR/plots/ and the
+// page DIR/comparison.html with the cases side by side and the figures (ComparisonReport.h):
+// at most kMaxComparedCases, else neither (said on stdout). A failure (gnuplot missing, say)
+// is a warning: the results are complete, the page says why it has no figures. Prints what
+// was written.
 void drawComparisonPlots(const SweepOptions& options, const io::StudyComparison& comparison);
 
 // True when this process was started by mpirun / srun (the launcher's environment).

@@ -163,6 +163,26 @@ ResultFolder readResultFolder(const std::string& directory) {
     if (entry.is_regular_file() && std::regex_match(file, m, name))
       r.fieldDumps.push_back({std::stod(m[1].str()), m[2].str(), entry.path().string()});
   }
+  // cycle_map_<region>.csv and field_frames_<region>.csv (CycleMaps.h).
+  const std::regex map(R"(cycle_map_([A-Za-z0-9_]+)\.csv)"), frames(R"(field_frames_([A-Za-z0-9_]+)\.csv)");
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    std::smatch m;
+    const std::string file = entry.path().filename().string();
+    if (!entry.is_regular_file())
+      continue;
+    if (std::regex_match(file, m, map))
+      r.cycleMaps.push_back({m[1].str(), entry.path().string()});
+    else if (std::regex_match(file, m, frames))
+      r.fieldFrames.push_back({m[1].str(), entry.path().string()});
+  }
+  auto byRegion = [](const RegionFile& a, const RegionFile& b) {
+    auto rank = [](const std::string& region) {
+      return region == "thrust" ? 0 : region == "antithrust" ? 1 : 2;
+    };
+    return rank(a.region) != rank(b.region) ? rank(a.region) < rank(b.region) : a.region < b.region;
+  };
+  std::sort(r.cycleMaps.begin(), r.cycleMaps.end(), byRegion);
+  std::sort(r.fieldFrames.begin(), r.fieldFrames.end(), byRegion);
   std::sort(r.fieldDumps.begin(), r.fieldDumps.end(),
             [](const FieldDumpFile& a, const FieldDumpFile& b) {
               return a.crankAngle_deg != b.crankAngle_deg ? a.crankAngle_deg < b.crankAngle_deg
@@ -207,7 +227,7 @@ CycleWindow selectLastCycle(const CsvTable& table) {
 
 std::string getColumnUnit(const std::string& column) {
   // Longest first, so that "_mps2" wins over "_mps" and "_kg_m2" over "_m2".
-  static const char* kUnits[] = {"m_per_s2", "rad_per_s", "kg_per_m3", "kg_m2", "kg_mm2",
+  static const char* kUnits[] = {"um_per_h", "m_per_s2", "rad_per_s", "kg_per_m3", "kg_m2", "kg_mm2",
                                  "mm3ph", "per_K", "mps2", "mrad", "degC", "mps", "mm3",
                                  "kPa", "MPa", "bar", "rpm", "deg", "rad", "Pas", "mJ",
                                  "Nm", "um", "mm", "m3", "m2", "Pa", "kg", "N", "W",

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "CycleMaps.h"
 #include "FieldDumps.h"
 #include "LinerFilmDump.h"
 #include "pistondyn/common/Validation.h"
@@ -228,6 +229,16 @@ RunOutcome runModel(const EngineDeck& deck, plugin::PistonAssemblyModel& model,
     dumps.emplace(*fields, deck.fieldDumpAngles_deg, deck.simulation.stepsPerCycle(),
                   makeCycleCsvComments(deck), *files);
     sinks.push_back(&*dumps);
+  }
+  // The maps of the liner's nodal fields over the last cycle (CycleMaps.h), staged likewise.
+  std::optional<detail::CycleMapSink> maps;
+  if (files) {
+    const plugin::LinerElement* liner =
+        static_cast<const plugin::PistonAssemblyModel&>(model).findLinerElement();
+    if (const plugin::NodalFieldSource* fields = liner ? liner->getNodalFields() : nullptr) {
+      maps.emplace(*fields, deck.simulation.stepsPerCycle(), makeCycleCsvComments(deck), *files);
+      sinks.push_back(&*maps);
+    }
   }
   // The liner's oil film along the bore (liner_film.csv, staged) and its balance.
   std::optional<detail::LinerFilmSink> linerFilm;

@@ -562,7 +562,9 @@ std::vector<NodalFieldDeclaration> LubricatedSkirtElement::getNodalFieldDeclarat
           {"liner_shape", "um"},   {"piston_thermal", "um"}, {"liner_thermal", "um"},
           {"piston_elastic", "um"}, {"liner_elastic", "um"}, {"film_gap", "um"},
           {"h_over_sigma", "1"},   {"film_pressure", "Pa"},  {"fill_fraction", "1"},
-          {"contact_pressure", "Pa"}};
+          {"contact_pressure", "Pa"},
+          // Archard wear depth rate of the liner, k/H p_c |U| (0 when the wear coefficient is).
+          {"wear_depth_rate", "um_per_h"}};
 }
 
 void LubricatedSkirtElement::calcNodalFields(const SimTK::State& s, int region,
@@ -580,7 +582,7 @@ void LubricatedSkirtElement::calcNodalFields(const SimTK::State& s, int region,
   const Eigen::Index n = gap.gap_m.size();
   const Eigen::Map<const Eigen::ArrayXd> ratio(r.contact.filmRatio.data(), n);
   const Eigen::Map<const Eigen::ArrayXd> contact(r.contact.pressure_Pa.data(), n);
-  values.resize(n, 13);
+  values.resize(n, 14);
   const Eigen::ArrayXd* microns[] = {&gap.gap_m,           &gap.rigid_m,         &gap.skirtProfile_m,
                                      &gap.linerShape_m,    &gap.pistonThermal_m, &gap.linerThermal_m,
                                      &gap.pistonElastic_m, &gap.linerElastic_m,  &r.filmGap_m};
@@ -590,6 +592,12 @@ void LubricatedSkirtElement::calcNodalFields(const SimTK::State& s, int region,
   values.col(10) = r.film.pressure_Pa().matrix();
   values.col(11) = r.film.fillFraction().matrix();
   values.col(12) = contact.matrix();
+  // k/H |U| p_c per node: the side's maxWearDepthRate_mps (k/H |U| max p_c) scaled by p_c / max
+  // p_c, so that the field's largest value is that figure exactly.
+  const double maxContact_Pa = n > 0 ? contact.maxCoeff() : 0.0;
+  values.col(13).setZero();
+  if (maxContact_Pa > 0.0)
+    values.col(13) = (contact * (r.maxWearDepthRate_mps * 1e6 * 3600.0 / maxContact_Pa)).matrix();
 }
 
 ElementOutputs LubricatedSkirtElement::getOutputs() const {

@@ -117,9 +117,13 @@ inline std::string findChromium() {
 }
 
 // Renders the page headless and checks the DOM after its scripts ran: no error caught by
-// the page's error handler or printed on the console, the animation's script ran to its
-// end and wrote its status, and `images` images decoded with a width.
-inline void renderInChromium(const fs::path& page, int images) {
+// the page's error handler or printed on the console, `images` images decoded with a width,
+// <body> carries each of `bodyAttributes` (e.g. data-field-map="ready": the field map's
+// script ran to its end), and, for a run's report (`animated`), the animation's script ran
+// to its end and wrote its status.
+inline void renderInChromium(const fs::path& page, int images,
+                             const std::vector<std::string>& bodyAttributes = {},
+                             bool animated = true) {
   const std::string chromium = findChromium();
   if (chromium.empty())
     GTEST_SKIP() << "chromium is not installed (Debian: apt-get install chromium): the report "
@@ -144,9 +148,17 @@ inline void renderInChromium(const fs::path& page, int images) {
   const std::string body = dom.substr(bodyAt, dom.find('>', bodyAt) - bodyAt);
   EXPECT_EQ(body.find("data-js-error"), std::string::npos) << body;
   EXPECT_EQ(console.find("Uncaught"), std::string::npos) << console;
-  EXPECT_NE(body.find("data-animation=\"ready\""), std::string::npos) << body;
+  if (animated) {
+    EXPECT_NE(body.find("data-animation=\"ready\""), std::string::npos) << body;
+  }
   EXPECT_NE(body.find("data-images-shown=\"" + std::to_string(images) + "\""), std::string::npos)
       << body;
+  for (const std::string& attribute : bodyAttributes)
+    EXPECT_NE(body.find(attribute), std::string::npos) << attribute << "\n" << body;
+  if (!animated) {
+    fs::remove_all(work);
+    return;
+  }
   const std::string statusText = "<p id=\"animation-status\">crank angle ";
   const std::size_t at = dom.find(statusText);
   ASSERT_NE(at, std::string::npos) << "the script did not fill in the animation's status";

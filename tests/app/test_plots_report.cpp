@@ -14,6 +14,10 @@
 #include <string>
 #include <vector>
 
+#include <cmath>
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include "PlotChecks.h"
@@ -110,6 +114,160 @@ TEST_F(ProgramPlots, ReportIsSelfContainedAndRendersInChromium) {
   EXPECT_NE(html.find("<pre id=\"deck\">"), std::string::npos);  // the deck's text
   EXPECT_NE(html.find("holds the piston on the bore axis"), std::string::npos);
   renderInChromium(out / "report.html", 2);
+}
+
+// The text between `open` and the next `close` after it ("" if absent).
+std::string between(const std::string& text, const std::string& open, const std::string& close) {
+  const std::size_t a = text.find(open);
+  if (a == std::string::npos)
+    return "";
+  const std::size_t b = text.find(close, a);
+  return text.substr(a, b == std::string::npos ? std::string::npos : b - a);
+}
+
+// `value` to 3 significant digits in fixed notation (the report's rule for a figure of
+// 1 ... 999), written here independently of the program's formatting.
+std::string threeDigits(double value) {
+  const int decimals = std::max(0, 2 - static_cast<int>(std::floor(std::log10(std::abs(value)))));
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
+// Issue 37: the report a piston engineer reads. A short run (one cycle on the ideal guide):
+// the headline shows the figures in engineering units (kPa, bar) with no number in
+// exponent form, the run that was not checked for periodicity says "not converged"
+// (cycles_to_converge is null) in the headline and the summary table, and the summary table
+// shows the displacement in cm³ (the issue's 348.7 cm³: pi/4 x 74.5 mm² x 80 mm).
+TEST_F(ProgramPlots, ReportHeadlineIsInEngineeringUnits) {
+  const fs::path out = dir_ / "results";
+  ASSERT_EQ(program(runArgs(out) + " --quiet --no-plot"), 0) << err();
+  ASSERT_EQ(program("report " + out.string()), 0) << err();
+  const std::string html = readFile(out / "report.html");
+  const std::string headline = between(html, "<section id=\"headline\">", "</section>");
+  ASSERT_FALSE(headline.empty()) << html.substr(0, 3000);
+  const std::regex exponent("[0-9][eE][+-]?[0-9]");
+  EXPECT_FALSE(std::regex_search(headline, exponent)) << headline;
+  EXPECT_NE(headline.find(" kPa<"), std::string::npos) << headline;
+  EXPECT_NE(headline.find("imep"), std::string::npos) << headline;
+  // The peak cylinder pressure in bar with its crank angle, from summary.json's Pa.
+  const nlohmann::json summary = nlohmann::json::parse(readFile(out / "summary.json"));
+  const nlohmann::json& r = summary["results"];
+  const std::string peak = threeDigits(r["peak_cylinder_pressure_Pa"].get<double>() / 1e5);
+  EXPECT_NE(headline.find(">" + peak + " bar at "), std::string::npos) << peak << "\n" << headline;
+  EXPECT_NE(headline.find(threeDigits(r["imep_kPa"].get<double>()) + " kPa"), std::string::npos)
+      << headline;
+  // One cycle, until_periodic off: not converged, and no number of cycles to converge.
+  ASSERT_TRUE(r["cycles_to_converge"].is_null());
+  EXPECT_NE(headline.find("not converged (1 cycle run)"), std::string::npos) << headline;
+  const std::string table = between(html, "<table class=\"summary\" id=\"summary\">", "</table>");
+  ASSERT_FALSE(table.empty());
+  EXPECT_NE(table.find("<td>cycles to converge</td><td class=\"num\">not converged</td>"),
+            std::string::npos)
+      << table;
+  EXPECT_FALSE(std::regex_search(table, std::regex("[0-9][eE]\\+[0-9]"))) << table;
+  const double displacement_cm3 = M_PI / 4.0 * 7.45 * 7.45 * 8.0;  // 348.73: 4 digits
+  char expected[32];
+  std::snprintf(expected, sizeof expected, "%.1f", displacement_cm3);
+  EXPECT_NE(table.find(std::string("<td>displacement</td><td class=\"num\">") + expected +
+                       "</td><td>cm³</td>"),
+            std::string::npos)
+      << expected << "\n" << table;
+  EXPECT_NE(table.find("<td>peak cylinder pressure</td><td class=\"num\">" + peak +
+                       "</td><td>bar</td>"),
+            std::string::npos)
+      << table;
+  // The ideal guide has no nodal fields: no field map, and the page still renders.
+  EXPECT_EQ(html.find("id=\"field-frames\""), std::string::npos);
+}
+
+// The inputs table: each input in its deck key's unit with the source the deck's comment
+// marks (EST, [V]), an override marked --set with its value.
+TEST_F(ProgramPlots, ReportInputsTableNamesEachValuesSource) {
+  const fs::path out = dir_ / "results";
+  ASSERT_EQ(program(runArgs(out) + " --quiet --no-plot --set geometry.crank_offset_mm=0.2"), 0)
+      << err();
+  ASSERT_EQ(program("report " + out.string()), 0) << err();
+  const std::string html = readFile(out / "report.html");
+  const std::string table = between(html, "<table class=\"summary inputs\" id=\"inputs\">", "</table>");
+  ASSERT_FALSE(table.empty()) << html.substr(0, 3000);
+  auto row = [&](const std::string& key) { return between(table, "<code>" + key + "</code>", "</tr>"); };
+  // The deck: "conrod_length_mm: 140.0  # EST: L/r = 3.5, ..." and "bore_mm: 74.5  # [V]".
+  EXPECT_NE(row("geometry.conrod_length_mm").find("<td class=\"num\">140</td><td>mm</td><td>EST</td>"),
+            std::string::npos)
+      << row("geometry.conrod_length_mm");
+  EXPECT_NE(table.find("<tr class=\"est\"><td><code>geometry.conrod_length_mm</code>"),
+            std::string::npos);
+  EXPECT_NE(row("geometry.bore_mm").find("<td class=\"num\">74.5</td><td>mm</td><td>[V]</td>"),
+            std::string::npos)
+      << row("geometry.bore_mm");
+  EXPECT_NE(row("geometry.crank_offset_mm").find("<td class=\"num\">0.2</td><td>mm</td><td>--set</td>"),
+            std::string::npos)
+      << row("geometry.crank_offset_mm");
+  // Values in the deck's units, not SI: no bore of 0.0745.
+  EXPECT_EQ(table.find("0.0745"), std::string::npos);
+  EXPECT_NE(html.find("<pre id=\"deck\">"), std::string::npos);
+}
+
+// The report's animated map from a field_frames file written here (2 frames x 2 x 2 nodes,
+// rows in no particular order): each field in its display unit, quantised linearly from its
+// lowest value (0 .. 255) to the top of its colour scale, which is the largest value when
+// it occurs twice (the cycle maps' 99th-percentile rule keeps a repeated maximum); the
+// map's script runs in Chromium. A file with a node missing is refused: exit 1, the file
+// named, no report.
+TEST_F(ProgramPlots, ReportAnimatedMapHoldsTheFramesInDisplayUnits) {
+  const fs::path out = dir_ / "results";
+  ASSERT_EQ(program(runArgs(out) + " --quiet --no-plot"), 0) << err();
+  // film_pressure_Pa in MPa: frame 0 (y 0: 0, 1.6; y 5: 4, 1), frame 10 (y 0: 4, 3; y 5: 1,
+  // 0.5): no value on a half step of the 255 levels, where rounding would depend on the
+  // last bit of the conversion.
+  const std::string rows =
+      "10,10,5,0.5e6,1\n0,-10,0,0,1\n0,10,5,1e6,0.25\n10,-10,0,4e6,1\n0,10,0,1.6e6,0.5\n"
+      "10,10,0,3e6,1\n0,-10,5,4e6,1\n10,-10,5,1e6,0.75\n";
+  std::ofstream(out / "field_frames_thrust.csv")
+      << "crank_angle_deg,phi_deg,y_mm,film_pressure_Pa,fill_fraction\n" << rows;
+  ASSERT_EQ(program("report " + out.string()), 0) << err();
+  const std::string html = readFile(out / "report.html");
+  const std::string tag = "<script type=\"application/json\" id=\"field-frames\">";
+  const std::string json = between(html, tag, "</script>");
+  ASSERT_FALSE(json.empty());
+  const nlohmann::json d = nlohmann::json::parse(json.substr(tag.size()));
+  EXPECT_EQ(d["frames_deg"], nlohmann::json::parse("[0, 10]"));
+  ASSERT_EQ(d["regions"].size(), 1u);
+  EXPECT_EQ(d["regions"][0]["phi_deg"], nlohmann::json::parse("[-10, 10]"));
+  EXPECT_EQ(d["regions"][0]["y_mm"], nlohmann::json::parse("[0, 5]"));
+  ASSERT_EQ(d["fields"].size(), 2u);
+  const nlohmann::json& p = d["fields"][0];
+  EXPECT_EQ(p["name"], "film_pressure");
+  EXPECT_EQ(p["unit"], "MPa");
+  EXPECT_EQ(p["lo"], "0");
+  EXPECT_EQ(p["top"], "4.00");
+  // Frame-major, then height, then angle: the values above in MPa over 4 MPa x 255.
+  const std::vector<double> pressure_MPa = {0, 1.6, 4, 1, 4, 3, 1, 0.5};
+  const std::string bytes = decodeBase64(p["data"][0].get<std::string>());
+  ASSERT_EQ(bytes.size(), pressure_MPa.size());
+  for (std::size_t k = 0; k < bytes.size(); ++k)
+    EXPECT_EQ(static_cast<unsigned char>(bytes[k]), std::lround(255.0 * pressure_MPa[k] / 4.0)) << k;
+  const nlohmann::json& fill = d["fields"][1];
+  EXPECT_EQ(fill["name"], "fill_fraction");
+  EXPECT_EQ(fill["blues"], true);
+  EXPECT_EQ(fill["lo"], "0.250");
+  const std::string fillBytes = decodeBase64(fill["data"][0].get<std::string>());
+  ASSERT_EQ(fillBytes.size(), 8u);
+  EXPECT_EQ(static_cast<unsigned char>(fillBytes[0]), 255);  // 1 at the top of 0.25 .. 1
+  EXPECT_EQ(static_cast<unsigned char>(fillBytes[1]), 85);   // 0.5: 1/3 of 255
+  EXPECT_EQ(static_cast<unsigned char>(fillBytes[3]), 0);    // 0.25 at the bottom
+  EXPECT_EQ(static_cast<unsigned char>(fillBytes[6]), 170);  // 0.75: 2/3 of 255
+  renderInChromium(out / "report.html", 2, {"data-field-map=\"ready\""});
+
+  // A node missing from the last frame: refused before anything is written.
+  fs::remove(out / "report.html");
+  std::ofstream(out / "field_frames_thrust.csv")
+      << "crank_angle_deg,phi_deg,y_mm,film_pressure_Pa,fill_fraction\n"
+      << rows.substr(0, rows.rfind('\n', rows.size() - 2) + 1);
+  EXPECT_EQ(program("report " + out.string()), 1);
+  EXPECT_NE(err().find("field_frames_thrust.csv"), std::string::npos) << err();
+  EXPECT_FALSE(fs::exists(out / "report.html"));
 }
 
 // The progress line: on a terminal (a pseudo-terminal from script(1)) a line with the

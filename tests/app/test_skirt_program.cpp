@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -301,17 +302,19 @@ TEST_F(SkirtScratchDeck, AShortRunWritesEverySkirtFigure) {
   for (const auto& e : fs::directory_iterator(out))
     files.push_back(e.path().filename().string());
   std::sort(files.begin(), files.end());
-  EXPECT_EQ(files, (std::vector<std::string>{"cycle.csv", "field_dump_0deg_antithrust.csv",
-                                             "field_dump_0deg_thrust.csv",
-                                             "field_dump_380deg_antithrust.csv",
-                                             "field_dump_380deg_thrust.csv", "summary.json"}));
+  EXPECT_EQ(files, (std::vector<std::string>{
+                       "cycle.csv", "cycle_map_antithrust.csv", "cycle_map_thrust.csv",
+                       "field_dump_0deg_antithrust.csv", "field_dump_0deg_thrust.csv",
+                       "field_dump_380deg_antithrust.csv", "field_dump_380deg_thrust.csv",
+                       "field_frames_antithrust.csv", "field_frames_thrust.csv",
+                       "summary.json"}));
   const Csv dump = readCsv(out / "field_dump_380deg_antithrust.csv");
   EXPECT_EQ(dump.columns,
             (std::vector<std::string>{"phi_deg", "y_mm", "gap_um", "rigid_um", "skirt_profile_um",
                                       "liner_shape_um", "piston_thermal_um", "liner_thermal_um",
                                       "piston_elastic_um", "liner_elastic_um", "film_gap_um",
                                       "h_over_sigma", "film_pressure_Pa", "fill_fraction",
-                                      "contact_pressure_Pa"}));
+                                      "contact_pressure_Pa", "wear_depth_rate_um_per_h"}));
   ASSERT_EQ(dump.rows.size(), 16u * 12u);
   for (const auto& row : dump.rows) {
     for (double v : row)
@@ -341,14 +344,22 @@ TEST_F(SkirtScratchDeck, AShortRunWritesEverySkirtFigure) {
                            (dir_ / "plot.txt").string() + " 2>&1";
   ASSERT_EQ(std::system(plot.c_str()), 0) << readFile(dir_ / "plot.txt");
   const std::vector<std::string> figures = {
-      "crank_train_forces.png", "field_map_0deg.png", "field_map_380deg.png",
-      "film_thickness.png",     "friction.png",       "regime_shares.png",
-      "secondary_motion.png",   "side_force.png"};
+      "crank_train_forces.png", "cycle_maps.png",     "field_map_0deg.png",
+      "field_map_380deg.png",   "film_thickness.png", "friction.png",
+      "regime_shares.png",      "secondary_motion.png", "side_force.png"};
   EXPECT_EQ(listPngs(out / "plots"), figures);
   for (const auto& f : figures) {
     const PngSize size = readPngSize(out / "plots" / f);
     EXPECT_EQ(size.width, 1200) << f;
-    EXPECT_EQ(size.height, f.rfind("field_map", 0) == 0 ? 1250 : 830) << f;
+    if (f == "cycle_maps.png") {
+      // 110 px + 330 px per mapped field that is not zero everywhere: film pressure, fill
+      // fraction and h/sigma at least; asperity pressure and wear when there was contact.
+      EXPECT_EQ((size.height - 110) % 330, 0) << size.height;
+      EXPECT_GE((size.height - 110) / 330, 3) << size.height;
+      EXPECT_LE((size.height - 110) / 330, 5) << size.height;
+    } else {
+      EXPECT_EQ(size.height, f.rfind("field_map", 0) == 0 ? 1250 : 830) << f;
+    }
   }
   // The report: every figure embedded, the exaggeration a round factor drawing the 40 um
   // hot clearance as about 8 % of the 74.5 mm bore (0.08 x 74.5 / 0.040 = 149 -> 100).
@@ -359,7 +370,19 @@ TEST_F(SkirtScratchDeck, AShortRunWritesEverySkirtFigure) {
   checkReportEmbedsThePlots(html, out / "plots");
   EXPECT_NE(html.find("exaggerated × 100</strong>"), std::string::npos);
   EXPECT_NE(html.find("{\"factor\":100,"), std::string::npos);
-  renderInChromium(out / "report.html", static_cast<int>(figures.size()));
+  // Issue 37: the headline names the skirt's figures in engineering units (h/σ with its
+  // crank angle, films in µm, tilt in mrad, slap in mJ, fmep in kPa), with no number in
+  // exponent form; the field map's frames are embedded and its script draws them.
+  const std::size_t headlineAt = html.find("<section id=\"headline\">");
+  ASSERT_NE(headlineAt, std::string::npos);
+  const std::string headline = html.substr(headlineAt, html.find("</section>", headlineAt) - headlineAt);
+  for (const char* text : {"fmep", " kPa<", "min h/σ thrust side", "min h/σ anti-thrust side",
+                           "°<", " µm at ", " mrad<", " mJ<", "hot clearance", " W<", " %<"})
+    EXPECT_NE(headline.find(text), std::string::npos) << text << "\n" << headline;
+  EXPECT_FALSE(std::regex_search(headline, std::regex("[0-9][eE][+-]?[0-9]"))) << headline;
+  EXPECT_NE(html.find("<script type=\"application/json\" id=\"field-frames\">"), std::string::npos);
+  renderInChromium(out / "report.html", static_cast<int>(figures.size()),
+                   {"data-field-map=\"ready\""});
 }
 
 // `pistondyn check` on both example decks as shipped.

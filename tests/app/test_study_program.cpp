@@ -148,12 +148,42 @@ TEST_F(StudyProgram, ComparesItsCasesInTablesAndFigures) {
   EXPECT_EQ(size.width, 1188);
   EXPECT_EQ(size.height, 470);
 
+  // comparison.html (issue 37): the cases side by side, a column per case with its
+  // headline in engineering units - the peak cylinder pressure in bar (from its Pa here),
+  // no number in exponent form, the run not checked for periodicity "not converged" - the
+  // figures embedded as the files hold them, rendered in Chromium without a script error.
+  const std::string page = readFile(r / "comparison.html");
+  const std::size_t tableAt = page.find("<table class=\"cases\" id=\"cases\">");
+  ASSERT_NE(tableAt, std::string::npos) << page.substr(0, 2000);
+  const std::string table = page.substr(tableAt, page.find("</table>", tableAt) - tableAt);
+  EXPECT_NE(table.find("speed_rpm=1500"), std::string::npos) << table;
+  EXPECT_NE(table.find("speed_rpm=3000"), std::string::npos) << table;
+  EXPECT_EQ(table.find("e+"), std::string::npos) << table;
+  for (int i = 1; i <= 2; ++i) {
+    const nlohmann::json res = readJson(r / ("case_000" + std::to_string(i)) / "summary.json")["results"];
+    char bar[32];
+    std::snprintf(bar, sizeof bar, "%.1f", res["peak_cylinder_pressure_Pa"].get<double>() / 1e5);
+    // 10 ... 100 bar: 3 significant digits are one decimal.
+    ASSERT_GE(res["peak_cylinder_pressure_Pa"].get<double>(), 1e6);
+    ASSERT_LT(res["peak_cylinder_pressure_Pa"].get<double>(), 1e7);
+    EXPECT_NE(table.find(std::string("<td class=\"num\">") + bar + " bar at "), std::string::npos)
+        << bar << "\n" << table;
+    EXPECT_TRUE(res["cycles_to_converge"].is_null());
+  }
+  EXPECT_NE(table.find("<tr><th>periodic</th><td class=\"num\">not converged ("),
+            std::string::npos)
+      << table;
+  checkReportEmbedsThePlots(page, r / "plots");
+  renderInChromium(r / "comparison.html", 1, {}, false);
+
   // A sweep draws them too; --no-plot does not.
   ASSERT_EQ(program("sweep study.yaml --out swept --quiet"), 0) << err();
   EXPECT_EQ(listPngs(dir_ / "swept" / "plots"),
             std::vector<std::string>{"comparison_side_force.png"});
   ASSERT_EQ(program("sweep study.yaml --out bare --quiet --no-plot"), 0) << err();
   EXPECT_FALSE(fs::exists(dir_ / "bare" / "plots"));
+  EXPECT_TRUE(fs::is_regular_file(dir_ / "swept" / "comparison.html"));
+  EXPECT_FALSE(fs::exists(dir_ / "bare" / "comparison.html"));
 }
 
 TEST_F(StudyProgram, AFailedCaseIsListedAndTheOthersCompared) {

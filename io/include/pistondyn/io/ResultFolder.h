@@ -26,6 +26,14 @@ struct FieldDumpFile {
   std::string path;             ///< the file
 };
 
+/// A file of one region of the liner element's nodal fields over the last cycle
+/// (cycle_map_<region>.csv, field_frames_<region>.csv; their columns are described in
+/// README.md, "Result files").
+struct RegionFile {
+  std::string region;  ///< e.g. "thrust", "antithrust"
+  std::string path;    ///< the file
+};
+
 /// A flattened entry of summary.json: "results.fmep_kPa", "inputs.geometry.bore_m", ...;
 /// `value` is the JSON text of a number, boolean or string (strings without quotes), or of
 /// an array of numbers ("[2.37, 2.41]").
@@ -42,6 +50,9 @@ struct ResultFolder {
   std::string summaryJson;                 ///< summary.json as written
   std::vector<SummaryEntry> summary;       ///< ... flattened, in file order
   std::vector<FieldDumpFile> fieldDumps;   ///< by angle, thrust before anti-thrust
+  /// cycle_map_<region>.csv and field_frames_<region>.csv: thrust, anti-thrust, then any
+  /// other region by name.
+  std::vector<RegionFile> cycleMaps, fieldFrames;
 
   /// The flattened summary value of `key`, or "" if absent.
   std::string getSummaryValue(const std::string& key) const;
@@ -54,7 +65,8 @@ class ResultFolderError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Reads DIR/cycle.csv and DIR/summary.json (both required) and lists DIR's field dumps.
+/// Reads DIR/cycle.csv and DIR/summary.json (both required) and lists DIR's field dumps,
+/// cycle maps and field frames.
 /// summary.json must be a JSON object with a "results" object whose figures are numbers
 /// (or true / false, null, a list of numbers; "note" is text), its inputs whose key names a
 /// unit numbers, and wall_time_s and integrator_steps numbers. Throws ResultFolderError

@@ -247,7 +247,8 @@ class LubricatedSkirtElement final : public LinerElement,
     return integrals_.getValue(s, kSecondaryMotionWork);
   }
   /// Its nodal fields (NodalFieldSource below): the gap with its seven terms, the film gap,
-  /// h/sigma, film pressure, fill fraction and asperity pressure on both sides.
+  /// h/sigma, film pressure, fill fraction, asperity pressure and the Archard wear depth rate on
+  /// both sides.
   const NodalFieldSource* getNodalFields() const override { return this; }
   /// Its liner oil film (LinerOilSource below) when parameters.linerOil is set.
   const LinerOilSource* getLinerOil() const override {

@@ -28,6 +28,7 @@
 #include <memory>
 #include <vector>
 
+#include "Signals.h"
 #include "Subcommand.h"
 #include "pistondyn/common/Cancellation.h"
 #include "pistondyn/io/Version.h"

@@ -219,7 +219,7 @@ void readSimulation(YamlDeck& d, const LinerModelNeeds& liner, const std::string
       {"rk_merson", Settings::Integrator::RungeKuttaMerson},
       {"rk_feldberg", Settings::Integrator::RungeKuttaFeldberg},
       {"cpodes_bdf", Settings::Integrator::CPodesBDF},
-      {"linearly_implicit_bdf2", Settings::Integrator::LinearlyImplicitBDF2}};
+      {"linearly_implicit_bdf2", Settings::Integrator::LinearlyImplicitBDF}};
   s.integrator = integrators.at(integ);
   s.accuracy = root.getNumber(key("simulation.accuracy"));
 
@@ -242,7 +242,7 @@ void readSimulation(YamlDeck& d, const LinerModelNeeds& liner, const std::string
                      "' makes the system stiff (" + liner.stiffReason +
                      "): use linearly_implicit_bdf2 (or cpodes_bdf)");
   }
-  if (s.integrator == Settings::Integrator::LinearlyImplicitBDF2 && liner.usesConstraints) {
+  if (s.integrator == Settings::Integrator::LinearlyImplicitBDF && liner.usesConstraints) {
     d.addProblem("simulation.integrator",
                  "linearly_implicit_bdf2 integrates models without constraints, but the liner "
                  "model '" +

@@ -12,8 +12,6 @@ inline bool isEquationRow(const FilmSystem& s, int m) {
   return s.status[m] == kFull || (s.status[m] == kCav && s.jfo);
 }
 
-constexpr int kGmresRestart = 30;
-constexpr int kMaxKrylovIterations = 40;  // beyond this: factorise the current Jacobian
 constexpr double kInnerSafety = 0.5;      // inner target = kInnerSafety * tolerance
 constexpr double kLooseFraction = 3e-2;   // inexact solves while the active set moves
 // Mass-conserving model: from this active-set step on, a step that cavitates nodes does not also
@@ -31,28 +29,92 @@ constexpr int kMultigridLongestPause = 1024;
 
 }  // namespace
 
+void SparseFactors::reset() {
+  cholState_ = kluState_ = FactorState::None;
+}
+
+void SparseFactors::drop() {
+  for (FactorState* state : {&cholState_, &kluState_})
+    if (*state >= FactorState::Factored)
+      *state = FactorState::Analysed;
+}
+
+void SparseFactors::jacobianChanged() {
+  for (FactorState* state : {&cholState_, &kluState_})
+    if (*state == FactorState::Exact)
+      *state = FactorState::Factored;
+}
+
+bool SparseFactors::factorise(StencilPattern& pat, bool jfo) {
+  // KLU keeps its pivot order while it has a valid factorisation (CHOLMOD has no choice).
+  return factoriseWithPivots(pat, jfo, kluState_ < FactorState::Factored);
+}
+
+bool SparseFactors::factoriseWithFreshPivots(StencilPattern& pat, bool jfo) {
+  return factoriseWithPivots(pat, jfo, true);
+}
+
+bool SparseFactors::factoriseWithPivots(StencilPattern& pat, bool jfo, bool freshPivots) {
+  FactorState& state = jfo ? kluState_ : cholState_;
+  if (state == FactorState::None) {
+    if (jfo)
+      klu_.analyze(pat);
+    else
+      chol_.analyze(pat);
+    state = FactorState::Analysed;
+  }
+  const bool ok = jfo ? klu_.factorize(pat, freshPivots) : chol_.factorize(pat);
+  state = ok ? FactorState::Exact : FactorState::Analysed;
+  return ok;
+}
+
+void SparseFactors::solve(bool jfo, double* rhs, int columns) {
+  if (!jfo)
+    chol_.solve(rhs, rhs, columns);
+  else
+    klu_.solve(rhs, columns);
+}
+
+void MultigridPause::reset() {
+  pausedCalls_ = 0;
+  nextPause_ = kMultigridFirstPause;
+}
+
+bool MultigridPause::beginCall() {
+  const bool paused = pausedCalls_ > 0;
+  if (paused)
+    --pausedCalls_;
+  failedThisCall_ = false;
+  return paused;
+}
+
+void MultigridPause::recordFailure() {
+  failedThisCall_ = true;
+  pausedCalls_ = nextPause_;
+  nextPause_ = std::min(2 * nextPause_, kMultigridLongestPause);
+}
+
+void MultigridPause::recordConvergedCall() {
+  if (!failedThisCall_)
+    nextPause_ = kMultigridFirstPause;  // multigrid suits the operator again
+}
+
 void ActiveSetSolver::prepare(const FilmSystem& sys) {
-  if (sys.n == shapeN_ && sys.nx == shapeNx_ && sys.periodicX == shapePeriodic_)
+  const GridShape shape{sys.n, sys.nx, sys.periodicX};
+  if (shape == shape_)
     return;
   pat_.build(sys);
-  mg_.prepare(sys);
-  mgBuilt_ = false;
-  mgPausedCalls_ = 0;
-  mgPause_ = kMultigridFirstPause;
-  shapeN_ = sys.n;
-  shapeNx_ = sys.nx;
-  shapePeriodic_ = sys.periodicX;
-  cholAnalysed_ = kluAnalysed_ = cholFactored_ = kluFactored_ = false;
-  factorExact_ = jacobianCurrent_ = refactorNext_ = false;
+  multigrid_.levels.prepare(sys);
+  multigrid_.built = false;
+  multigrid_.pause.reset();
+  shape_ = shape;
+  factors_.reset();
+  jacobian_ = JacobianState::Stale;
+  refresh_.cancel();
   const int n = sys.n;
   for (Eigen::VectorXd* v : {&rhs_, &step_, &x_, &r_, &z_, &p_, &q_})
     v->setZero(n);
-  V_.setZero(n, kGmresRestart + 1);
-  H_.setZero(kGmresRestart + 1, kGmresRestart);
-  g_.setZero(kGmresRestart + 1);
-  cs_.setZero(kGmresRestart);
-  sn_.setZero(kGmresRestart);
-  y_.setZero(kGmresRestart);
+  gmres_.resize(n);
   eqRow_.assign(n, 0);
   pRow_.assign(n, 0);
   mgRhs_.setZero(n);
@@ -72,14 +134,13 @@ void ActiveSetSolver::fillJacobian(const FilmSystem& s) {
     colType_[k] = !eqRow_[k] ? 0 : (s.status[k] == kFull ? 1 : 2);
     pRow_[k] = colType_[k] == 1 ? 1 : 0;
   }
-  factorExact_ = false;
-  jacobianCurrent_ = true;
-  valuesCurrent_ = false;
+  factors_.jacobianChanged();
+  jacobian_ = JacobianState::RowsOnly;
   // The multigrid preconditioner works on the stencil of FilmSystem directly; the unsymmetric
   // product (mass-conserving model) needs the sparse values.
-  if (useMg_)
-    mg_.setFineOperator(s, pRow_.data());
-  if (!useMg_ || s.jfo)
+  if (usesMultigrid())
+    multigrid_.levels.setFineOperator(s, pRow_.data());
+  if (!usesMultigrid() || s.jfo)
     fillValues(s);
 }
 
@@ -128,7 +189,7 @@ void ActiveSetSolver::fillValues(const FilmSystem& s) {
         v[pat_.posS[k]] -= s.inCy[so];
     }
   }
-  valuesCurrent_ = true;
+  jacobian_ = JacobianState::Values;
   updatePreconditionerScaling();
 }
 
@@ -145,36 +206,20 @@ void ActiveSetSolver::updatePreconditionerScaling() {
 }
 
 bool ActiveSetSolver::factorValues(const FilmSystem& s, bool freshPivots) {
-  bool ok;
-  if (!s.jfo) {
-    if (!cholAnalysed_) {
-      chol_.analyze(pat_);
-      cholAnalysed_ = true;
-    }
-    ok = chol_.factorize(pat_);
-    cholFactored_ = ok;
-  } else {
-    if (!kluAnalysed_) {
-      klu_.analyze(pat_);
-      kluAnalysed_ = true;
-    }
-    ok = klu_.factorize(pat_, freshPivots);
-    kluFactored_ = ok;
-  }
+  const bool ok = freshPivots ? factors_.factoriseWithFreshPivots(pat_, s.jfo)
+                              : factors_.factorise(pat_, s.jfo);
   ++factorisations_;
-  factorExact_ = ok;
   return ok;
 }
 
 bool ActiveSetSolver::factorCurrent(const FilmSystem& s) {
-  // KLU keeps its pivot order while it has a valid factorisation (a refactor is cheaper).
-  const bool ok = factorValues(s, !kluFactored_);
+  const bool ok = factorValues(s, false);
   factorColType_ = colType_;
   for (int k = 0; k < pat_.n; ++k)
     factorDiag_[k] = pat_.values[pat_.posSelf[k]];
   precondScale_.setOnes();
-  costSinceFactor_ = s.jfo ? klu_.factorCostInIterations() : chol_.factorCostInIterations();
-  solvesSinceFactor_ = 1;  // the direct solve that follows
+  // The direct solve that follows costs nothing more.
+  refresh_.restart(factors_.factorCostInIterations(s.jfo), 1);
   return ok;
 }
 
@@ -238,11 +283,11 @@ void ActiveSetSolver::applyPreconditioner(const FilmSystem& s, double* v) {
 }
 
 void ActiveSetSolver::precondition(const FilmSystem& s, const double* r, double* z) {
-  if (useMg_ && !s.jfo) {
-    mg_.apply(s, r, z);
+  if (usesMultigrid() && !s.jfo) {
+    multigrid_.levels.apply(s, r, z);
     return;
   }
-  if (useMg_) {
+  if (usesMultigrid()) {
     // Mass-conserving Jacobian [A B; C D] (rows and columns: pressures of the full nodes, fill
     // fractions of the cavitated ones). Block lower-triangular preconditioner: z_p = MG(r_p)
     // for the Poiseuille block A, then z_theta = D^-1 (r_theta - C z_p) by one sweep along the
@@ -251,7 +296,7 @@ void ActiveSetSolver::precondition(const FilmSystem& s, const double* r, double*
     // fronts) is left to GMRES.
     for (int k = 0; k < s.n; ++k)
       mgRhs_[k] = colType_[k] == 1 ? r[k] : 0.0;
-    mg_.apply(s, mgRhs_.data(), z);
+    multigrid_.levels.apply(s, mgRhs_.data(), z);
     for (const int k : s.order) {
       if (colType_[k] != 2)
         continue;
@@ -280,84 +325,71 @@ void ActiveSetSolver::precondition(const FilmSystem& s, const double* r, double*
 }
 
 bool ActiveSetSolver::rebuildMultigrid(const FilmSystem& s) {
-  mgBuilt_ = mg_.rebuild(s, pRow_.data());
+  multigrid_.built = multigrid_.levels.rebuild(s, pRow_.data());
   ++multigridBuilds_;
   // Cost bookkeeping as for a factorisation, except that no direct solve follows.
-  costSinceFactor_ = mg_.rebuildCostInIterations();
-  solvesSinceFactor_ = 0;
-  return mgBuilt_;
+  refresh_.restart(multigrid_.levels.rebuildCostInIterations(), 0);
+  return multigrid_.built;
 }
 
 // Multigrid-preconditioned CG (GMRES for the mass-conserving model). The hierarchy's coarse
 // levels are lagged like the factorisation of the sparse-direct path (refreshed by the same cost
 // balance); its finest level always uses the current matrix. Should the Krylov solve fail even
 // with a fresh hierarchy, the current Jacobian is factorised (CHOLMOD / KLU) and solved directly.
-bool ActiveSetSolver::linearSolveMultigrid(const FilmSystem& s, double* b, double target,
-                                           double looseTarget) {
+LinearSolveOutcome ActiveSetSolver::linearSolveMultigrid(const FilmSystem& s, double* b,
+                                                         double target, double looseTarget) {
   Eigen::Map<Eigen::VectorXd> bv(b, s.n);
   bool fresh = false;
-  if (!mgBuilt_ || refactorNext_) {
-    refactorNext_ = false;
+  if (!multigrid_.built || refresh_.isDue())
     fresh = rebuildMultigrid(s);
-  }
   rhs_ = bv;
-  for (int attempt = 0; attempt < 2 && mgBuilt_; ++attempt) {
-    if (krylovSolve(s, b, target, looseTarget))
-      return true;
+  for (int attempt = 0; attempt < 2 && multigrid_.built; ++attempt) {
+    const LinearSolveOutcome outcome = krylovSolve(s, b, target, looseTarget);
+    if (outcome != LinearSolveOutcome::Failed)
+      return outcome;
     bv = rhs_;
-    stoppedLoose_ = false;
     if (fresh)
       break;
     fresh = rebuildMultigrid(s);
   }
   // Multigrid does not suit this operator (e.g. opposite anisotropies in one grid, or a
-  // degenerate one such as a steady film without sliding): Automatic factorises for the next
-  // mgPause_ calls, twice as many after each further failure (at most kMultigridLongestPause),
-  // and tries multigrid again after them: one bad operator must not cost the rest of a run.
-  gaveUpThisCall_ = true;
-  mgPausedCalls_ = mgPause_;
-  mgPause_ = std::min(2 * mgPause_, kMultigridLongestPause);
-  if (!valuesCurrent_)
+  // degenerate one such as a steady film without sliding): Automatic factorises for a pause
+  // of calls, twice as many after each further failure (at most kMultigridLongestPause), and
+  // tries multigrid again after them: one bad operator must not cost the rest of a run.
+  multigrid_.pause.recordFailure();
+  if (jacobian_ != JacobianState::Values)
     fillValues(s);
   // Fresh pivots: the Krylov failure says this operator differs from any earlier one.
-  const bool ok = factorValues(s, true);
-  if (ok)
-    solveWithFactor(s, b, 1);
-  return ok;
+  if (!factorValues(s, true))
+    return LinearSolveOutcome::Failed;
+  solveWithFactor(s, b, 1);
+  return LinearSolveOutcome::Solved;
 }
 
 void ActiveSetSolver::solveWithFactor(const FilmSystem& s, double* b, int columns) {
-  if (!s.jfo)
-    chol_.solve(b, b, columns);
-  else
-    klu_.solve(b, columns);
+  factors_.solve(s.jfo, b, columns);
 }
 
-bool ActiveSetSolver::krylovSolve(const FilmSystem& s, double* b, double target,
-                                  double looseTarget) {
+LinearSolveOutcome ActiveSetSolver::krylovSolve(const FilmSystem& s, double* b, double target,
+                                                double looseTarget) {
   const int before = krylovIterations_;
-  bool ok;
+  LinearSolveOutcome outcome;
   if (s.jfo) {
     // GMRES forms its iterate only at the end of a cycle: solve to the loose target and let the
     // active-set loop decide (a second, tight solve follows when the set did not move).
-    ok = gmres(s, b, looseTarget, kMaxKrylovIterations);
-    stoppedLoose_ = ok && looseTarget > target;
+    outcome = !gmres(s, b, looseTarget) ? LinearSolveOutcome::Failed
+              : looseTarget > target    ? LinearSolveOutcome::SolvedLoose
+                                        : LinearSolveOutcome::Solved;
   } else {
-    ok = pcg(s, b, target, looseTarget, kMaxKrylovIterations);
+    outcome = pcg(s, b, target, looseTarget, kMaxKrylovIterations);
   }
-  if (!ok)
-    return false;
+  if (outcome == LinearSolveOutcome::Failed)
+    return outcome;
   // Refresh the preconditioner when this solve cost more than the average per solve since it
   // was built (after a factorisation the count starts at 1 for its own direct solve; after a
   // multigrid build at 0, so the first solve is never judged against itself).
-  const int k = krylovIterations_ - before;
-  if (k > 0) {
-    costSinceFactor_ += k;
-    ++solvesSinceFactor_;
-    if (solvesSinceFactor_ > 1 && k > costSinceFactor_ / solvesSinceFactor_)
-      refactorNext_ = true;
-  }
-  return true;
+  refresh_.book(krylovIterations_ - before);
+  return outcome;
 }
 
 bool ActiveSetSolver::wouldChangeSet(const FilmSystem& s, const Eigen::VectorXd& dz,
@@ -380,15 +412,15 @@ bool ActiveSetSolver::wouldChangeSet(const FilmSystem& s, const Eigen::VectorXd&
   return false;
 }
 
-bool ActiveSetSolver::pcg(const FilmSystem& s, double* b, double target, double looseTarget,
-                          int maxIt) {
+LinearSolveOutcome ActiveSetSolver::pcg(const FilmSystem& s, double* b, double target,
+                                        double looseTarget, int maxIt) {
   const int n = s.n;
   Eigen::Map<Eigen::VectorXd> bv(b, n);
   x_.setZero();
   r_ = bv;
   if (r_.lpNorm<Eigen::Infinity>() <= target) {
     bv.setZero();
-    return true;
+    return LinearSolveOutcome::Solved;
   }
   // While the active set may still move, stop at the loose target if the step would change it;
   // otherwise carry on in the same Krylov space to the tight target.
@@ -400,7 +432,7 @@ bool ActiveSetSolver::pcg(const FilmSystem& s, double* b, double target, double 
     multiply(s, p_.data(), q_.data());
     const double pq = p_.dot(q_);
     if (!(pq > 0.0))
-      return false;
+      return LinearSolveOutcome::Failed;
     const double alpha = rz / pq;
     x_.noalias() += alpha * p_;
     r_.noalias() -= alpha * q_;
@@ -408,14 +440,13 @@ bool ActiveSetSolver::pcg(const FilmSystem& s, double* b, double target, double 
     const double rMax = r_.lpNorm<Eigen::Infinity>();
     if (rMax <= target) {
       bv = x_;
-      return true;
+      return LinearSolveOutcome::Solved;
     }
     if (checkLoose && rMax <= looseTarget) {
       checkLoose = false;
       if (wouldChangeSet(s, x_, looseTarget)) {
         bv = x_;
-        stoppedLoose_ = true;
-        return true;
+        return LinearSolveOutcome::SolvedLoose;
       }
     }
     precondition(s, r_.data(), z_.data());
@@ -424,139 +455,81 @@ bool ActiveSetSolver::pcg(const FilmSystem& s, double* b, double target, double 
     rz = rzNew;
     p_ = z_ + beta * p_;
   }
-  return false;
+  return LinearSolveOutcome::Failed;
 }
 
-bool ActiveSetSolver::gmres(const FilmSystem& s, double* b, double target, int maxIt) {
-  const int n = s.n;
-  const int m = kGmresRestart;
-  Eigen::Map<Eigen::VectorXd> bv(b, n);
-  x_.setZero();
-  r_ = bv;
-  double beta = r_.norm();
-  if (r_.lpNorm<Eigen::Infinity>() <= target) {
-    bv.setZero();
-    return true;
-  }
-  int its = 0;
-  bool missed = false;
-  while (true) {
-    // GMRES minimises the residual's 2-norm, the target is on its max norm, which is up to
-    // sqrt(n) times smaller. Stop when the 2-norm, scaled by the max/2-norm ratio of this
-    // cycle's starting residual, reaches the target: the true residual is then checked below
-    // and, should its shape have changed so that it misses, a restart carries on, stopping on
-    // the 2-norm itself (at most one such restart per solve near the iteration cap).
-    const double normRatio = missed ? 1.0 : r_.lpNorm<Eigen::Infinity>() / beta;
-    V_.col(0) = r_ / beta;
-    g_.setZero();
-    g_[0] = beta;
-    int j = 0;
-    while (j < m) {
-      precondition(s, V_.col(j).data(), z_.data());
-      multiply(s, z_.data(), q_.data());
-      for (int i = 0; i <= j; ++i) {  // modified Gram-Schmidt
-        H_(i, j) = q_.dot(V_.col(i));
-        q_.noalias() -= H_(i, j) * V_.col(i);
-      }
-      const double hNext = q_.norm();
-      if (hNext > 0.0)
-        V_.col(j + 1) = q_ / hNext;
-      for (int i = 0; i < j; ++i) {  // previous Givens rotations
-        const double t = cs_[i] * H_(i, j) + sn_[i] * H_(i + 1, j);
-        H_(i + 1, j) = -sn_[i] * H_(i, j) + cs_[i] * H_(i + 1, j);
-        H_(i, j) = t;
-      }
-      const double d = std::hypot(H_(j, j), hNext);
-      cs_[j] = d > 0.0 ? H_(j, j) / d : 1.0;
-      sn_[j] = d > 0.0 ? hNext / d : 0.0;
-      H_(j, j) = d;
-      g_[j + 1] = -sn_[j] * g_[j];
-      g_[j] = cs_[j] * g_[j];
-      ++j;
-      ++its;
-      ++krylovIterations_;
-      // |g_j| is the residual's 2-norm; normRatio turns it into an estimate of the max norm.
-      if (std::abs(g_[j]) * normRatio <= target || its >= maxIt || hNext == 0.0)
-        break;
-    }
-    for (int i = j - 1; i >= 0; --i) {  // back substitution H y = g
-      double t = g_[i];
-      for (int l = i + 1; l < j; ++l)
-        t -= H_(i, l) * y_[l];
-      y_[i] = t / H_(i, i);
-    }
-    q_.noalias() = V_.leftCols(j) * y_.head(j);
-    precondition(s, q_.data(), z_.data());
-    x_ += z_;
-    multiply(s, x_.data(), q_.data());
-    r_ = bv - q_;
-    if (r_.lpNorm<Eigen::Infinity>() <= target) {
-      bv = x_;
-      return true;
-    }
-    if (its >= maxIt || !r_.allFinite())
-      return false;
-    missed = true;
-    beta = r_.norm();
-  }
+bool ActiveSetSolver::gmres(const FilmSystem& s, double* b, double target) {
+  Eigen::Map<Eigen::VectorXd> bv(b, s.n);
+  GmresMaxNormTarget stop(target);
+  const GmresReport report = gmres_.solve(
+      [&](const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::VectorXd& y) {
+        multiply(s, x.data(), y.data());
+        return true;
+      },
+      [&](const Eigen::Ref<const Eigen::VectorXd>& r, Eigen::Ref<Eigen::VectorXd> z) {
+        precondition(s, r.data(), z.data());
+      },
+      bv, stop);
+  krylovIterations_ += report.iterations;
+  if (report.converged)
+    bv = gmres_.solution();
+  return report.converged;
 }
 
-bool ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target,
-                                  double looseTarget) {
-  stoppedLoose_ = false;
+LinearSolveOutcome ActiveSetSolver::linearSolve(const FilmSystem& s, double* b, double target,
+                                                double looseTarget) {
   Eigen::Map<Eigen::VectorXd> bv(b, s.n);
   if (bv.lpNorm<Eigen::Infinity>() <= target) {  // already converged: nothing to factorise
     bv.setZero();
-    return true;
+    return LinearSolveOutcome::Solved;
   }
   // A factorisation of this very Jacobian exists (sparse-direct path, or the multigrid path's
-  // fallback): solve directly. It is never stale here: refactorNext_ is only raised by a Krylov
-  // solve, which does not run while factorExact_ holds, and is cleared before every
-  // factorisation.
-  if (factorExact_) {
+  // fallback): solve directly. No refresh can be due here: it only becomes due after a Krylov
+  // solve, which does not run while the factorisation is exact, and every build restarts it.
+  if (factors_.isExact(s.jfo)) {
     solveWithFactor(s, b, 1);
-    return true;
+    return LinearSolveOutcome::Solved;
   }
-  if (useMg_)
+  if (usesMultigrid())
     return linearSolveMultigrid(s, b, target, looseTarget);
-  const bool haveFactor = s.jfo ? kluFactored_ : cholFactored_;
-  if (!haveFactor || refactorNext_) {
-    refactorNext_ = false;
+  if (!factors_.hasFactor(s.jfo) || refresh_.isDue()) {
     if (!factorCurrent(s))
-      return false;
+      return LinearSolveOutcome::Failed;
     solveWithFactor(s, b, 1);  // the fresh factorisation is of the current Jacobian
-    return true;
+    return LinearSolveOutcome::Solved;
   }
   rhs_ = Eigen::Map<Eigen::VectorXd>(b, s.n);  // keep the right-hand side for a fallback
-  if (krylovSolve(s, b, target, looseTarget))
-    return true;
+  const LinearSolveOutcome outcome = krylovSolve(s, b, target, looseTarget);
+  if (outcome != LinearSolveOutcome::Failed)
+    return outcome;
   // The lagged factorisation is too far from the current Jacobian: factorise it.
-  refactorNext_ = false;
-  stoppedLoose_ = false;
   if (!factorCurrent(s))
-    return false;
+    return LinearSolveOutcome::Failed;
   Eigen::Map<Eigen::VectorXd>(b, s.n) = rhs_;
   solveWithFactor(s, b, 1);
-  return true;
+  return LinearSolveOutcome::Solved;
+}
+
+void ActiveSetSolver::choosePreconditioner(const FilmSystem& s, const FilmSolverOptions& opt) {
+  const bool paused = multigrid_.pause.beginCall();
+  const bool mg =
+      opt.linearSolver == FastLinearSolver::Multigrid ||
+      (opt.linearSolver == FastLinearSolver::Automatic && s.n >= kMultigridMinNodes && !paused);
+  const PreconditionerKind kind =
+      mg ? PreconditionerKind::Multigrid : PreconditionerKind::LaggedFactor;
+  if (kind == preconditioner_)
+    return;
+  // The lagged preconditioner of the other path is stale: start afresh.
+  preconditioner_ = kind;
+  multigrid_.built = false;
+  factors_.drop();
+  refresh_.cancel();
 }
 
 IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& opt) {
   prepare(s);
-  const bool paused = mgPausedCalls_ > 0;
-  if (paused)
-    --mgPausedCalls_;
-  const bool mg =
-      opt.linearSolver == FastLinearSolver::Multigrid ||
-      (opt.linearSolver == FastLinearSolver::Automatic && s.n >= kMultigridMinNodes && !paused);
-  gaveUpThisCall_ = false;
-  if (mg != useMg_) {
-    // The lagged preconditioner of the other path is stale: start afresh.
-    useMg_ = mg;
-    mgBuilt_ = false;
-    cholFactored_ = kluFactored_ = false;
-    refactorNext_ = false;
-  }
-  jacobianCurrent_ = false;
+  choosePreconditioner(s, opt);
+  jacobian_ = JacobianState::Stale;
   IterationReport rep;
   double* p = s.p.data();
   double* th = s.theta.data();
@@ -587,12 +560,14 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
     if (!s.jfo)
       for (int k = 0; k < s.n; ++k)
         cavResidual_[k] = s.status[k] == kCav ? s.residualAt(k) : 0.0;
-    if (!linearSolve(s, step.data(), innerTarget, loose)) {
+    const LinearSolveOutcome outcome = linearSolve(s, step.data(), innerTarget, loose);
+    if (outcome == LinearSolveOutcome::Failed) {
       projectOntoConstraints(s);
       rep.residual = s.relativeResidual();
       return rep;
     }
-    const double target = stoppedLoose_ ? loose : innerTarget;  // accuracy of this step
+    // The accuracy of this step.
+    const double target = outcome == LinearSolveOutcome::SolvedLoose ? loose : innerTarget;
     double pScale = 0.0;
     for (int k = 0; k < s.n; ++k) {
       if (s.status[k] == kFull) {
@@ -635,7 +610,7 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
       }
     }
     if (changed) {
-      jacobianCurrent_ = false;
+      jacobian_ = JacobianState::Stale;
       setStable = false;
       continue;
     }
@@ -644,8 +619,8 @@ IterationReport ActiveSetSolver::solve(FilmSystem& s, const FilmSolverOptions& o
     rep.residual = s.relativeResidual();
     if (rep.residual <= tol) {
       rep.converged = true;
-      if (useMg_ && !gaveUpThisCall_)
-        mgPause_ = kMultigridFirstPause;  // multigrid suits the operator again
+      if (usesMultigrid())
+        multigrid_.pause.recordConvergedCall();
       return rep;
     }
     // Same sets but not yet accurate (inexact inner solve, round-off): another Newton step.
@@ -677,20 +652,20 @@ void ActiveSetSolver::projectOntoConstraints(FilmSystem& s) const {
 bool ActiveSetSolver::solveWithCurrentSet(FilmSystem& s, Eigen::MatrixXd& rhs, double relTol,
                                           bool mayFactorise) {
   prepare(s);
-  if (!jacobianCurrent_)
+  if (jacobian_ == JacobianState::Stale)
     fillJacobian(s);
   for (int k = 0; k < s.n; ++k)
     if (!eqRow_[k])
       rhs.row(k).setZero();
   const Eigen::Index m = rhs.cols();
   for (Eigen::Index c = 0; c < m; ++c) {
-    if (factorExact_) {  // the remaining columns are contiguous (column-major)
+    if (factors_.isExact(s.jfo)) {  // the remaining columns are contiguous (column-major)
       solveWithFactor(s, rhs.col(c).data(), static_cast<int>(m - c));
       return true;
     }
     const double target = relTol * rhs.col(c).lpNorm<Eigen::Infinity>();
     const int before = krylovIterations_;
-    if (!linearSolve(s, rhs.col(c).data(), target, target)) {
+    if (linearSolve(s, rhs.col(c).data(), target, target) == LinearSolveOutcome::Failed) {
       rhs.setZero();
       return false;
     }
@@ -702,26 +677,19 @@ bool ActiveSetSolver::solveWithCurrentSet(FilmSystem& s, Eigen::MatrixXd& rhs, d
     const int k = krylovIterations_ - before;
     if (!mayFactorise || remaining <= 0.0 || k <= 1)
       continue;
-    const double factorCost =
-        s.jfo ? klu_.factorCostInIterations() : chol_.factorCostInIterations();
-    if (remaining * (k - 1) <= factorCost)
+    if (remaining * (k - 1) <= factors_.factorCostInIterations(s.jfo))
       continue;
-    if (useMg_) {
-      // The factorisation serves only these columns: the multigrid's refresh bookkeeping
-      // (shared with factorisations) is left as it was.
-      const double cost = costSinceFactor_;
-      const int solves = solvesSinceFactor_;
-      if (!valuesCurrent_)
+    if (usesMultigrid()) {
+      // The factorisation serves only these columns: the multigrid's refresh rule (shared with
+      // factorisations) is left as it was.
+      if (jacobian_ != JacobianState::Values)
         fillValues(s);
-      factorValues(s, s.jfo && !kluFactored_);
-      costSinceFactor_ = cost;
-      solvesSinceFactor_ = solves;
+      factorValues(s, false);
     } else {
-      refactorNext_ = false;
       factorCurrent(s);
     }
-    // A failed factorisation leaves factorExact_ false: the next columns go on with Krylov
-    // (sparse-direct path: linearSolve then tries to factorise once more and reports failure).
+    // A failed factorisation is not exact: the next columns go on with Krylov (sparse-direct
+    // path: linearSolve then tries to factorise once more and reports failure).
   }
   return true;
 }

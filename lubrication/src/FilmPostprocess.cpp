@@ -175,6 +175,8 @@ void postprocess(const FilmGrid& grid, const FilmProblem& pr, const FilmSystem& 
 
   s.fluxDiagnostics(res.boundaryInflow_m3ps, res.boundaryOutflow_m3ps, res.storageRate_m3ps);
   res.viscousDissipation_W = calcViscousDissipation_W(grid, pr, s, st.fillFraction);
+  s.calcEdgeOutflows(res);
+  res.oilVolume_m3 = (A * s.theta * s.hT).sum();
 
   if (dP) {
     // Column by column: Eigen products would evaluate into temporaries (allocations).

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace pistondyn::lubrication::detail {
 
@@ -33,6 +34,103 @@ double edgeSupply(const FilmEdge& e, int along) {
   return e.supplyFilmPerNode_m.size() > 0 ? e.supplyFilmPerNode_m[along] : e.supplyFilm_m;
 }
 
+// What the face values along one grid direction need (FilmSystem::assembleFaces).
+struct FaceInputs {
+  const FilmProblem& pr;
+  const Eigen::ArrayXd& conductance;                // FilmSystem::nodeConductanceX or Y
+  const Eigen::ArrayXd& content;                    // FilmSystem::couetteContentX or Y
+  const Eigen::ArrayXd& eta;                        // nodal viscosity [Pa s]
+  const std::vector<NodeFlowFactors>& kneeFactors;  // FilmSystem::kneeFactors
+  bool linearGapFaces;                              // FaceValues::LinearGap
+  bool slidingAlong;                                // the direction is the sliding one
+  double floor_m;                                   // the gap floor h_c (0: none)
+};
+
+// A face across the knee of a floored gap (FilmProblem::gapFloor_m), walked from node a to
+// node b in pieces between the knee breakpoints (h is linear along the face, so each
+// breakpoint has its place s); f and C are linear between the pieces' ends (the nodes' own
+// values, or the model's at the breakpoint's film gap with the viscosity interpolated along
+// the face); a piece inside the breakpoints' range integrates 1/(f h_f^3) and C/(f h_f^3) at
+// 3 Gauss points with h_f of the nominal gap there, a piece beyond it (a node deep in contact
+// or far from it) takes h_f linear (the LinearGap formulas); the pieces' resistances mean(1/K)
+// and mean(C/K) add.
+class FaceAcrossKnee {
+ public:
+  // The walk starts at node a: nominal gap, film gap, conductance factor, Couette content.
+  FaceAcrossKnee(double na, double ha, double fa, double ca, double floor_m)
+      : floor_(floor_m),
+        low_(floor_m * kKneeBreakpoints[0]),
+        high_(floor_m * kKneeBreakpoints[kKneePoints - 1]),
+        n1_(na),
+        h1_(ha),
+        f1_(fa),
+        c1_(ca) {}
+
+  // The piece from the walk's place to place s2 (in [0, 1] along the face), whose end has the
+  // nominal gap n2, film gap h2, conductance factor f2 and content c2.
+  void addPiece(double s2, double n2, double h2, double f2, double c2) {
+    const double len = s2 - s1_;
+    if (std::min(n1_, n2) >= high_ || std::max(n1_, n2) <= low_) {
+      const double denom = 2.0 * h1_ * h1_ * h2 * h2 * 0.5 * (f1_ + f2);
+      resistance_ += len * (h1_ + h2) / denom;
+      content_ += len * (c1_ * h2 + c2 * h1_) / denom;
+    } else {
+      for (int g = 0; g < 3; ++g) {
+        const double hf = calcFlooredGap(n1_ + kKneeGaussT[g] * (n2 - n1_), floor_).film_m;
+        // f and C linear in h_f between the piece's ends (C = h_f exactly when smooth).
+        const double u = h2 != h1_ ? (hf - h1_) / (h2 - h1_) : 0.5;
+        const double wk = len * kKneeGaussW[g] / ((f1_ + u * (f2 - f1_)) * hf * hf * hf);
+        resistance_ += wk;
+        content_ += wk * (c1_ + u * (c2 - c1_));
+      }
+    }
+    s1_ = s2, n1_ = n2, h1_ = h2, f1_ = f2, c1_ = c2;
+  }
+
+  // (K_f, C_f) of the pieces so far.
+  std::pair<double, double> faceValues() const {
+    return {1.0 / resistance_, content_ / resistance_};
+  }
+
+ private:
+  double floor_, low_, high_;            // h_c, and the breakpoints' range in nominal gap
+  double s1_ = 0.0, n1_, h1_, f1_, c1_;  // the walk's place and its values there
+  double resistance_ = 0.0, content_ = 0.0;
+};
+
+// Face values (K_f, C_f) of the face between nodes a and b (FilmSystem::assembleFaces).
+std::pair<double, double> calcFaceValues(const FaceInputs& in, int a, int b) {
+  const Eigen::ArrayXd& f = in.conductance;
+  const Eigen::ArrayXd& C = in.content;
+  if (!in.linearGapFaces)
+    return {0.5 * (f[a] + f[b]), 0.5 * (C[a] + C[b])};
+  const double floor = in.floor_m;
+  const double ha = in.pr.gap_m[a], hb = in.pr.gap_m[b];
+  const double na = floor > 0.0 ? calcNominalGap(ha, floor) : ha;
+  const double nb = floor > 0.0 ? calcNominalGap(hb, floor) : hb;
+  if (!(floor > 0.0) || std::min(na, nb) >= floor * kKneeFaceLimit || na == nb) {
+    return {0.5 * (f[a] + f[b]) * 2.0 * ha * ha * hb * hb / (ha + hb),
+            (C[a] * hb + C[b] * ha) / (ha + hb)};
+  }
+  // Walk from a to b through the breakpoints strictly between na and nb.
+  const bool up = nb > na;
+  FaceAcrossKnee face(na, ha, f[a], C[a], floor);
+  for (int q = 0; q < kKneePoints; ++q) {
+    const int m = up ? q : kKneePoints - 1 - q;
+    const double bp = kKneeBreakpoints[m] * floor;
+    if (!(up ? (bp > na && bp < nb) : (bp < na && bp > nb)))
+      continue;
+    const double s = (bp - na) / (nb - na);
+    const NodeFlowFactors& kf = in.kneeFactors[static_cast<std::size_t>(m)];
+    const double mu = in.eta[a] + s * (in.eta[b] - in.eta[a]);
+    const double phi = in.slidingAlong ? kf.phiPressureSliding : kf.phiPressureCross;
+    const double c = kf.expectedGap_m + (in.slidingAlong ? kf.sigmaPhiS_m : 0.0);
+    face.addPiece(s, bp, calcFlooredGap(bp, floor).film_m, phi / (12.0 * mu), c);
+  }
+  face.addPiece(1.0, nb, hb, f[b], C[b]);
+  return face.faceValues();
+}
+
 }  // namespace
 
 void FilmSystem::resizeFor(const FilmGrid& grid) {
@@ -57,12 +155,41 @@ void FilmSystem::resizeFor(const FilmGrid& grid) {
     }
   }
   order.reserve(n);
-  for (Eigen::ArrayXd* a :
-       {&tE,         &tW,   &tN,      &tS,       &diagP,     &couE,      &couN,  &aOut,
-        &inCx,       &inCy, &squeeze, &capacity, &thetaPrev, &thetaCoef, &src,   &fixedPressure,
-        &fixedTheta, &hT,   &dhTdh,   &eta,      &phiF,      &phiFs,     &phiFp, &p,
-        &theta,      &fillCorrE, &fillCorrN, &fillCorrOut, &fillCorrScratch, &fillLimitE,
-        &fillLimitN}) {
+  for (Eigen::ArrayXd* a : {&tE,
+                            &tW,
+                            &tN,
+                            &tS,
+                            &diagP,
+                            &couE,
+                            &couN,
+                            &aOut,
+                            &inCx,
+                            &inCy,
+                            &squeeze,
+                            &capacity,
+                            &thetaPrev,
+                            &thetaCoef,
+                            &src,
+                            &fixedPressure,
+                            &fixedTheta,
+                            &hT,
+                            &dhTdh,
+                            &eta,
+                            &phiF,
+                            &phiFs,
+                            &phiFp,
+                            &p,
+                            &theta,
+                            &fillCorrE,
+                            &fillCorrN,
+                            &fillCorrOut,
+                            &fillCorrScratch,
+                            &fillLimitE,
+                            &fillLimitN,
+                            &nodeConductanceX,
+                            &nodeConductanceY,
+                            &couetteContentX,
+                            &couetteContentY}) {
     a->setZero(n);
   }
   inIx.assign(n, 0);
@@ -91,23 +218,23 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
   model = pr.cavitation;
   jfo = model == CavitationModel::MassConserving;
   pCav = pr.cavitationPressure_Pa;
-
   const double Ux = pr.slidingVelocity_mps.x();
   const double Uy = pr.slidingVelocity_mps.y();
   const bool slideY = std::abs(Uy) >= std::abs(Ux);
-  const bool perNodeEta = pr.viscosityPerNode_Pas.size() > 0;
-  const bool hasRate = pr.gapRate_mps.size() > 0;
-  const Eigen::ArrayXd& area = grid.areaWeights_m2();
-  const Eigen::VectorXd& wx = grid.xWeights_m();
-  const Eigen::VectorXd& wy = grid.yWeights_m();
+  calcNodeConductances(pr, slideY);
+  assembleFaces(grid, pr, slideY);
+  assembleUpwindCouette(Ux, Uy);
+  assembleStorage(grid, pr);
+  classifyFixedNodes(grid, pr);
+  calcResidualScale();
+  // Needs the capacities and the fixed nodes; its fluxes are bounded by the capacities, so
+  // they do not enter the residual's scale.
+  assembleFillFractionCorrection(grid, pr);
+  buildSweepOrder(Ux, Uy);
+}
 
-  // Nodal conductances phi_p h^3 / (12 eta) (NodalMean) or their coefficients phi_p / (12 eta)
-  // without the h^3 (LinearGap, which weighs the gaps itself), and Couette contents, are only
-  // needed here: reuse face arrays as scratch (tW, tS, aOut, src are overwritten below).
-  Eigen::ArrayXd& fx = tW;
-  Eigen::ArrayXd& fy = tS;
-  Eigen::ArrayXd& Cx = aOut;
-  Eigen::ArrayXd& Cy = src;
+void FilmSystem::calcNodeConductances(const FilmProblem& pr, bool slideY) {
+  const bool perNodeEta = pr.viscosityPerNode_Pas.size() > 0;
   for (int k = 0; k < n; ++k) {
     const NodeFlowFactors& f = nodeFactors[static_cast<std::size_t>(k)];
     const double mu = perNodeEta ? pr.viscosityPerNode_Pas[k] : pr.viscosity_Pas;
@@ -115,10 +242,10 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
     const double base = pr.faces == FaceValues::LinearGap ? 1.0 / (12.0 * mu)
                                                           : h * h * h / (12.0 * mu);
     const double phiSlide = f.phiPressureSliding, phiCross = f.phiPressureCross;
-    fx[k] = base * (slideY ? phiCross : phiSlide);
-    fy[k] = base * (slideY ? phiSlide : phiCross);
-    Cx[k] = f.expectedGap_m + (slideY ? 0.0 : f.sigmaPhiS_m);
-    Cy[k] = f.expectedGap_m + (slideY ? f.sigmaPhiS_m : 0.0);
+    nodeConductanceX[k] = base * (slideY ? phiCross : phiSlide);
+    nodeConductanceY[k] = base * (slideY ? phiSlide : phiCross);
+    couetteContentX[k] = f.expectedGap_m + (slideY ? 0.0 : f.sigmaPhiS_m);
+    couetteContentY[k] = f.expectedGap_m + (slideY ? f.sigmaPhiS_m : 0.0);
     hT[k] = f.expectedGap_m;
     dhTdh[k] = f.dExpectedGap_dh;
     eta[k] = mu;
@@ -126,93 +253,49 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
     phiFs[k] = f.phiFs;
     phiFp[k] = f.phiFp;
   }
+}
 
-  // Face values (FilmProblem.h, "Discrete equation", FaceValues). NodalMean: the means of the
-  // two nodes' K and C. LinearGap: exact for a gap linear between the two nodes. Along the
-  // face the flux q = -K dp/ds + U C / 2 is constant, so the face carries
-  //   K_f = 1 / mean(1/K)  and  C_f = mean(C/K) / mean(1/K),
-  // which for K = f h^3 (f = phi_p / (12 eta) averaged over the two nodes) and C linear are
-  //   K_f = f 2 ha^2 hb^2 / (ha + hb),   C_f = (Ca hb + Cb ha) / (ha + hb).
-  // Both are the arithmetic means where ha = hb; unlike those, they stay accurate where the
-  // gap changes by a large factor within a cell, as around a small thin-film patch
-  // (lubrication/README.md, "Face values": a paraboloid patch one cell wide carries its
-  // closed-form squeeze load within 4.7 %, against -41 % with the nodal means).
-  //
-  // Floored gaps (FilmProblem::gapFloor_m): where one of a face's nominal gaps h lies below
-  // kKneeFaceLimit h_c, the face is split at the knee breakpoints between its two nominal gaps
-  // (h is linear along the face, so each breakpoint has its place s); f and C are linear
-  // between the pieces' ends (the nodes' own values, or the model's at the breakpoint's film
-  // gap with the viscosity interpolated along the face); a piece inside the breakpoints' range
-  // integrates 1/(f h_f^3) and C/(f h_f^3) at 3 Gauss points with h_f of the nominal gap
-  // there, a piece beyond it (a node deep in contact or far from it) takes h_f linear (the
-  // formulas above); the pieces' resistances mean(1/K) and mean(C/K) add.
+void FilmSystem::updateKneeFactors(const FilmProblem& pr, double floor_m) {
+  const FlowFactorModel* factorModel = pr.flowFactors;
+  if (kneeFactors.size() == static_cast<std::size_t>(kKneePoints) && kneeModel == factorModel &&
+      kneeFloor_m == floor_m)
+    return;
+  const SmoothFlowFactors smooth;
+  const FlowFactorModel& ffm = factorModel ? *factorModel : smooth;
+  kneeFactors.resize(kKneePoints);
+  for (int m = 0; m < kKneePoints; ++m)
+    kneeFactors[m] = ffm.calcFactors(calcFlooredGap(kKneeBreakpoints[m] * floor_m, floor_m).film_m);
+  kneeModel = factorModel;
+  kneeFloor_m = floor_m;
+}
+
+// Face values (FilmProblem.h, "Discrete equation", FaceValues). NodalMean: the means of the
+// two nodes' K and C. LinearGap: exact for a gap linear between the two nodes. Along the
+// face the flux q = -K dp/ds + U C / 2 is constant, so the face carries
+//   K_f = 1 / mean(1/K)  and  C_f = mean(C/K) / mean(1/K),
+// which for K = f h^3 (f = phi_p / (12 eta) averaged over the two nodes) and C linear are
+//   K_f = f 2 ha^2 hb^2 / (ha + hb),   C_f = (Ca hb + Cb ha) / (ha + hb).
+// Both are the arithmetic means where ha = hb; unlike those, they stay accurate where the
+// gap changes by a large factor within a cell, as around a small thin-film patch
+// (lubrication/README.md, "Face values": a paraboloid patch one cell wide carries its
+// closed-form squeeze load within 4.7 %, against -41 % with the nodal means).
+//
+// Floored gaps (FilmProblem::gapFloor_m): where one of a face's nominal gaps h lies below
+// kKneeFaceLimit h_c, the face is split at the knee breakpoints between its two nominal gaps
+// (FaceAcrossKnee).
+void FilmSystem::assembleFaces(const FilmGrid& grid, const FilmProblem& pr, bool slideY) {
   const bool linearGapFaces = pr.faces == FaceValues::LinearGap;
   const double floor = linearGapFaces ? pr.gapFloor_m : 0.0;
-  if (floor > 0.0) {
-    const FlowFactorModel* factorModel = pr.flowFactors;
-    if (kneeFactors.size() != static_cast<std::size_t>(kKneePoints) || kneeModel != factorModel ||
-        kneeFloor_m != floor) {
-      const SmoothFlowFactors smooth;
-      const FlowFactorModel& ffm = factorModel ? *factorModel : smooth;
-      kneeFactors.resize(kKneePoints);
-      for (int m = 0; m < kKneePoints; ++m)
-        kneeFactors[m] = ffm.calcFactors(calcFlooredGap(kKneeBreakpoints[m] * floor, floor).film_m);
-      kneeModel = factorModel;
-      kneeFloor_m = floor;
-    }
-  }
-  const double kneeLimit = floor * kKneeFaceLimit;
-  const double kneeLow = floor * kKneeBreakpoints[0], kneeHigh = floor * kKneeBreakpoints[kKneePoints - 1];
-  // Face (K_f, C_f) between nodes a and b; alongX selects the x factors (fx, Cx).
-  auto faceValues = [&](int a, int b, bool alongX) -> std::pair<double, double> {
-    const Eigen::ArrayXd& f = alongX ? fx : fy;
-    const Eigen::ArrayXd& C = alongX ? Cx : Cy;
-    if (!linearGapFaces)
-      return {0.5 * (f[a] + f[b]), 0.5 * (C[a] + C[b])};
-    const double ha = pr.gap_m[a], hb = pr.gap_m[b];
-    const double na = floor > 0.0 ? calcNominalGap(ha, floor) : ha;
-    const double nb = floor > 0.0 ? calcNominalGap(hb, floor) : hb;
-    if (!(floor > 0.0) || std::min(na, nb) >= kneeLimit || na == nb) {
-      return {0.5 * (f[a] + f[b]) * 2.0 * ha * ha * hb * hb / (ha + hb),
-              (C[a] * hb + C[b] * ha) / (ha + hb)};
-    }
-    // Walk from a to b through the breakpoints strictly between na and nb.
-    const bool up = nb > na;
-    double s1 = 0.0, n1 = na, h1 = ha, f1 = f[a], c1 = C[a];
-    double resistance = 0.0, content = 0.0;
-    auto piece = [&](double s2, double n2, double h2, double f2, double c2) {
-      const double len = s2 - s1;
-      if (std::min(n1, n2) >= kneeHigh || std::max(n1, n2) <= kneeLow) {
-        const double denom = 2.0 * h1 * h1 * h2 * h2 * 0.5 * (f1 + f2);
-        resistance += len * (h1 + h2) / denom;
-        content += len * (c1 * h2 + c2 * h1) / denom;
-      } else {
-        for (int g = 0; g < 3; ++g) {
-          const double hf = calcFlooredGap(n1 + kKneeGaussT[g] * (n2 - n1), floor).film_m;
-          // f and C linear in h_f between the piece's ends (C = h_f exactly when smooth).
-          const double u = h2 != h1 ? (hf - h1) / (h2 - h1) : 0.5;
-          const double wk = len * kKneeGaussW[g] / ((f1 + u * (f2 - f1)) * hf * hf * hf);
-          resistance += wk;
-          content += wk * (c1 + u * (c2 - c1));
-        }
-      }
-      s1 = s2, n1 = n2, h1 = h2, f1 = f2, c1 = c2;
-    };
-    for (int q = 0; q < kKneePoints; ++q) {
-      const int m = up ? q : kKneePoints - 1 - q;
-      const double bp = kKneeBreakpoints[m] * floor;
-      if (!(up ? (bp > na && bp < nb) : (bp < na && bp > nb)))
-        continue;
-      const double s = (bp - na) / (nb - na);
-      const NodeFlowFactors& kf = kneeFactors[static_cast<std::size_t>(m)];
-      const double mu = eta[a] + s * (eta[b] - eta[a]);
-      const double phi = (slideY == !alongX) ? kf.phiPressureSliding : kf.phiPressureCross;
-      const double c = kf.expectedGap_m + ((slideY == !alongX) ? kf.sigmaPhiS_m : 0.0);
-      piece(s, bp, calcFlooredGap(bp, floor).film_m, phi / (12.0 * mu), c);
-    }
-    piece(1.0, nb, hb, f[b], C[b]);
-    return {1.0 / resistance, content / resistance};
-  };
+  if (floor > 0.0)
+    updateKneeFactors(pr, floor);
+  const FaceInputs alongX{pr,          nodeConductanceX, couetteContentX, eta,
+                          kneeFactors, linearGapFaces,   !slideY,         floor};
+  const FaceInputs alongY{pr,          nodeConductanceY, couetteContentY, eta,
+                          kneeFactors, linearGapFaces,   slideY,          floor};
+  const Eigen::VectorXd& wx = grid.xWeights_m();
+  const Eigen::VectorXd& wy = grid.yWeights_m();
+  const double Ux = pr.slidingVelocity_mps.x();
+  const double Uy = pr.slidingVelocity_mps.y();
   for (int j = 0; j < ny; ++j) {
     const double dyN = grid.dyNorth_m(j);
     for (int i = 0; i < nx; ++i) {
@@ -220,7 +303,7 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
       const int e = nbE[k];
       if (e != k) {
         const double dx = grid.dxEast_m(i);
-        const auto [K, C] = faceValues(k, e, true);
+        const auto [K, C] = calcFaceValues(alongX, k, e);
         tE[k] = K * wy[j] / dx;
         couE[k] = 0.5 * Ux * C * wy[j];
       } else {
@@ -229,7 +312,7 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
       }
       const int no = nbN[k];
       if (no != k) {
-        const auto [K, C] = faceValues(k, no, false);
+        const auto [K, C] = calcFaceValues(alongY, k, no);
         tN[k] = K * wx[i] / dyN;
         couN[k] = 0.5 * Uy * C * wx[i];
       } else {
@@ -238,6 +321,9 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
       }
     }
   }
+}
+
+void FilmSystem::assembleUpwindCouette(double Ux, double Uy) {
   // West / south transmissibilities and the upwind Couette coefficients.
   for (int k = 0; k < n; ++k) {
     const int w = nbW[k], s = nbS[k], e = nbE[k], no = nbN[k];
@@ -275,7 +361,11 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
     }
     aOut[k] = out;
   }
+}
 
+void FilmSystem::assembleStorage(const FilmGrid& grid, const FilmProblem& pr) {
+  const Eigen::ArrayXd& area = grid.areaWeights_m2();
+  const bool hasRate = pr.gapRate_mps.size() > 0;
   const bool transient = jfo && std::isfinite(pr.timeStep_s);
   const bool hasPrev = pr.history.last.fillFraction.size() > 0;
   // Backward Euler: capacity = A hT / h, reference theta_n. Variable-step BDF2
@@ -316,40 +406,56 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
     }
     thetaCoef[k] = aOut[k] + squeeze[k] + capacity[k];
   }
+}
 
-  // ---- fixed nodes: open edges, starved inlets, dry zones ----
+// ---- fixed nodes: open edges, starved inlets, dry zones ----
+void FilmSystem::classifyFixedNodes(const FilmGrid& grid, const FilmProblem& pr) {
   std::fill(status.begin(), status.end(), static_cast<std::uint8_t>(kFull));
   std::fill(dry.begin(), dry.end(), static_cast<std::uint8_t>(0));
   std::fill(fillFromInterior.begin(), fillFromInterior.end(), static_cast<std::uint8_t>(0));
   fixedTheta.setOnes();
   fixedPressure.setZero();
+  fixEdgeNodes(grid, pr);
+  // Partial-flooding heuristic of the non-conservative models: march inwards from a starved
+  // inflow edge until the gap can be filled by the supply.
+  if (!jfo)
+    markDryInlets(pr);
+}
+
+// Edge node k of `edge` (at index `along` along it). inflowCouette: full-film Couette flux
+// through the node's face into the region (> 0 when surface 1 slides inwards); supplyFlux =
+// U_n * supply * edge length of the node. Starved edge nodes of the non-conservative models
+// are marked dry by the partial-flooding march (markDryInlets), which starts at every inflow
+// edge node (corners included).
+void FilmSystem::fixEdgeNode(int k, const FilmEdge& edge, int along, double inflowCouette,
+                             double normalSpeed, double edgeLength) {
+  status[k] = kFixed;
+  fixedPressure[k] = edge.pressure_Pa;
+  fixedTheta[k] = 1.0;
+  // An edge above p_cav is the oil bath at that pressure (full); one at p_cav that no oil
+  // enters through holds what the film carries there (FilmSystem.h).
+  fillFromInterior[k] = jfo && !(normalSpeed > 0.0) && !(edge.pressure_Pa > pCav);
+  if (!(normalSpeed > 0.0))
+    return;
+  const double s = edgeSupply(edge, along);
+  if (!std::isfinite(s))
+    return;
+  if (jfo) {
+    // Fill fraction that makes the Couette inflow exactly U_n * supply per edge length.
+    const double supplyFlux = normalSpeed * s * edgeLength;
+    const double th = inflowCouette > supplyFlux ? supplyFlux / inflowCouette : 1.0;
+    fixedTheta[k] = th;
+    if (th < 1.0)
+      fixedPressure[k] = pCav;
+  }
+}
+
+void FilmSystem::fixEdgeNodes(const FilmGrid& grid, const FilmProblem& pr) {
   const FilmBoundary& b = pr.boundary;
-  // inflowCouette: full-film Couette flux through the node's face into the region (> 0 when
-  // surface 1 slides inwards); supplyFlux = U_n * supply * edge length of the node. Starved
-  // edge nodes of the non-conservative models are marked dry by the partial-flooding march
-  // below, which starts at every inflow edge node (corners included).
-  auto fixEdgeNode = [&](int k, const FilmEdge& edge, int along, double inflowCouette,
-                         double normalSpeed, double edgeLength) {
-    status[k] = kFixed;
-    fixedPressure[k] = edge.pressure_Pa;
-    fixedTheta[k] = 1.0;
-    // An edge above p_cav is the oil bath at that pressure (full); one at p_cav that no oil
-    // enters through holds what the film carries there (FilmSystem.h).
-    fillFromInterior[k] = jfo && !(normalSpeed > 0.0) && !(edge.pressure_Pa > pCav);
-    if (!(normalSpeed > 0.0))
-      return;
-    const double s = edgeSupply(edge, along);
-    if (!std::isfinite(s))
-      return;
-    if (jfo) {
-      // Fill fraction that makes the Couette inflow exactly U_n * supply per edge length.
-      const double supplyFlux = normalSpeed * s * edgeLength;
-      const double th = inflowCouette > supplyFlux ? supplyFlux / inflowCouette : 1.0;
-      fixedTheta[k] = th;
-      if (th < 1.0)
-        fixedPressure[k] = pCav;
-    }
-  };
+  const double Ux = pr.slidingVelocity_mps.x();
+  const double Uy = pr.slidingVelocity_mps.y();
+  const Eigen::VectorXd& wx = grid.xWeights_m();
+  const Eigen::VectorXd& wy = grid.yWeights_m();
   // y edges first, then x edges so that corners take the x edge (FilmBoundary comment).
   for (int i = 0; i < nx; ++i) {
     const int kb = i, kt = i + nx * (ny - 1);
@@ -363,37 +469,41 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
       fixEdgeNode(kr, b.xMax, j, -couE[nbW[kr]], -Ux, wy[j]);
     }
   }
-  // Partial-flooding heuristic of the non-conservative models: march inwards from a starved
-  // inflow edge until the gap can be filled by the supply.
-  if (!jfo) {
-    auto march = [&](const FilmEdge& edge, int along, int start, int step, int count) {
-      const double s = edgeSupply(edge, along);
-      if (!std::isfinite(s))
-        return;
-      for (int m = 0, k = start; m < count; ++m, k += step) {
-        if (!(pr.gap_m[k] > 2.0 * s))
-          break;
-        if (status[k] != kFixed) {
-          status[k] = kFixed;
-          fixedPressure[k] = edge.pressure_Pa;
-        }
-        dry[k] = 1;
-      }
-    };
-    if (Uy > 0.0)
-      for (int i = 0; i < nx; ++i)
-        march(b.yMin, i, i, nx, ny);
-    if (Uy < 0.0)
-      for (int i = 0; i < nx; ++i)
-        march(b.yMax, i, i + nx * (ny - 1), -nx, ny);
-    if (!periodicX && Ux > 0.0)
-      for (int j = 0; j < ny; ++j)
-        march(b.xMin, j, nx * j, 1, nx);
-    if (!periodicX && Ux < 0.0)
-      for (int j = 0; j < ny; ++j)
-        march(b.xMax, j, nx - 1 + nx * j, -1, nx);
-  }
+}
 
+void FilmSystem::markDryInlets(const FilmProblem& pr) {
+  const FilmBoundary& b = pr.boundary;
+  const double Ux = pr.slidingVelocity_mps.x();
+  const double Uy = pr.slidingVelocity_mps.y();
+  auto march = [&](const FilmEdge& edge, int along, int start, int step, int count) {
+    const double s = edgeSupply(edge, along);
+    if (!std::isfinite(s))
+      return;
+    for (int m = 0, k = start; m < count; ++m, k += step) {
+      if (!(pr.gap_m[k] > 2.0 * s))
+        break;
+      if (status[k] != kFixed) {
+        status[k] = kFixed;
+        fixedPressure[k] = edge.pressure_Pa;
+      }
+      dry[k] = 1;
+    }
+  };
+  if (Uy > 0.0)
+    for (int i = 0; i < nx; ++i)
+      march(b.yMin, i, i, nx, ny);
+  if (Uy < 0.0)
+    for (int i = 0; i < nx; ++i)
+      march(b.yMax, i, i + nx * (ny - 1), -nx, ny);
+  if (!periodicX && Ux > 0.0)
+    for (int j = 0; j < ny; ++j)
+      march(b.xMin, j, nx * j, 1, nx);
+  if (!periodicX && Ux < 0.0)
+    for (int j = 0; j < ny; ++j)
+      march(b.xMax, j, nx - 1 + nx * j, -1, nx);
+}
+
+void FilmSystem::calcResidualScale() {
   // Pressure spread that drives Poiseuille flux through the faces (residual scale).
   double pMin = std::numeric_limits<double>::infinity(), pMax = -pMin;
   if (model != CavitationModel::None)
@@ -424,11 +534,9 @@ void FilmSystem::assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem
   }
   if (!(residualScale > 0.0))
     residualScale = 1.0;
+}
 
-  // Needs the capacities and the fixed nodes; its fluxes are bounded by the capacities, so
-  // they do not enter the residual's scale.
-  assembleFillFractionCorrection(grid, pr);
-
+void FilmSystem::buildSweepOrder(double Ux, double Uy) {
   // Sweep order for Gauss-Seidel: lexicographic, following the sliding direction.
   order.clear();
   const bool up = Uy >= 0.0, right = Ux >= 0.0;
@@ -482,6 +590,47 @@ void FilmSystem::fluxDiagnostics(double& inflow, double& outflow, double& storag
       add(tS[k] * (p[k] - p[s]) - couN[s] * (couN[s] >= 0.0 ? theta[s] : theta[k]) -
           fillCorrN[s]);
   }
+}
+
+double FilmSystem::faceOutflow(int k, int e) const {
+  if (e == nbE[k] && e != k)
+    return tE[k] * (p[k] - p[e]) + couE[k] * (couE[k] >= 0.0 ? theta[k] : theta[e]) + fillCorrE[k];
+  if (e == nbW[k] && e != k)
+    return tW[k] * (p[k] - p[e]) - couE[e] * (couE[e] >= 0.0 ? theta[e] : theta[k]) - fillCorrE[e];
+  if (e == nbN[k] && e != k)
+    return tN[k] * (p[k] - p[e]) + couN[k] * (couN[k] >= 0.0 ? theta[k] : theta[e]) + fillCorrN[k];
+  if (e == nbS[k] && e != k)
+    return tS[k] * (p[k] - p[e]) - couN[e] * (couN[e] >= 0.0 ? theta[e] : theta[k]) - fillCorrN[e];
+  return 0.0;
+}
+
+void FilmSystem::calcEdgeOutflows(FilmResult& r) const {
+  // The flow across the edge line at edge node e: what the node inside sends into e's control
+  // volume, less what that half (quarter) cell keeps as its gap grows.
+  const auto edge = [&](int e, int inside) {
+    const double face = (inside >= 0 && status[inside] != kFixed) ? faceOutflow(inside, e) : 0.0;
+    return face - theta[e] * squeeze[e];
+  };
+  r.edgeOutflowYMin_m3ps.resize(nx);
+  r.edgeOutflowYMax_m3ps.resize(nx);
+  for (int i = 0; i < nx; ++i) {
+    r.edgeOutflowYMin_m3ps[i] = edge(i, ny > 1 ? i + nx : -1);
+    r.edgeOutflowYMax_m3ps[i] = edge(i + nx * (ny - 1), ny > 1 ? i + nx * (ny - 2) : -1);
+  }
+  const int rows = periodicX ? 0 : ny;
+  r.edgeOutflowXMin_m3ps.setZero(rows);
+  r.edgeOutflowXMax_m3ps.setZero(rows);
+  for (int j = 1; j + 1 < rows; ++j) {  // corners belong to the y edges
+    r.edgeOutflowXMin_m3ps[j] = edge(nx * j, nx > 1 ? 1 + nx * j : -1);
+    r.edgeOutflowXMax_m3ps[j] = edge(nx - 1 + nx * j, nx > 1 ? nx - 2 + nx * j : -1);
+  }
+  double in = 0.0, out = 0.0;
+  for (const Eigen::ArrayXd* a : {&r.edgeOutflowYMin_m3ps, &r.edgeOutflowYMax_m3ps,
+                                  &r.edgeOutflowXMin_m3ps, &r.edgeOutflowXMax_m3ps})
+    for (Eigen::Index k = 0; k < a->size(); ++k)
+      ((*a)[k] >= 0.0 ? out : in) += std::abs((*a)[k]);
+  r.edgeInflow_m3ps = in;
+  r.edgeOutflow_m3ps = out;
 }
 
 }  // namespace pistondyn::lubrication::detail

@@ -73,6 +73,11 @@ struct FilmSystem {
 
   // Nodal quantities kept for post-processing.
   Eigen::ArrayXd hT, dhTdh, eta, phiF, phiFs, phiFp;
+  // Nodal factors of the face values along x and y (assembleFaces): the conductance
+  // phi_p h^3 / (12 eta) [m^3/(Pa s)] (FaceValues::NodalMean), or phi_p / (12 eta) [1/(Pa s)]
+  // without the h^3 (FaceValues::LinearGap, which weighs the gaps itself), and the Couette
+  // content hT (+ sigma phi_s along the sliding direction) [m].
+  Eigen::ArrayXd nodeConductanceX, nodeConductanceY, couetteContentX, couetteContentY;
 
   // ---- current iterate ----
   Eigen::ArrayXd p, theta;
@@ -89,6 +94,28 @@ struct FilmSystem {
   // The rest of assemble from nodeFactors (which must belong to problem.gap_m): lets a caller
   // swap in the factors of some nodes without re-evaluating all of them.
   void assembleFromNodeFactors(const FilmGrid& grid, const FilmProblem& problem);
+  // The parts of assembleFromNodeFactors, in the order it calls them: the nodal factors from
+  // nodeFactors (conductances, contents, expected gaps, viscosity, shear factors); the face
+  // transmissibilities tE / tN and Couette fluxes couE / couN (FilmSystem.cpp: the face
+  // values); tW / tS, diagP and the upwind Couette terms (inCx / inIx, inCy / inIy, aOut);
+  // the storage terms (squeeze, capacity, thetaPrev, thetaCoef: backward Euler or BDF2); the
+  // fixed nodes (status, fixedPressure, fixedTheta, dry, fillFromInterior); src,
+  // meanFreeDiagP and residualScale; the Gauss-Seidel order.
+  void calcNodeConductances(const FilmProblem& problem, bool slideY);
+  void assembleFaces(const FilmGrid& grid, const FilmProblem& problem, bool slideY);
+  void assembleUpwindCouette(double Ux_mps, double Uy_mps);
+  void assembleStorage(const FilmGrid& grid, const FilmProblem& problem);
+  void classifyFixedNodes(const FilmGrid& grid, const FilmProblem& problem);
+  void calcResidualScale();
+  void buildSweepOrder(double Ux_mps, double Uy_mps);
+  // Parts of the above: the knee factors for the problem's model and floor; the open edges'
+  // nodes (one node: fixEdgeNode, FilmSystem.cpp); the dry inlet nodes of the
+  // non-conservative models' partial-flooding march.
+  void updateKneeFactors(const FilmProblem& problem, double floor_m);
+  void fixEdgeNodes(const FilmGrid& grid, const FilmProblem& problem);
+  void fixEdgeNode(int k, const FilmEdge& edge, int along, double inflowCouette, double normalSpeed,
+                   double edgeLength);
+  void markDryInlets(const FilmProblem& problem);
   // The explicit second-order fill-fraction correction (FillFractionFlux::LimitedSecondOrder,
   // FillFractionFlux.cpp) into fillCorrE / fillCorrN / fillCorrOut, from the assembled
   // Couette fluxes, capacities and fixed-node status.
@@ -123,6 +150,13 @@ struct FilmSystem {
 
   // Boundary flux and storage diagnostics at the current iterate.
   void fluxDiagnostics(double& inflow, double& outflow, double& storage) const;
+
+  // Net flow out of the film across the edge lines at the current iterate, per edge node
+  // (FilmResult::edgeOutflowYMin_m3ps ... : the face flow from the node inside, minus what the
+  // edge node's own control volume takes up as its gap changes, theta A dhT/dt).
+  void calcEdgeOutflows(FilmResult& result) const;
+  // Net outflow [m^3/s] from unknown node k into its neighbour e through their common face.
+  double faceOutflow(int k, int e) const;
 };
 
 }  // namespace pistondyn::lubrication::detail

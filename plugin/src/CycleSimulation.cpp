@@ -367,7 +367,7 @@ void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& pr
   ct.setRates(state, omega);
 
   std::unique_ptr<Advancer> integ;
-  if (settings_.integrator == SimulationSettings::Integrator::LinearlyImplicitBDF2) {
+  if (settings_.integrator == SimulationSettings::Integrator::LinearlyImplicitBDF) {
     integ = std::make_unique<StepperAdvancer>(model_, settings_);
   } else {
     integ = std::make_unique<SimbodyAdvancer>(system, settings_);

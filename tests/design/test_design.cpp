@@ -124,10 +124,10 @@ TEST(RunFigures, BothSidesMinimumAndMissingFigures) {
 }
 
 TEST(EvaluationStore, IdsFollowWhatDecidesTheRunAndNothingElse) {
-  const design::EvaluationStore a("/tmp/a", "/x/engine.yaml", {"simulation.cycles=1"}, "ctx");
+  const design::EvaluationStore a("/data/a", "/x/engine.yaml", {"simulation.cycles=1"}, "ctx");
   const design::EvaluationStore moved("/elsewhere/b", "/y/engine.yaml", {"simulation.cycles=1"},
                                       "ctx");
-  const design::EvaluationStore other("/tmp/a", "/x/engine.yaml", {"simulation.cycles=1"}, "ctx2");
+  const design::EvaluationStore other("/data/a", "/x/engine.yaml", {"simulation.cycles=1"}, "ctx2");
   design::EvaluationRequest r;
   r.overrides = {"geometry.pin_offset_mm=0.5"};
   design::EvaluationRequest s = r;

@@ -112,7 +112,7 @@ TEST(SkirtDeck, TheGasolineExampleSectionBecomesTheElementsParametersInSI) {
   EXPECT_EQ(b.deck.engine.piston.skirtTopAbovePin_m, 12.0 * 1e-3);
   // Simulation settings.
   const plugin::SimulationSettings& s = b.deck.simulation;
-  EXPECT_EQ(s.integrator, plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2);
+  EXPECT_EQ(s.integrator, plugin::SimulationSettings::Integrator::LinearlyImplicitBDF);
   EXPECT_TRUE(s.untilPeriodic);
   EXPECT_EQ(s.cycles, 8);
   EXPECT_EQ(s.poseTolerance_m, 10.0 * 1e-9);

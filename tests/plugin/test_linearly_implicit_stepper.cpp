@@ -412,7 +412,7 @@ TEST(LinearlyImplicitStepper, SaysWhyTheStepFellBelowTheMinimum) {
 TEST(LinearlyImplicitStepper, CycleSimulationRunsToPeriodicSteadyStateAndKeepsTheLastCycle) {
   Model m;
   plugin::SimulationSettings s;
-  s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2;
+  s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF;
   s.outputStep_deg = 5.0;
   s.cycles = 8;
   s.untilPeriodic = true;

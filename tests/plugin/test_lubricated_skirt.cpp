@@ -38,7 +38,7 @@ double maxAbs(const std::vector<double>& v) {
 struct CycleRun {
   explicit CycleRun(double outputStep_deg) : setup(ts::makeGasolineSkirtModel(32, 24)) {
     plugin::SimulationSettings s;
-    s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2;
+    s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF;
     s.outputStep_deg = outputStep_deg;
     s.cycles = 2;
     plugin::CycleSimulation sim(*setup.model, s);
@@ -186,7 +186,7 @@ TEST(LubricatedSkirt, ParallelSidesGiveTheSerialResults) {
     p.parallelSides = parallel;
     ts::SkirtModel setup = ts::makeGasolineSkirtModel(16, 12, &p);
     plugin::SimulationSettings s;
-    s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2;
+    s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF;
     s.outputStep_deg = 1.0;
     s.cycles = 1;
     plugin::CycleSimulation sim(*setup.model, s);
@@ -282,7 +282,7 @@ TEST(LubricatedSkirt, JacobianReuseFollowsTheFloodedCycle) {
     // the default supply: fully flooded (SupplyFilm::constant_m = inf)
     ts::SkirtModel setup = ts::makeGasolineSkirtModel(16, 12, &p);
     plugin::SimulationSettings s;
-    s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2;
+    s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF;
     s.outputStep_deg = 1.0;
     s.cycles = 1;
     s.maxStep_deg = maxStep_deg;
@@ -377,8 +377,9 @@ TEST(LubricatedSkirt, SideSolvedWithoutSimbodyEqualsTheElementsSide) {
     const skirt::SkirtSideResults& alone = solver.getResults();
     const skirt::SkirtSideResults& inElement = element.getLastSideResults(side);
     const auto& cached = element.getResults(st).sides[side == plugin::SkirtSide::Thrust ? 0 : 1];
-    if (side == plugin::SkirtSide::Thrust)  // moving towards thrust: a loaded film there
+    if (side == plugin::SkirtSide::Thrust) {  // moving towards thrust: a loaded film there
       ASSERT_GT(alone.hydrodynamicNormalForce_N, 100.0);
+    }
     EXPECT_TRUE((alone.film.pressure_Pa() == inElement.film.pressure_Pa()).all());
     EXPECT_TRUE((alone.film.fillFraction() == inElement.film.fillFraction()).all());
     EXPECT_TRUE((alone.contact.pressure_Pa == inElement.contact.pressure_Pa).all());

@@ -51,7 +51,7 @@ CycleRun run(const plugin::LubricatedSkirtParameters& p, plugin::SimulationSetti
 
 plugin::SimulationSettings settings(int cycles) {
   plugin::SimulationSettings s;
-  s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2;
+  s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF;
   s.outputStep_deg = 2.0;
   s.cycles = cycles;
   return s;

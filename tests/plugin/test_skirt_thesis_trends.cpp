@@ -35,7 +35,7 @@ struct Outcome {
 Outcome run(const plugin::LubricatedSkirtParameters& p, int maxCycles) {
   ts::SkirtModel m = ts::makeGasolineSkirtModel(p.grid.nPhi, p.grid.nY, &p);
   plugin::SimulationSettings s;
-  s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2;
+  s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF;
   s.outputStep_deg = 2.0;
   s.cycles = maxCycles;
   s.untilPeriodic = true;

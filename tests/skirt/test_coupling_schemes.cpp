@@ -106,8 +106,9 @@ TEST(CouplingSchemes, EachSchemeReachesTheDirectSolutionOfALinearFilm) {
                 static_cast<int>(scheme), r.iterations, error / scale, scale);
     EXPECT_TRUE(r.converged);
     EXPECT_LT(error, 1e-5 * scale);
-    if (scheme == ps::ElasticCouplingScheme::Modal)
+    if (scheme == ps::ElasticCouplingScheme::Modal) {
       EXPECT_LE(r.iterations, 3);  // a linear law with its exact Jacobian: one Newton step
+    }
   }
   // The plain fixed point (relaxation fixed at 1) does not converge: the loop's gain is > 1.
   ps::ElasticCouplingParameters plain;

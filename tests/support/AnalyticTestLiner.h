@@ -103,8 +103,9 @@ class AnalyticTestLiner final : public plugin::LinerElement {
 
 inline void registerAnalyticTestLiner(io::LinerRegistry& registry) {
   registry.add("analytic_test", "TEST ONLY: closed-form fmep, h/sigma and signal (tests/support)",
-               [](io::DeckSection& liner, io::LinerDeckContext& context) -> io::LinerElementMaker {
-                 context.usesConstraints = true;
+               [](io::DeckSection& liner, const io::LinerDeckContext& context) -> io::LinerModel {
+                 io::LinerModel model;
+                 model.needs.usesConstraints = true;
                  AnalyticTestParameters p;
                  p.clearance_um =
                      liner.getNumberOr("clearance_um", 40.0, io::Bounds::between(1, 500));
@@ -116,7 +117,8 @@ inline void registerAnalyticTestLiner(io::LinerRegistry& registry) {
                  (void)liner.getNumberOr("inert_factor", 1.0);
                  p.failBelow_um = liner.getOptionalNumber("fail_below_clearance_um");
                  p.pinOffset_mm = context.engine->geometry.pinOffset_m * 1e3;
-                 return [p] { return std::make_unique<AnalyticTestLiner>(p); };
+                 model.maker = [p] { return std::make_unique<AnalyticTestLiner>(p); };
+                 return model;
                });
 }
 

@@ -87,7 +87,7 @@ inline std::vector<std::string> gasolineElasticSkirtOverrides() {
 // largest step, output rows every degree, `cycles` cycles.
 inline plugin::SimulationSettings deckStepperSettings(int cycles) {
   plugin::SimulationSettings s;
-  s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF2;
+  s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF;
   s.outputStep_deg = 1.0;
   s.maxStep_deg = 0.25;
   s.cycles = cycles;

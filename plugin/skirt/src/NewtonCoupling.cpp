@@ -27,13 +27,13 @@ NewtonCoupling::NewtonCoupling(const SkirtSideGrid& side,
   stiffnessFS_ = Eigen::MatrixXd::Zero(nF, nS);
   preconditioner_ = Eigen::MatrixXd::Identity(nS, nS);
   preconditionerLu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(nS);
+  // One cycle of at most maxKrylovIterations film evaluations, flexible form, a direction whose
+  // rotation is degenerate left out.
   const int kMax = parameters_.maxKrylovIterations;
-  krylovV_ = Eigen::MatrixXd::Zero(nS, kMax + 1);
-  krylovZ_ = Eigen::MatrixXd::Zero(nS, kMax);
-  hessenberg_ = Eigen::MatrixXd::Zero(kMax + 1, kMax);
-  givensC_ = givensS_ = Eigen::VectorXd::Zero(kMax);
-  krylovG_ = Eigen::VectorXd::Zero(kMax + 1);
-  krylovY_ = Eigen::VectorXd::Zero(kMax);
+  krylov_ = lubrication::Gmres(
+      lubrication::GmresOptions{/*restart=*/kMax, /*maxIterations=*/kMax, /*flexible=*/true,
+                                /*skipDegenerateDirections=*/true},
+      nS);
   vectorS_ = vectorS2_ = Eigen::VectorXd::Zero(nS);
   baseU_m_ = baseTarget_m_ = step_m_ = perturbedU_m_ = perturbedTarget_m_ =
       Eigen::VectorXd::Zero(ns);
@@ -94,89 +94,48 @@ void NewtonCoupling::calcPreconditionedStep() {
 
 void NewtonCoupling::calcKrylovStep(const FilmPressureFunction& film, double cylinderPressure_Pa,
                                      ElasticCouplingReport& report) {
-  // Right-preconditioned GMRES (Saad & Schultz 1986) from d = 0 for J d = r_S with
+  // Flexible right-preconditioned GMRES (lubrication/Gmres.h) from d = 0 for J d = r_S with
   // J = I - dg/du on S, J z by a forward difference of the film around the base iterate:
   // J z = z - (g(u + eps z) - g(u)) / eps, eps z moving the gap by about 1e-3 of the thinnest
-  // film (>= 1 nm): far above the film solver's noise, small against the film.
+  // film (>= 1 nm): far above the film solver's noise, small against the film. The flexible
+  // form keeps z = P^-1 v, the very directions the film was evaluated along.
   const Eigen::Index nS = nodesS_.size();
   for (Eigen::Index a = 0; a < nS; ++a)
     vectorS_[a] = residual_m_[nodesS_[a]];
-  const double beta = vectorS_.norm();
   step_m_ = residual_m_;  // nodes outside S: the plain fixed-point step
   for (Eigen::Index a = 0; a < nS; ++a)
     step_m_[nodesS_[a]] = 0.0;
-  if (!(beta > 0.0))
-    return;
   const double probe_m =
       parameters_.absoluteTolerance_m + 1e-3 * std::max(film_.minFilmThickness_m, 1e-6);
-  krylovV_.col(0) = vectorS_ / beta;
-  krylovG_.setZero();
-  krylovG_[0] = beta;
-  int used = 0;
-  for (int j = 0; j < parameters_.maxKrylovIterations &&
-                  report.iterations < parameters_.maxIterations - 1;
-       ++j) {
-    krylovZ_.col(j) = preconditionerLu_.solve(krylovV_.col(j));
-    const double zMax = krylovZ_.col(j).cwiseAbs().maxCoeff();
+  const auto jacobianTimes = [&](const Eigen::Ref<const Eigen::VectorXd>& z,
+                                 Eigen::VectorXd& product) {
+    if (report.iterations >= parameters_.maxIterations - 1)
+      return false;  // keep one film evaluation for the step itself
+    const double zMax = z.cwiseAbs().maxCoeff();
     if (!(zMax > 0.0))
-      break;
+      return false;
     const double eps = probe_m / zMax;
     perturbedU_m_ = baseU_m_;
     for (Eigen::Index a = 0; a < nS; ++a)
-      perturbedU_m_[nodesS_[a]] += eps * krylovZ_(a, j);
+      perturbedU_m_[nodesS_[a]] += eps * z[a];
     evaluate(perturbedU_m_, film, cylinderPressure_Pa, perturbedTarget_m_, report);
     ++report.krylovIterations;
     for (Eigen::Index a = 0; a < nS; ++a)
-      vectorS2_[a] = krylovZ_(a, j) -
-                     (perturbedTarget_m_[nodesS_[a]] - baseTarget_m_[nodesS_[a]]) / eps;
-    // Arnoldi (modified Gram-Schmidt) and the Givens rotations of the least-squares problem.
-    for (int i = 0; i <= j; ++i) {
-      hessenberg_(i, j) = krylovV_.col(i).dot(vectorS2_);
-      vectorS2_ -= hessenberg_(i, j) * krylovV_.col(i);
-    }
-    hessenberg_(j + 1, j) = vectorS2_.norm();
-    for (int i = 0; i < j; ++i) {
-      const double t = givensC_[i] * hessenberg_(i, j) + givensS_[i] * hessenberg_(i + 1, j);
-      hessenberg_(i + 1, j) = -givensS_[i] * hessenberg_(i, j) + givensC_[i] * hessenberg_(i + 1, j);
-      hessenberg_(i, j) = t;
-    }
-    const double rho = std::hypot(hessenberg_(j, j), hessenberg_(j + 1, j));
-    if (!(rho > 0.0 && std::isfinite(rho)))
-      break;  // J z_j adds nothing (or the film evaluation was not finite): leave it out
-    used = j + 1;
-    givensC_[j] = hessenberg_(j, j) / rho;
-    givensS_[j] = hessenberg_(j + 1, j) / rho;
-    hessenberg_(j, j) = rho;
-    krylovG_[j + 1] = -givensS_[j] * krylovG_[j];
-    krylovG_[j] *= givensC_[j];
-    if (std::abs(krylovG_[j + 1]) <= parameters_.krylovTolerance * beta)
-      break;
-    if (j + 1 < parameters_.maxKrylovIterations) {
-      // The next basis vector: the orthogonalised J z before the rotations.
-      const double h = vectorS2_.norm();
-      if (!(h > 0.0))
-        break;
-      krylovV_.col(j + 1) = vectorS2_ / h;
-    }
-  }
-  // y = R^-1 g, d_S = Z y.
-  for (int i = used - 1; i >= 0; --i) {
-    double v = krylovG_[i];
-    for (int c = i + 1; c < used; ++c)
-      v -= hessenberg_(i, c) * krylovY_[c];
-    krylovY_[i] = v / hessenberg_(i, i);
-  }
-  if (used == 0) {
+      product[a] = z[a] - (perturbedTarget_m_[nodesS_[a]] - baseTarget_m_[nodesS_[a]]) / eps;
+    return true;
+  };
+  const auto precondition = [&](const Eigen::Ref<const Eigen::VectorXd>& v,
+                                Eigen::Ref<Eigen::VectorXd> z) { z = preconditionerLu_.solve(v); };
+  lubrication::GmresRelativeReduction stop(parameters_.krylovTolerance);
+  const lubrication::GmresReport gmres = krylov_.solve(jacobianTimes, precondition, vectorS_, stop);
+  if (gmres.lastCycleDirections > 0) {
+    const Eigen::VectorXd& d = krylov_.solution();
+    for (Eigen::Index a = 0; a < nS; ++a)
+      step_m_[nodesS_[a]] = d[a];
+  } else if (!gmres.converged) {
     // No Krylov direction (a degenerate first product): the preconditioner's own step.
     calcPreconditionedStep();
-    return;
-  }
-  for (Eigen::Index a = 0; a < nS; ++a) {
-    double v = 0.0;
-    for (int i = 0; i < used; ++i)
-      v += krylovZ_(a, i) * krylovY_[i];
-    step_m_[nodesS_[a]] = v;
-  }
+  }  // else r_S = 0 (or not finite): no step on S
 }
 
 ElasticCouplingReport NewtonCoupling::iterate(const FilmPressureFunction& film,

@@ -118,6 +118,18 @@ void validateInputs(const GapFields& gap, const SkirtSideInputs& in, const Skirt
   if (!(in.supplyFilm_m > 0.0))
     badInput("inputs.supplyFilm_m = ", in.supplyFilm_m,
              " m must be positive (+inf: fully flooded)");
+  if ((in.supplyBottom_m == nullptr) != (in.supplyTop_m == nullptr))
+    badInput("inputs.supplyBottom_m and inputs.supplyTop_m must be given together");
+  for (const Eigen::ArrayXd* supply : {in.supplyBottom_m, in.supplyTop_m}) {
+    if (!supply)
+      continue;
+    if (supply->size() != grid.nPhi())
+      badInput("inputs.supplyBottom_m / supplyTop_m have ", supply->size(), " entries, expected ",
+               grid.nPhi(), " (columns of the ", sideName(side), " side)");
+    for (Eigen::Index i = 0; i < supply->size(); ++i)
+      if (!((*supply)[i] >= 0.0) || !std::isfinite((*supply)[i]))
+        badInput("inputs supply[", i, "] = ", (*supply)[i], " m must be >= 0 and finite");
+  }
   if (std::isnan(in.timeStep_s))
     badInput("inputs.timeStep_s = ", in.timeStep_s, " s must not be NaN (+inf or <= 0: steady)");
 }
@@ -310,6 +322,13 @@ struct SkirtSideLubrication::Impl {
     p.viscosity_Pas = in.viscosity_Pas;
     p.boundary.yMin.supplyFilm_m = in.supplyFilm_m;
     p.boundary.yMax.supplyFilm_m = in.supplyFilm_m;
+    if (in.supplyBottom_m) {
+      p.boundary.yMin.supplyFilmPerNode_m = *in.supplyBottom_m;
+      p.boundary.yMax.supplyFilmPerNode_m = *in.supplyTop_m;
+    } else if (p.boundary.yMin.supplyFilmPerNode_m.size() > 0) {
+      p.boundary.yMin.supplyFilmPerNode_m.resize(0);
+      p.boundary.yMax.supplyFilmPerNode_m.resize(0);
+    }
     if (p.cavitation == lubrication::CavitationModel::MassConserving) {
       // The history as it is: the film solver checks it and uses what the step allows.
       if (in.history != nullptr)

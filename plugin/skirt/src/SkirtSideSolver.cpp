@@ -29,17 +29,28 @@ struct SkirtSideSolver::Impl {
   SkirtSideResults results;
   SkirtSideInputs inputs;
   Eigen::VectorXd elasticStart;  // the coupling's start (scratch)
+  std::optional<LinerOilFilm> linerOil;
+  LinerOilState initialLiner;              // the liner's start when the history has none
+  const LinerOilState* linerStart = nullptr;  // the state this evaluation starts from
+  Eigen::ArrayXd supplyBottom, supplyTop;  // the liner's supply per column [m]
 
   Impl(const SkirtSideGrid& grid, const GapAssemblyParameters& gapParameters,
        std::shared_ptr<const lubrication::FlowFactorModel> flowFactors,
        std::shared_ptr<const contact_forces::AsperityContactLaw> contactLaw,
        const contact_forces::BoundaryFriction& friction, const SkirtSideSettings& s,
-       std::unique_ptr<ElasticCoupling> c)
+       std::unique_ptr<ElasticCoupling> c, std::optional<LinerOilFilm> liner)
       : settings(s),
         gap(grid, gapParameters),
         lubrication(grid, std::move(flowFactors), std::move(contactLaw), friction, s.lubrication),
         coupling(std::move(c)),
-        fields(gap.makeFields()) {
+        fields(gap.makeFields()),
+        linerOil(std::move(liner)) {
+    if (linerOil && !massConserving())
+      common::throwInvalidArgument(
+          "SkirtSideSolver", "the liner oil film needs the mass-conserving film (its edge flows)");
+    if (linerOil && linerOil->columns() != grid.nPhi())
+      common::throwInvalidArgument("SkirtSideSolver",
+                                   "the liner oil film was built on another grid");
     if (s.fillFractionHistoryOrder != 1 && s.fillFractionHistoryOrder != 2)
       common::throwInvalidArgument("SkirtSideSolver",
                                    "settings.fillFractionHistoryOrder must be 1 (backward Euler) "
@@ -66,6 +77,19 @@ struct SkirtSideSolver::Impl {
                                                 : motion.rate.tertiary_mps;
     in.viscosity_Pas = c.viscosity_Pas;
     in.supplyFilm_m = c.supplyFilm_m;
+    in.supplyBottom_m = in.supplyTop_m = nullptr;
+    if (linerOil) {
+      // The liner's film ahead of each edge, from the state of the last accepted step.
+      if (history.liner.empty()) {
+        initialLiner = linerOil->makeInitialState(motion.pinHeight_m);
+        linerStart = &initialLiner;
+      } else {
+        linerStart = &history.liner;
+      }
+      linerOil->calcSupply(*linerStart, motion.pinHeight_m, supplyBottom, supplyTop);
+      in.supplyBottom_m = &supplyBottom;
+      in.supplyTop_m = &supplyTop;
+    }
     in.squeezeColumns = poseDerivatives ? (settings.tertiaryMotion ? 3 : 2) : 0;
     in.extraBases = FilmSensitivityRequest();
     in.history = massConserving() ? &history.film : nullptr;
@@ -150,10 +174,19 @@ struct SkirtSideSolver::Impl {
 
   // The history the evaluation leads to (mass-conserving film only; a zero step keeps the
   // earlier film point and the elastic rate).
-  void advanceHistory(const SkirtSideHistory& history, double dt, SkirtSideSolution& out) const {
+  void advanceHistory(const SkirtSideMotion& motion, const SkirtSideConditions& c,
+                      const SkirtSideHistory& history, SkirtSideSolution& out) const {
     out.historyAdvanced = massConserving();
     if (!out.historyAdvanced)
       return;
+    const double dt = c.stepSinceHistory_s;
+    if (linerOil) {
+      const lubrication::FilmResult& f = results.film;
+      const EdgeOutflows flows{&f.edgeOutflowYMin_m3ps, &f.edgeOutflowYMax_m3ps,
+                               &f.edgeOutflowXMin_m3ps, &f.edgeOutflowXMax_m3ps};
+      out.next.liner = linerOil->advance(*linerStart, motion.pinHeight_m, motion.axialVelocity_mps,
+                                         c.crankAngle_deg, std::max(dt, 0.0), flows);
+    }
     const lubrication::FilmHistoryPoint now{results.film.fillFraction(),
                                             results.film.expectedGap_m};
     out.next.film = history.film.advanced(now, dt, settings.fillFractionHistoryOrder);
@@ -175,9 +208,10 @@ SkirtSideSolver::SkirtSideSolver(const SkirtSideGrid& grid, const GapAssemblyPar
                                  std::shared_ptr<const contact_forces::AsperityContactLaw> law,
                                  const contact_forces::BoundaryFriction& friction,
                                  const SkirtSideSettings& settings,
-                                 std::unique_ptr<ElasticCoupling> coupling)
+                                 std::unique_ptr<ElasticCoupling> coupling,
+                                 std::optional<LinerOilFilm> linerOil)
     : impl_(std::make_unique<Impl>(grid, gap, std::move(flowFactors), std::move(law), friction,
-                                   settings, std::move(coupling))) {}
+                                   settings, std::move(coupling), std::move(linerOil))) {}
 
 SkirtSideSolver::~SkirtSideSolver() = default;
 SkirtSideSolver::SkirtSideSolver(SkirtSideSolver&&) noexcept = default;
@@ -197,7 +231,7 @@ void SkirtSideSolver::solve(const SkirtSideMotion& motion, const SkirtSideCondit
     m.solveElastic(motion, conditions, history, out);
   else
     m.gapAndFilm(motion, out.counters);
-  m.advanceHistory(history, conditions.stepSinceHistory_s, out);
+  m.advanceHistory(motion, conditions, history, out);
 }
 
 const SkirtSideGrid& SkirtSideSolver::getGrid() const {
@@ -217,6 +251,15 @@ const SkirtSideResults& SkirtSideSolver::getResults() const {
 }
 const ElasticCoupling* SkirtSideSolver::getElasticCoupling() const {
   return impl_->coupling.get();
+}
+const LinerOilFilm* SkirtSideSolver::getLinerOilFilm() const {
+  return impl_->linerOil ? &*impl_->linerOil : nullptr;
+}
+const Eigen::ArrayXd& SkirtSideSolver::getSupplyBottom_m() const {
+  return impl_->supplyBottom;
+}
+const Eigen::ArrayXd& SkirtSideSolver::getSupplyTop_m() const {
+  return impl_->supplyTop;
 }
 double SkirtSideSolver::getCompositeSigma_m() const {
   return impl_->lubrication.getCompositeSigma_m();

@@ -340,6 +340,20 @@ struct FilmResult {
   double boundaryInflow_m3ps = 0.0;
   double boundaryOutflow_m3ps = 0.0;
   double storageRate_m3ps = 0.0;
+  // The same balance at the edge lines themselves: the net flow out of the film across each
+  // open edge, per edge node [m^3/s] (+ out): yMin / yMax one entry per column (nx), xMin /
+  // xMax one per row (ny; empty on an x-periodic grid; the corner nodes count with the y
+  // edges). Each is the flow through the face from the node inside, minus what the edge
+  // node's own control volume (half a cell, a quarter at a corner) takes up as its gap changes,
+  // theta A dhT/dt: the face flow alone lies half a cell inside the edge and misses that
+  // volume. edgeInflow / edgeOutflow sum the entries' negative and positive parts; with the
+  // mass-conserving model edgeInflow - edgeOutflow = storageRate_m3ps plus the edge nodes'
+  // theta A dhT/dt, and oilVolume_m3 is sum over all nodes of A theta hT.
+  Eigen::ArrayXd edgeOutflowYMin_m3ps, edgeOutflowYMax_m3ps;
+  Eigen::ArrayXd edgeOutflowXMin_m3ps, edgeOutflowXMax_m3ps;
+  double edgeInflow_m3ps = 0.0;
+  double edgeOutflow_m3ps = 0.0;
+  double oilVolume_m3 = 0.0;
   // Power the film dissipates [W], >= 0: the Couette part sum_k A_k theta_k eta_k |U|^2 phiF_k
   // / h_k and the Poiseuille part sum over faces K_f L_f / d_f (p_a - p_b)^2 (the discrete
   // energy of the pressure flux; smooth surfaces: int eta U^2/h + h^3 |grad p|^2 / (12 eta) dA).

@@ -60,26 +60,28 @@ struct SimulationSettings {
   double outputStep_deg = 1.0;  ///< output interval [deg], > 0, must divide 720
   /// The time integrator.
   enum class Integrator {
-    RungeKuttaMerson,      ///< Simbody's, explicit (for the ideal guide, smooth elements)
-    RungeKuttaFeldberg,    ///< Simbody's, explicit
-    CPodesBDF,             ///< Simbody's CPodes BDF with Newton iterations (numerical Jacobian)
-    LinearlyImplicitBDF2,  ///< LinearlyImplicitStepper.h: for the stiff squeeze film
+    RungeKuttaMerson,    ///< Simbody's, explicit (for the ideal guide, smooth elements)
+    RungeKuttaFeldberg,  ///< Simbody's, explicit
+    CPodesBDF,           ///< Simbody's CPodes BDF with Newton iterations (numerical Jacobian)
+    /// LinearlyImplicitStepper.h, variable-step BDF of order stepperOrder (2 or 3): for the
+    /// stiff squeeze film (deck value linearly_implicit_bdf2)
+    LinearlyImplicitBDF,
   };
   Integrator integrator = Integrator::RungeKuttaMerson;  ///< default RungeKuttaMerson
   double accuracy = 1e-9;              ///< Simbody integrators' relative accuracy [-]
   double constraintTolerance = 1e-11;  ///< constraint projection tolerance [-]
-  /// LinearlyImplicitBDF2 only: per-step tolerance on the piston pose (lateral, tertiary,
+  /// LinearlyImplicitBDF only: per-step tolerance on the piston pose (lateral, tertiary,
   /// tilt x skirt length) [m], > 0, default 10 nm; the rates get poseTolerance_m per time of
   /// one crank degree.
   double poseTolerance_m = 1e-8;
-  /// LinearlyImplicitBDF2: largest step [deg of crank], > 0, default 0.25. The error test
+  /// LinearlyImplicitBDF: largest step [deg of crank], > 0, default 0.25. The error test
   /// alone would let 0.5 deg steps through the flooded example skirt, which lag its
   /// secondary motion by 1.4 um and move fmep by 4 % against CPodes (plugin/README.md).
   double maxStep_deg = 0.25;
-  /// LinearlyImplicitBDF2: order of the BDF formula, 2 (default) or 3 (LinearlyImplicitStepper
+  /// LinearlyImplicitBDF: order of the BDF formula, 2 (default) or 3 (LinearlyImplicitStepper
   /// Options::maxOrder: the third order for the global error of the slow secondary motion).
   int stepperOrder = 2;
-  /// LinearlyImplicitBDF2: steps over which the elements' Jacobian may be kept (Linearly
+  /// LinearlyImplicitBDF: steps over which the elements' Jacobian may be kept (Linearly
   /// ImplicitStepperOptions::jacobianReuseSteps), 0 (default: evaluated every time) or more.
   int jacobianReuseSteps = 0;
   /// Step budget of the whole run (every integrator): a run that needs more steps stops with
@@ -143,9 +145,9 @@ struct SimulationStats {
   double wallTime_s = 0.0;     ///< wall time of the run [s]
   long integratorSteps = 0;    ///< accepted integrator steps
   long realizations = 0;       ///< number of Stage::Dynamics realizations taken by the integrator
-  long rejectedSteps = 0;      ///< LinearlyImplicitBDF2: steps rejected by the error test
-  long failedEvaluations = 0;  ///< LinearlyImplicitBDF2: steps retried after an element threw
-  /// LinearlyImplicitBDF2: wall time in its force evaluations (realize through Acceleration:
+  long rejectedSteps = 0;      ///< LinearlyImplicitBDF: steps rejected by the error test
+  long failedEvaluations = 0;  ///< LinearlyImplicitBDF: steps retried after an element threw
+  /// LinearlyImplicitBDF: wall time in its force evaluations (realize through Acceleration:
   /// Simbody and the elements) [s]; 0 for Simbody's integrators (not separable there).
   double realizeTime_s = 0.0;
   int cyclesRun = 0;                 ///< whole cycles simulated

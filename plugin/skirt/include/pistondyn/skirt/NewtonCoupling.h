@@ -14,6 +14,7 @@
 
 #include <Eigen/LU>
 
+#include "pistondyn/lubrication/Gmres.h"
 #include "pistondyn/skirt/ElasticCoupling.h"
 
 namespace pistondyn::skirt {
@@ -51,8 +52,8 @@ class NewtonCoupling final : public ElasticCoupling {
   double rateStep_s_ = 0.0;  ///< prepareRate()
   Eigen::MatrixXd complianceSF_, stiffnessFS_, preconditioner_;
   Eigen::PartialPivLU<Eigen::MatrixXd> preconditionerLu_;
-  Eigen::MatrixXd krylovV_, krylovZ_, hessenberg_;  ///< Arnoldi basis, preconditioned basis
-  Eigen::VectorXd givensC_, givensS_, krylovG_, krylovY_, vectorS_, vectorS2_;
+  lubrication::Gmres krylov_;  ///< calcKrylovStep()'s GMRES and its workspace
+  Eigen::VectorXd vectorS_, vectorS2_;
   Eigen::VectorXd baseU_m_, baseTarget_m_, step_m_, perturbedU_m_, perturbedTarget_m_;
 };
 

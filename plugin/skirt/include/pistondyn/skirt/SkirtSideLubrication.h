@@ -145,6 +145,11 @@ struct SkirtSideInputs {
   // Oil layer on the liner ahead of the skirt (both axial edges) [m], > 0; +inf = fully
   // flooded (FilmEdge::supplyFilm_m).
   double supplyFilm_m = std::numeric_limits<double>::infinity();
+  // Optional: the supply per column at the skirt's bottom (yMin) and top (yMax) edges [m]
+  // (nPhi entries each, >= 0, finite; FilmEdge::supplyFilmPerNode_m), instead of supplyFilm_m
+  // (a liner oil film, LinerOilFilm.h). Both or neither.
+  const Eigen::ArrayXd* supplyBottom_m = nullptr;
+  const Eigen::ArrayXd* supplyTop_m = nullptr;
   // Squeeze derivatives wanted: the first squeezeColumns columns of the gap's squeeze basis
   // (0..3; 2 = lateral and tilt, 3 with the tertiary motion).
   int squeezeColumns = 2;

@@ -28,12 +28,14 @@
 
 #include <limits>
 #include <memory>
+#include <optional>
 
 #include <Eigen/Core>
 
 #include "pistondyn/lubrication/FilmHistory.h"
 #include "pistondyn/skirt/ElasticCoupling.h"
 #include "pistondyn/skirt/GapAssembly.h"
+#include "pistondyn/skirt/LinerOilFilm.h"
 #include "pistondyn/skirt/SkirtSideLubrication.h"
 
 namespace pistondyn::skirt {
@@ -49,8 +51,11 @@ struct SkirtSideMotion {
 /// The conditions of one evaluation besides the motion.
 struct SkirtSideConditions {
   double viscosity_Pas = 0.0;  ///< film viscosity [Pa s], > 0
-  /// Oil on the liner ahead of the skirt [m], > 0; +inf = fully flooded.
+  /// Oil on the liner ahead of the skirt [m], > 0; +inf = fully flooded. Not read with a
+  /// liner oil film (the solver's constructor), which gives the supply per column.
   double supplyFilm_m = std::numeric_limits<double>::infinity();
+  /// The crank angle [deg] (a liner oil film's ring table).
+  double crankAngle_deg = 0.0;
   /// t - t_n, the time since the history's last accepted step [s]; <= 0: the same instant.
   double stepSinceHistory_s = 0.0;
   /// The pose's squeeze derivatives (dLoads_dPoseRate) for a stepper's Jacobian.
@@ -71,6 +76,7 @@ struct ElasticHistory {
 struct SkirtSideHistory {
   lubrication::FilmHistory film;
   ElasticHistory elastic;
+  LinerOilState liner;  ///< the liner's oil along the side (LinerOilFilm.h); empty: none yet
 };
 
 /// Settings of a side besides its grid, gap and contact models.
@@ -118,14 +124,17 @@ class SkirtSideSolver {
   /// @param friction boundary friction
   /// @param settings this side's settings
   /// @param coupling an elastic coupling built on this grid, or null for a rigid skirt
+  /// @param linerOil the liner's oil film along this side (its supply replaces
+  ///        SkirtSideConditions::supplyFilm_m; needs the mass-conserving film), or none
   /// @throws std::invalid_argument naming the member for bad data (as GapAssembly and
-  ///         SkirtSideLubrication)
+  ///         SkirtSideLubrication), or a liner oil film with another cavitation model
   SkirtSideSolver(const SkirtSideGrid& grid, const GapAssemblyParameters& gap,
                   std::shared_ptr<const lubrication::FlowFactorModel> flowFactors,
                   std::shared_ptr<const contact_forces::AsperityContactLaw> contactLaw,
                   const contact_forces::BoundaryFriction& friction,
                   const SkirtSideSettings& settings,
-                  std::unique_ptr<ElasticCoupling> coupling = nullptr);
+                  std::unique_ptr<ElasticCoupling> coupling = nullptr,
+                  std::optional<LinerOilFilm> linerOil = std::nullopt);
   ~SkirtSideSolver();
   SkirtSideSolver(SkirtSideSolver&&) noexcept;
   SkirtSideSolver& operator=(SkirtSideSolver&&) noexcept;
@@ -144,6 +153,12 @@ class SkirtSideSolver {
   const SkirtSideResults& getResults() const;
   /// The elastic coupling, or null for a rigid skirt.
   const ElasticCoupling* getElasticCoupling() const;
+  /// The liner oil film, or null without one.
+  const LinerOilFilm* getLinerOilFilm() const;
+  /// The supply per column of the last evaluation [m] (a liner oil film's; empty without one):
+  /// at the skirt's bottom and top edges.
+  const Eigen::ArrayXd& getSupplyBottom_m() const;
+  const Eigen::ArrayXd& getSupplyTop_m() const;
   /// The composite roughness sigma of the pair [m].
   double getCompositeSigma_m() const;
 

@@ -35,7 +35,7 @@ std::vector<std::string> getEngineTypeNames();
 
 /// What the user gives. Every optional value left empty is estimated (or defaulted).
 struct NewDeckRequest {
-  std::string name;  ///< engine.name: not empty, no control characters
+  std::string name;  ///< engine.name (--name): not empty, no control characters
   EngineType type = EngineType::PassengerCarGasoline;  ///< whose estimates
   double bore_mm = 0.0;    ///< cylinder bore [mm], required
   double stroke_mm = 0.0;  ///< stroke [mm], required
@@ -57,7 +57,8 @@ class NewDeckError : public std::invalid_argument {
  public:
   /// What was refused.
   enum class Kind {
-    BadValue,     ///< a value is not usable (not positive, implausible, unreadable table)
+    BadValue,     ///< a value is not usable (not positive, implausible)
+    BadTable,     ///< the given pressure table cannot be read or is not a pressure table
     Conflict,     ///< two choices that exclude each other (an imep and a table)
     Folder,       ///< the output folder (exists and is not empty, no parent, not writable)
     FailedCheck,  ///< the deck made does not pass its own check

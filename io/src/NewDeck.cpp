@@ -67,11 +67,12 @@ void checkAgainstKey(const std::string& option, double value, const std::string&
 
 void checkRequest(const NewDeckRequest& r) {
   if (r.name.empty())
-    throw NewDeckError("--name is empty: give the engine a name (it labels the deck's outputs)");
+    throw NewDeckError("--name is empty (the engine's name; by default the folder's): give the "
+                       "engine a name, it labels the deck's outputs");
   for (const char c : r.name) {
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
-      throw NewDeckError("--name holds a control character (a newline or tab): give a one-line "
-                         "name");
+      throw NewDeckError("--name holds a control character, a newline or a tab (the engine's "
+                         "name; by default the folder's): give a one-line --name");
   }
   if (!(r.bore_mm > 0.0))
     throw NewDeckError(describeValue("--bore-mm", r.bore_mm, "mm") + ": the bore must be positive");

@@ -1,6 +1,7 @@
-// A deck made by `pistondyn new` runs: a short run (preview grid, two cycles) of the
-// lubricated skirt through the built program finishes and writes finite results. Whole
-// cycles: label cycle (test_new_program.cpp holds the quick tests of the command).
+// A deck made by `pistondyn new` runs: a short run (preview fidelity on the coarsest grid it
+// takes, 16 x 12 nodes per side; two cycles) of the lubricated skirt through the built
+// program finishes and writes finite results (~10 s of CPU). Whole cycles: label cycle
+// (test_new_program.cpp holds the quick tests of the command).
 
 #include <gtest/gtest.h>
 
@@ -36,7 +37,8 @@ TEST_F(NewDeckProgram, AShortRunOfANewDeckFinishesWithFiniteResults) {
   const fs::path out = dir_ / "results";
   const Invocation run = invoke("run " + (folder / "engine.yaml").string() + " --out " +
                                 out.string() +
-                                " --fidelity preview --set simulation.cycles=2"
+                                " --fidelity preview --set liner.grid.nodes_circumferential=16"
+                                " --set liner.grid.nodes_axial=12 --set simulation.cycles=2"
                                 " --set simulation.until_periodic=false --quiet --no-plot");
   ASSERT_EQ(run.exitCode, 0) << run.err << run.out;
   const nlohmann::json summary = nlohmann::json::parse(readFile(out / "summary.json"));

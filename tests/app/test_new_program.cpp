@@ -120,4 +120,38 @@ TEST_F(NewDeckProgram, AFolderThatIsNotEmptyIsRefusedAndLeftAsItWas) {
   EXPECT_EQ(listFolder(dir_), std::vector<std::string>{"taken"});
 }
 
+#ifdef PISTONDYN_MAKE_PRESSURE_CURVE
+// The lines of a CSV that are not comments.
+std::string withoutComments(const std::string& text) {
+  std::istringstream in(text);
+  std::string line, kept;
+  while (std::getline(in, line)) {
+    if (line.rfind('#', 0) != 0)
+      kept += line + "\n";
+  }
+  return kept;
+}
+
+// The generated table's header names the make_pressure_curve command that makes the same
+// table (the deck says so): the installed generator run with it writes the same knots.
+TEST_F(NewDeckProgram, TheGeneratedTablesHeaderCommandMakesTheSameTable) {
+  const fs::path folder = dir_ / "diesel";
+  const Invocation made =
+      invoke("new " + folder.string() + " --type diesel --bore-mm 84 --stroke-mm 90 --imep-kPa 900");
+  ASSERT_EQ(made.exitCode, 0) << made.err;
+  const fs::path table = folder / "cylinder_pressure_fired_imep900kPa.csv";
+  const std::string text = readFile(table);
+  const std::string lead = "# the same table: make_pressure_curve ";
+  const std::size_t at = text.find(lead);
+  ASSERT_NE(at, std::string::npos) << text.substr(0, 400);
+  std::string args = text.substr(at + lead.size(), text.find('\n', at) - at - lead.size());
+  const std::string out = "--out FILE.csv";
+  ASSERT_NE(args.find(out), std::string::npos) << args;
+  args.replace(args.find(out), out.size(), "--out " + (io_ / "again.csv").string());
+  const std::string cmd = std::string(PISTONDYN_MAKE_PRESSURE_CURVE) + " " + args + " > /dev/null";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  EXPECT_EQ(withoutComments(readFile(io_ / "again.csv")), withoutComments(text));
+}
+#endif
+
 }  // namespace

@@ -30,6 +30,8 @@ struct Ratio {
   const char* why;
 };
 
+/// One engine type's rules: ratios to the bore, stroke and rod, the operating point and
+/// the single-zone cycle of its generated pressure table (README.md's rule table).
 struct TypeRules {
   const char* label;  // in comments: "passenger-car gasoline"
   double typicalBoreMin_mm, typicalBoreMax_mm;
@@ -84,13 +86,20 @@ std::string num(double x);
 /// A ratio as the rules print it ("0.38", "0.069", "-0.125").
 std::string ratio(double x);
 
-// One value of the deck: its text and the comment (its mark and rule).
+/// One value of the deck and its comment (its mark and rule).
 struct Value {
-  double number = 0.0;
-  std::string note;
+  double number = 0.0;  ///< in the unit of the deck key it is written to
+  std::string note;     ///< "[U]" or "EST: <rule> (<source>)"
 };
 
-// The engine's values, given ([U]) or estimated (EST + rule), in deck units.
+/// The engine's values, given ([U]) or estimated (EST + rule), each in its deck key's unit:
+/// rod geometry.conrod_length_mm, pinOffset geometry.pin_offset_mm, cr
+/// geometry.compression_ratio, ch piston.compression_height_mm, skirt and skirtTop
+/// piston.skirt_length_mm and skirt_top_above_pin_mm, the masses [g] and inertias [kg mm^2]
+/// of piston, pin, conrod and crank, pistonCom piston.com_above_pin_mm, rodCom
+/// conrod.com_from_big_end_mm, crankCom crank.com_radius_mm, speed drive.speed_rpm,
+/// clearance liner.cold_radial_clearance_um, ovality
+/// liner.skirt_profile.ovality_diametral_um, oilTemperature liner.oil.temperature_degC.
 struct Engine {
   Value rod, pinOffset, cr, ch, skirt, skirtTop, pistonMass, pistonCom, pistonInertia;
   Value pinMass, pinInertia, rodMass, rodCom, rodInertia, crankMass, crankCom, crankInertia;

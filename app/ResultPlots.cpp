@@ -322,6 +322,60 @@ void writeFieldMap(double angle_deg, const std::vector<const io::FieldDumpFile*>
      << "set key\n";
 }
 
+// The liner's oil film along the bore over the last cycle (liner_film.csv, written with the
+// liner oil transport): crank angle x bore height maps, thrust and anti-thrust side, on a
+// logarithmic colour scale from 0.1 um, so that the ring's micrometre shows beside the
+// flooded region's tens (films below it, the dry liner and the skirt's path stay white).
+void writeLinerFilmMap(const std::string& csvPath, const std::string& engine,
+                       const fs::path& work, const std::string& pngPath, std::ostream& gp) {
+  const io::CsvTable t = io::readCsvTable(
+      csvPath, {"crank_angle_deg", "height_above_crank_mm", "film_thrust_um", "film_antithrust_um"});
+  const std::size_t a = t.columnIndex("crank_angle_deg");
+  const std::size_t h = t.columnIndex("height_above_crank_mm");
+  const std::size_t ft = t.columnIndex("film_thrust_um"), fa = t.columnIndex("film_antithrust_um");
+  // pm3d reads one scan per crank angle, in order: the heights run fastest, a blank line
+  // between angles (a run that starts elsewhere than 0 deg wraps within the cycle).
+  std::vector<std::size_t> order(t.rows.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t x, std::size_t y) { return t.rows[x][a] < t.rows[y][a]; });
+  const fs::path data = work / "liner_film.dat";
+  double top = 1.0;
+  {
+    std::ofstream out(data);
+    for (std::size_t n = 0; n < order.size(); ++n) {
+      const auto& row = t.rows[order[n]];
+      if (n > 0 && row[a] != t.rows[order[n - 1]][a])
+        out << '\n';
+      out << number(row[a]) << ' ' << number(row[h]) << ' ' << number(row[ft]) << ' '
+          << number(row[fa]) << '\n';
+      top = std::max({top, row[ft], row[fa]});
+    }
+  }
+  gp << "\nset terminal pngcairo size 1200,900 noenhanced font 'Sans,11'\n"
+     << "set output " << quoted(pngPath) << "\n"
+     << "unset arrow\nunset x2tics\nset xtics 90 mirror\nset mxtics default\n"
+     << "set xrange [*:*]\nset yrange [*:*]\nset autoscale xfix\nset autoscale yfix\n"
+     << "set view map\nset pm3d map corners2color mean\nunset key\n"
+     << "set palette defined (0 '#ffffff', 1 '#c6dbef', 2 '#6baed6', 3 '#08519c', 4 '#08306b')\n"
+     << "set logscale cb\nset cbrange [0.1:" << number(top) << "]\n"
+     << "set multiplot layout 2,1 title "
+     << twoLines("Oil film on the liner along the bore over the last cycle (0° = firing TDC; "
+                 "white where the skirt covers it or the film is below 0.1 µm)",
+                 engine)
+     << " font 'Sans,13'\n";
+  for (int side = 0; side < 2; ++side) {
+    gp << "set title " << quoted(side == 0 ? "thrust side" : "anti-thrust side") << "\n"
+       << "set xlabel \"crank angle (°)\"\n"
+       << "set ylabel \"bore height above the crank axis (mm)\"\n"
+       << "set cblabel \"liner film, mean over the arc (µm)\"\n"
+       << "splot " << quoted(data.string()) << " using 1:2:" << (3 + side) << " with pm3d\n";
+  }
+  gp << "unset multiplot\nunset output\nunset view\nunset pm3d\nunset title\nunset cblabel\n"
+     << "unset logscale cb\nset xtics autofreq\nset key\n";
+}
+
 }  // namespace
 
 void checkResultPlotColumns(const io::ResultFolder& folder) {
@@ -409,6 +463,15 @@ std::vector<std::string> writeResultPlots(const io::ResultFolder& folder) {
       names.push_back(name);
       gp << "set lmargin -1\nset rmargin -1\n";
       writeFieldMap(a, sides, folder.getSummaryValue("inputs.engine.name"), work.path, staged, gp);
+    }
+    const fs::path linerFilm = fs::path(folder.directory) / "liner_film.csv";
+    if (fs::exists(linerFilm)) {
+      const std::string name = "liner_film.png";
+      const std::string staged = files.stage(name);
+      names.push_back(name);
+      gp << "set lmargin -1\nset rmargin -1\n";
+      writeLinerFilmMap(linerFilm.string(), folder.getSummaryValue("inputs.engine.name"),
+                        work.path, staged, gp);
     }
     if (!gp)
       throw std::runtime_error(script.string() + ": write failed");

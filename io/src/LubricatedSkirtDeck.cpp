@@ -386,33 +386,84 @@ void readOil(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
 
 // ---- oil supply -----------------------------------------------------------------------
 
-void readSupply(DeckSection& liner, plugin::SupplyFilm& f) {
-  DeckSection s = liner.getSection("oil_supply");
-  const bool flooded = s.has("fully_flooded") && s.getBoolOr("fully_flooded", false);
-  const int ways = (flooded ? 1 : 0) + (s.has("film_um") ? 1 : 0) + (s.has("film_file") ? 1 : 0);
-  if (ways == 0) {
-    liner.addProblem("oil_supply",
-                     "missing: say how oil reaches the skirt - fully_flooded: true, film_um (a "
-                     "constant oil film on the liner ahead of the skirt) or film_file (a table "
-                     "of it over the cycle)");
-  } else if (ways > 1) {
-    s.addProblem(s.has("film_file") ? "film_file" : "film_um",
-                 "give exactly one of fully_flooded: true, film_um, film_file");
-  }
-  if (const auto film = s.getOptionalSI(skirtKey("liner.oil_supply.film_um")))
-    f.constant_m = *film;
-  const std::string key = "film_file";
+// A periodic table `crank_angle_deg, film_um` over the cycle (the supply film, the ring's
+// film); false (and a problem named) when absent or bad.
+bool readFilmTable(DeckSection& s, const std::string& key, double maxFilm_um,
+                   std::vector<double>& angle_deg, std::vector<double>& film_m) {
   const std::vector<std::string> cols = {"crank_angle_deg", "film_um"};
   const auto t = s.getOptionalCsvTable(key, cols);
   if (!t || !hasExactlyColumns(s, key, *t, cols) || !hasRows(s, key, *t, 2) ||
       !isIncreasing(s, key, *t, "crank_angle_deg", "deg") ||
       !isWithin(s, key, *t, "crank_angle_deg", Bounds{0.0, 720.0 - 1e-9, false},
                 "deg is outside the cycle [0, 720) deg (the table is periodic)") ||
-      !isWithin(s, key, *t, "film_um", Bounds{0.0, 1000.0, true},
-                "um must be positive (and at most 1000 um)"))
-    return;
-  f.crankAngle_deg = t->getColumn("crank_angle_deg");
-  f.thickness_m = t->getColumnSI("film_um", Q::Length);
+      !isWithin(s, key, *t, "film_um", Bounds{0.0, maxFilm_um, true},
+                "um must be positive (and at most " + formatNumber(maxFilm_um) + " um)"))
+    return false;
+  angle_deg = t->getColumn("crank_angle_deg");
+  film_m = t->getColumnSI("film_um", Q::Length);
+  return true;
+}
+
+// liner.oil_supply.liner_transport: the oil carried on the liner.
+void readLinerTransport(DeckSection& supply, skirt::LinerOilParameters& o) {
+  DeckSection t = supply.getSection("liner_transport");
+  const auto key = [](const std::string& k) {
+    return skirtKey("liner.oil_supply.liner_transport." + k);
+  };
+  if (!t.has("ring_height_above_pin_mm"))
+    t.addProblem("ring_height_above_pin_mm",
+                 "missing: the oil-control ring's lower edge above the pin axis (mm), where the "
+                 "film the ring leaves begins");
+  else
+    o.ringHeightAbovePin_m = t.getSI(key("ring_height_above_pin_mm"));
+  const int ring = (t.has("ring_film_um") ? 1 : 0) + (t.has("ring_film_file") ? 1 : 0);
+  if (ring != 1)
+    t.addProblem(ring == 0 ? "ring_film_um" : "ring_film_file",
+                 "give exactly one of ring_film_um (the film the oil-control ring leaves on the "
+                 "liner) and ring_film_file (a table of it over the cycle)");
+  if (const auto film = t.getOptionalSI(key("ring_film_um")))
+    o.ringFilm_m = *film;
+  readFilmTable(t, "ring_film_file", 100.0, o.ringFilmAngle_deg, o.ringFilmTable_m);
+  if (const auto h = t.getOptionalSI(key("flooded_below_mm")))
+    o.floodedBelow_m = *h;
+  o.splashRate_mps = t.getSI(key("splash_rate_mm_per_s"));
+  if (const auto h = t.getOptionalSI(key("splash_below_mm")))
+    o.splashBelow_m = *h;
+  if (o.splashRate_mps > 0.0 && std::isnan(o.splashBelow_m))
+    t.addProblem("splash_rate_mm_per_s",
+                 "a splash rate needs splash_below_mm (the bore height above the crank axis "
+                 "below which it acts)");
+  o.maxFilm_m = t.getSI(key("max_film_um"));
+  o.skirtShare = t.getNumber(key("skirt_share"));
+  o.initialFilm_m = t.getSI(key("initial_film_um"));
+}
+
+void readSupply(DeckSection& liner, plugin::LubricatedSkirtParameters& p) {
+  plugin::SupplyFilm& f = p.supplyFilm;
+  DeckSection s = liner.getSection("oil_supply");
+  const bool flooded = s.has("fully_flooded") && s.getBoolOr("fully_flooded", false);
+  const bool transport = s.has("liner_transport");
+  const int ways = (flooded ? 1 : 0) + (s.has("film_um") ? 1 : 0) + (s.has("film_file") ? 1 : 0) +
+                   (transport ? 1 : 0);
+  if (ways == 0) {
+    liner.addProblem("oil_supply",
+                     "missing: say how oil reaches the skirt - fully_flooded: true, film_um (a "
+                     "constant oil film on the liner ahead of the skirt), film_file (a table "
+                     "of it over the cycle) or liner_transport (the oil carried on the liner)");
+  } else if (ways > 1) {
+    s.addProblem(transport ? "liner_transport" : s.has("film_file") ? "film_file" : "film_um",
+                 "give exactly one of fully_flooded: true, film_um, film_file, liner_transport");
+  }
+  if (transport) {
+    readLinerTransport(s, p.linerOil.emplace());
+    if (p.lubrication.cavitation != lubrication::CavitationModel::MassConserving)
+      s.addProblem("liner_transport",
+                   "the oil carried on the liner needs liner.film.cavitation: mass_conserving "
+                   "(the liner takes and receives the film's flows across the skirt's edges)");
+  }
+  if (const auto film = s.getOptionalSI(skirtKey("liner.oil_supply.film_um")))
+    f.constant_m = *film;
+  readFilmTable(s, "film_file", 1000.0, f.crankAngle_deg, f.thickness_m);
 }
 
 // ---- roughness, asperity contact, film ------------------------------------------------
@@ -583,6 +634,15 @@ void checkAgainstEngine(DeckSection& liner, const mbd::EngineDescription& e,
               "; a profile is never extrapolated");
     }
   }
+  if (p.linerOil && p.linerOil->ringHeightAbovePin_m < yTop) {
+    liner.getSection("oil_supply")
+        .getSection("liner_transport")
+        .addProblem("ring_height_above_pin_mm",
+                    formatNumber(p.linerOil->ringHeightAbovePin_m / kMm) +
+                        " mm is below the skirt's top (piston.skirt_top_above_pin_mm = " +
+                        formatNumber(yTop / kMm) +
+                        " mm): the oil-control ring sits above the skirt");
+  }
   const skirt::OvalityParameters& ov = p.gap.skirtProfile.ovality;
   if (ov.model == skirt::OvalityModel::Table && ov.tableAngle_rad.size() > 0) {
     const double last = ov.tableAngle_rad[ov.tableAngle_rad.size() - 1];
@@ -684,8 +744,8 @@ LinerModel readLubricatedSkirt(DeckSection& liner, const LinerDeckContext& conte
   readThermal(liner, gap);
 
   readOil(liner, p);
-  readSupply(liner, p.supplyFilm);
-  readSurfaces(liner, p);
+  readSurfaces(liner, p);  // the film's cavitation model first: the liner transport needs it
+  readSupply(liner, p);
 
   p.tertiaryMotion = liner.getBool(skirtKey("liner.tertiary_motion"));
   p.parallelSides = liner.getBool(skirtKey("liner.parallel_sides"));

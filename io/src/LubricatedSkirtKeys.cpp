@@ -134,13 +134,54 @@ const DeckKeyTable& getLubricatedSkirtDeckKeys() {
               .means("film temperature, inside the oil's valid range (`summary.json` adds the "
                      "resulting `film_dynamic_viscosity_Pas`)"),
           K::onOff("liner.oil_supply.fully_flooded")
-              .means("exactly one of these three: fully flooded skirt …"),
+              .means("exactly one of these four: fully flooded skirt …"),
           K::number("liner.oil_supply.film_um", Q::Length)
               .within(Bounds{0.0, 1000.0, true})
               .means("… a constant oil film on the liner ahead of the skirt …"),
           K::file("liner.oil_supply.film_file", "CSV `crank_angle_deg, film_um`")
               .means("… or a periodic table over the cycle: angles strictly increasing in [0, "
-                     "720), film in (0, 1000] µm, ≥ 2 rows"),
+                     "720), film in (0, 1000] µm, ≥ 2 rows …"),
+          K::number("liner.oil_supply.liner_transport.ring_height_above_pin_mm", Q::Length)
+              .within(Bounds::between(0, 500))
+              .means("… or the oil carried on the liner (`skirt/LinerOilFilm.h`; needs "
+                     "`liner.film.cavitation: mass_conserving`): the oil-control ring's lower "
+                     "edge above the pin axis, at least the skirt's top; required for it"),
+          K::number("liner.oil_supply.liner_transport.ring_film_um", Q::Length)
+              .within(Bounds{0.0, 100.0, true})
+              .means("film the oil-control ring leaves on the liner it passes (one of this and "
+                     "the next key)"),
+          K::file("liner.oil_supply.liner_transport.ring_film_file",
+                  "CSV `crank_angle_deg, film_um`")
+              .means("the ring's film over the cycle: angles strictly increasing in [0, 720), "
+                     "film in (0, 100] µm, ≥ 2 rows"),
+          K::number("liner.oil_supply.liner_transport.flooded_below_mm", Q::Length)
+              .byDefault("none")
+              .within(Bounds::between(-2000, 2000))
+              .means("crankcase splash: the liner below this bore height above the crank axis "
+                     "is flooded (held at max_film_um)"),
+          K::number("liner.oil_supply.liner_transport.splash_rate_mm_per_s", Q::Speed)
+              .byDefault(0.0)
+              .within(Bounds::between(0, 1000))
+              .means("crankcase splash as a rate: the film below splash_below_mm grows by it, up "
+                     "to max_film_um"),
+          K::number("liner.oil_supply.liner_transport.splash_below_mm", Q::Length)
+              .byDefault("none")
+              .within(Bounds::between(-2000, 2000))
+              .means("bore height above the crank axis below which the splash rate acts; "
+                     "required with a splash rate"),
+          K::number("liner.oil_supply.liner_transport.max_film_um", Q::Length)
+              .byDefault(50.0)
+              .within(Bounds{0.0, 1000.0, true})
+              .means("a thicker liner film drains to the crankcase; the flooded film"),
+          K::number("liner.oil_supply.liner_transport.skirt_share")
+              .byDefault(0.5)
+              .within(Bounds::between(0, 1))
+              .means("share of the film's outflow at the trailing edge that leaves on the skirt "
+                     "(lost to the crankcase); the rest stays on the liner"),
+          K::number("liner.oil_supply.liner_transport.initial_film_um", Q::Length)
+              .byDefault(1.0)
+              .within(Bounds::between(0, 1000))
+              .means("the liner's film at the start, outside the skirt and the flooded region"),
           K::number("liner.roughness.liner_rq_um", Q::Length)
               .require()
               .within(Bounds::between(0, 20))

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "FieldDumps.h"
+#include "LinerFilmDump.h"
 #include "pistondyn/common/Validation.h"
 #include "pistondyn/io/ResultWriters.h"
 #include "pistondyn/io/Version.h"
@@ -170,6 +171,27 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
   // elastic coupling that did not converge on a trial step (never silent, issue 12).
   r["failed_evaluations"] = o.stats.failedEvaluations;
   r["wall_time_s"] = o.stats.wallTime_s;
+  if (o.linerOilLastCycle) {
+    // The liner oil over the last cycle, results.liner_oil_*_mm3: what came and went, and
+    // what closes the balance (round-off; periodic when the start and end agree).
+    const plugin::LinerOilBalance& b = *o.linerOilLastCycle;
+    const auto put = [&r](const std::string& name, double v_m3) {
+      r["liner_oil_" + name + "_mm3"] = 1e9 * v_m3;
+    };
+    put("stored_start", b.initial_m3);
+    put("stored_end", b.stored_m3);
+    put("ring_source", b.ringSource_m3);
+    put("splash_source", b.splashSource_m3);
+    put("deficit_source", b.deficitSource_m3);
+    put("drain", b.drainLoss_m3);
+    put("skirt_film_intake", b.filmIntake_m3);
+    put("side_leakage", b.sideLeakage_m3);
+    put("left_on_skirt", b.skirtShareLoss_m3);
+    put("balance_residual",
+        (b.stored_m3 - b.initial_m3) -
+            (b.ringSource_m3 + b.splashSource_m3 + b.deficitSource_m3 - b.drainLoss_m3 -
+             b.filmIntake_m3 - b.sideLeakage_m3 - b.skirtShareLoss_m3));
+  }
   j["wall_time_s"] = o.stats.wallTime_s;
   j["integrator_steps"] = o.stats.integratorSteps;
   // nlohmann writes doubles in the shortest text that reads back to the same double
@@ -207,6 +229,17 @@ RunOutcome runModel(const EngineDeck& deck, plugin::PistonAssemblyModel& model,
                   makeCycleCsvComments(deck), *files);
     sinks.push_back(&*dumps);
   }
+  // The liner's oil film along the bore (liner_film.csv, staged) and its balance.
+  std::optional<detail::LinerFilmSink> linerFilm;
+  {
+    const plugin::LinerElement* liner =
+        static_cast<const plugin::PistonAssemblyModel&>(model).findLinerElement();
+    if (const plugin::LinerOilSource* oil = liner ? liner->getLinerOil() : nullptr) {
+      linerFilm.emplace(*oil, deck.simulation.stepsPerCycle(), makeCycleCsvComments(deck),
+                        files ? &*files : nullptr);
+      sinks.push_back(&*linerFilm);
+    }
+  }
   sinks.insert(sinks.end(), extraSinks.begin(), extraSinks.end());
   sim.run(sinks, progress);
 
@@ -214,6 +247,8 @@ RunOutcome runModel(const EngineDeck& deck, plugin::PistonAssemblyModel& model,
   o.summary = summary.getSummary();
   o.stats = sim.getStats();
   o.rows = summary.getRowCount();
+  if (linerFilm)
+    o.linerOilLastCycle = linerFilm->getLastCycleBalance();
   if (files) {
     const std::string path = files->stage("summary.json");
     std::ofstream out(path, std::ios::binary);

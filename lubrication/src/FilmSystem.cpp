@@ -605,11 +605,12 @@ double FilmSystem::faceOutflow(int k, int e) const {
 }
 
 void FilmSystem::calcEdgeOutflows(FilmResult& r) const {
-  // The flow across the edge line at edge node e: what the node inside sends into e's control
-  // volume, less what that half (quarter) cell keeps as its gap grows.
+  // The flow through the face between edge node e and the node inside. The edge node's own
+  // half (quarter) cell is not counted: its fill is prescribed (the supply), so it belongs to
+  // the oil outside, and its storage, theta A dhT/dt, would draw or push oil the outside need
+  // not hold (a gap opening under a starved edge fills with air, not oil).
   const auto edge = [&](int e, int inside) {
-    const double face = (inside >= 0 && status[inside] != kFixed) ? faceOutflow(inside, e) : 0.0;
-    return face - theta[e] * squeeze[e];
+    return (inside >= 0 && status[inside] != kFixed) ? faceOutflow(inside, e) : 0.0;
   };
   r.edgeOutflowYMin_m3ps.resize(nx);
   r.edgeOutflowYMax_m3ps.resize(nx);

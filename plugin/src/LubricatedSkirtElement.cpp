@@ -92,6 +92,10 @@ LubricatedSkirtElement::LubricatedSkirtElement(const LubricatedSkirtParameters& 
           p.elasticSkirt.crankcasePressure_Pa >= 0.0))
       badParameter("elasticSkirt.crankcasePressure_Pa must be finite and >= 0");
   }
+  if (p.linerOil &&
+      p.lubrication.cavitation != lubrication::CavitationModel::MassConserving)
+    badParameter("linerOil (oil transport on the liner) needs the mass-conserving film "
+                 "(lubrication.cavitation): the liner takes and receives the film's edge flows");
   if (p.elasticSkirt.liner && !p.elasticSkirt.enabled)
     badParameter("elasticSkirt.liner needs the elastic skirt (elasticSkirt.enabled with the "
                  "skirt's compliance): the liner is coupled through the skirt's structural grid");
@@ -155,8 +159,13 @@ void LubricatedSkirtElement::addToModel(const ModelBuildContext& context) {
                                             parameters_.elasticSkirt.coupling,
                                             liner ? &*liner : nullptr);
     }
+    std::optional<skirt::LinerOilFilm> linerOil;
+    if (parameters_.linerOil)  // checks the parameters against the skirt (ring above its top)
+      linerOil.emplace(grid, *parameters_.linerOil, gap.travel.lowestPinHeight_m,
+                       gap.travel.highestPinHeight_m);
     workspace_->sides[k] = std::make_unique<skirt::SkirtSideSolver>(
-        grid, gap, flowFactors, contactLaw, friction, settings, std::move(coupling));
+        grid, gap, flowFactors, contactLaw, friction, settings, std::move(coupling),
+        std::move(linerOil));
   }
 }
 
@@ -188,7 +197,7 @@ void LubricatedSkirtElement::calcResults(const SimTK::State& s, LubricatedSkirtR
   const double crankAngle_deg = ct.getCrankAngle_rad(s) * 180.0 / M_PI;
   r.supplyFilm_m = parameters_.supplyFilm.calcThickness_m(crankAngle_deg);
   solveSides(s, motion, crankAngle_deg, r.supplyFilm_m);
-  sumSides(r);
+  sumSides(motion.axialVelocity_mps, r);
   installHistories(s);
   addRetainerAndRotate(s, pose, r);
   calcPowers(pose, r);
@@ -204,6 +213,7 @@ void LubricatedSkirtElement::solveSides(const SimTK::State& s,
   skirt::SkirtSideConditions conditions;
   conditions.viscosity_Pas = viscosity_Pas_;
   conditions.supplyFilm_m = supplyFilm_m;
+  conditions.crankAngle_deg = crankAngle_deg;
   conditions.poseDerivativesWanted = jacobianWanted_;
   conditions.cylinderGaugePressure_Pa =
       elastic.enabled && elastic.cylinderPressure
@@ -266,7 +276,7 @@ void LubricatedSkirtElement::solveSides(const SimTK::State& s,
   }
 }
 
-void LubricatedSkirtElement::sumSides(LubricatedSkirtResults& r) const {
+void LubricatedSkirtElement::sumSides(double axialVelocity_mps, LubricatedSkirtResults& r) const {
   skirt::PistonLoads total;
   Eigen::Matrix<double, 6, 3> dRate = Eigen::Matrix<double, 6, 3>::Zero();
   Eigen::Matrix<double, 6, 3> dPose = Eigen::Matrix<double, 6, 3>::Zero();
@@ -290,6 +300,14 @@ void LubricatedSkirtElement::sumSides(LubricatedSkirtResults& r) const {
     dRate += out.dLoads_dPoseRate;
     dPose += out.dLoads_dPose;
     r.dissipatedPower_W += out.dissipatedPower_W;
+    if (const skirt::LinerOilFilm* liner = solver.getLinerOilFilm()) {
+      // The leading edge: the top while the piston rises (the liner enters from above).
+      const Eigen::ArrayXd& inlet = axialVelocity_mps >= 0.0 ? solver.getSupplyTop_m()
+                                                               : solver.getSupplyBottom_m();
+      const Eigen::Index n = inlet.size();
+      r.inletFilm_m[k] = n > 2 ? inlet.segment(1, n - 2).mean() : inlet.mean();
+      r.linerOilVolume_m3[k] = liner->storedVolume_m3(solution.next.liner);
+    }
   }
   r.skirtForce_N = total.force_N;
   r.skirtMoment_Nm = total.moment_Nm;
@@ -447,6 +465,65 @@ std::optional<double> LubricatedSkirtElement::getHotRunningClearance_m() const {
       workspace_->sides[kAntiThrust]->getGapAssembly().getHotRunningClearance().clearance_m);
 }
 
+// ---- LinerOilSource -------------------------------------------------------------------
+
+namespace {
+
+const skirt::LinerOilFilm& linerOilOf(const skirt::SkirtSideSolver& solver) {
+  const skirt::LinerOilFilm* liner = solver.getLinerOilFilm();
+  if (!liner)
+    throw std::logic_error("LubricatedSkirtElement: no liner oil film (parameters.linerOil)");
+  return *liner;
+}
+
+}  // namespace
+
+Eigen::VectorXd LubricatedSkirtElement::getLinerOilRowHeights_m() const {
+  const skirt::LinerOilFilm& liner = linerOilOf(*workspace_->sides[kThrust]);
+  Eigen::VectorXd h(liner.rows());
+  for (int m = 0; m < liner.rows(); ++m)
+    h[m] = liner.rowHeight_m(m);
+  return h;
+}
+
+void LubricatedSkirtElement::calcLinerOilFilm(const SimTK::State& s, SkirtSide side,
+                                              Eigen::VectorXd& film_m) const {
+  const int k = sideIndex(side);
+  const skirt::LinerOilFilm& liner = linerOilOf(*workspace_->sides[k]);
+  const skirt::SkirtSideHistory& history = history_[k].getValue(s);
+  if (history.liner.empty()) {  // before the first accepted step: the start
+    film_m.setConstant(liner.rows(), liner.getParameters().initialFilm_m);
+    return;
+  }
+  Eigen::ArrayXd film;
+  liner.calcMeanFilmPerRow(history.liner, film);
+  film_m = film.matrix();
+}
+
+LinerOilBalance LubricatedSkirtElement::calcLinerOilBalance(const SimTK::State& s) const {
+  LinerOilBalance b;
+  for (int k : {kThrust, kAntiThrust}) {
+    const skirt::LinerOilFilm& liner = linerOilOf(*workspace_->sides[k]);
+    const skirt::LinerOilState& state = history_[k].getValue(s).liner;
+    if (state.empty())
+      continue;
+    // The start is the initial film on the rows free at the run's first step.
+    b.initial_m3 += liner.storedVolume_m3(state) -
+                    (state.ringSource_m3 + state.splashSource_m3 + state.deficitSource_m3 -
+                     state.drainLoss_m3 - state.filmIntake_m3 - state.sideLeakage_m3 -
+                     state.skirtShareLoss_m3);
+    b.stored_m3 += liner.storedVolume_m3(state);
+    b.ringSource_m3 += state.ringSource_m3;
+    b.splashSource_m3 += state.splashSource_m3;
+    b.deficitSource_m3 += state.deficitSource_m3;
+    b.drainLoss_m3 += state.drainLoss_m3;
+    b.filmIntake_m3 += state.filmIntake_m3;
+    b.sideLeakage_m3 += state.sideLeakage_m3;
+    b.skirtShareLoss_m3 += state.skirtShareLoss_m3;
+  }
+  return b;
+}
+
 const skirt::SkirtSideSolver& LubricatedSkirtElement::getSideSolver(SkirtSide side) const {
   const auto& solver = workspace_->sides[sideIndex(side)];
   if (!solver)
@@ -590,7 +667,18 @@ ElementOutputs LubricatedSkirtElement::getOutputs() const {
        }});
   // A fully flooded skirt (infinite supply) has no supply column: outputs are finite.
   const SupplyFilm& supply = parameters_.supplyFilm;
-  if (!supply.crankAngle_deg.empty() || std::isfinite(supply.constant_m)) {
+  if (parameters_.linerOil) {
+    for (int k : {kThrust, kAntiThrust}) {
+      const std::string n = names[k];
+      o.push_back({"inlet_film_" + n, "um",
+                   "liner oil film at the skirt's leading edge (mean over the arc), " + n +
+                       " side",
+                   [this, k](S s) { return 1e6 * getResults(s).inletFilm_m[k]; }});
+      o.push_back({"liner_oil_volume_" + n, "mm3",
+                   "oil on the liner along the bore (outside the skirt), " + n + " side",
+                   [this, k](S s) { return 1e9 * getResults(s).linerOilVolume_m3[k]; }});
+    }
+  } else if (!supply.crankAngle_deg.empty() || std::isfinite(supply.constant_m)) {
     o.push_back({"supply_film", "um", "oil film on the liner ahead of the skirt",
                  [this](S s) { return 1e6 * getResults(s).supplyFilm_m; }});
   }

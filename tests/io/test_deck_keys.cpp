@@ -74,6 +74,10 @@ TEST_F(KeyCoverage, EveryKeyTheReadersAskForIsInTheTableAndEveryTableKeyIsRead) 
   for (const auto& k :
        keysRead(example, {"liner.oil_supply.film_um=null", "liner.oil_supply.fully_flooded=true"}))
     read.insert(k);
+  for (const auto& k : keysRead(example, {"liner.oil_supply.film_um=null",
+                                          "liner.oil_supply.liner_transport.ring_height_above_pin_mm=13",
+                                          "liner.oil_supply.liner_transport.ring_film_um=1"}))
+    read.insert(k);
   for (const auto& k :
        keysRead(deck(), {"liner.oil.name=test oil", "drive.mode=free",
                          "drive.flywheel_inertia_kg_m2=0.5", "drive.load_torque_Nm=10",
@@ -108,6 +112,11 @@ std::vector<std::string> contextFor(const std::string& path) {
   }
   if (path.rfind("drive.", 0) == 0)
     return {"drive.mode=free"};
+  if (path.rfind("liner.oil_supply.liner_transport.", 0) == 0)
+    return {"liner.oil_supply.film_um=null",
+            "liner.oil_supply.liner_transport.ring_height_above_pin_mm=13",
+            "liner.oil_supply.liner_transport.ring_film_um=1",
+            "liner.oil_supply.liner_transport.splash_below_mm=100"};
   if (path == "liner.oil_supply.film_um")
     return {};
   return {};
@@ -192,6 +201,12 @@ simulation: {integrator: linearly_implicit_bdf2}
                                                    "liner.oil.kinematic_viscosity_1_mm2_per_s=60",
                                                    "liner.oil.kinematic_viscosity_2_mm2_per_s=10",
                                                    "liner.oil.density_kg_per_m3=850"})
+                           .inputs)
+    inputs.push_back(r);
+  // The oil carried on the liner (its keys are read only in its section).
+  for (const auto& r : io::loadEngineDeck(deck(), {"liner.oil_supply.film_um=null",
+                                                   "liner.oil_supply.liner_transport.ring_height_above_pin_mm=13",
+                                                   "liner.oil_supply.liner_transport.ring_film_um=1"})
                            .inputs)
     inputs.push_back(r);
   int checked = 0;

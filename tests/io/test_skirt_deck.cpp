@@ -9,6 +9,7 @@
 #include <cmath>
 #include <fstream>
 #include <memory>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,6 +18,8 @@
 #include "ScratchDeck.h"
 #include "pistondyn/io/DeckError.h"
 #include "pistondyn/io/EngineDeck.h"
+#include "pistondyn/io/RunDeck.h"
+#include "pistondyn/mbd_models/SliderCrank.h"
 #include "pistondyn/lubrication/OilGrades.h"
 #include "pistondyn/plugin/LubricatedSkirtElement.h"
 
@@ -372,3 +375,133 @@ TEST_F(SkirtScratchDeck, TableValuesBeyondAnyEngineAreRejectedAtTheirLine) {
 }
 
 }  // namespace
+
+// ---- liner.oil_supply.liner_transport --------------------------------------------------
+
+namespace liner_transport {
+
+const std::vector<std::string> kTransport = {
+    "liner.oil_supply.film_um=null",
+    "liner.oil_supply.liner_transport.ring_height_above_pin_mm=13",
+    "liner.oil_supply.liner_transport.ring_film_um=0.8"};
+
+std::vector<std::string> with(std::vector<std::string> extra) {
+  std::vector<std::string> o = kTransport;
+  o.insert(o.end(), extra.begin(), extra.end());
+  return o;
+}
+
+}  // namespace liner_transport
+
+// The section reaches the element in SI (um -> 1e-6 m, mm -> 1e-3 m, mm/s -> 1e-3 m/s).
+TEST(SkirtDeck, TheLinerTransportSectionBecomesTheElementsLinerOilInSI) {
+  const Built b = build(kEngineDir + "/engine.yaml",
+                        liner_transport::with({"liner.oil_supply.liner_transport.flooded_below_mm=95",
+                                               "liner.oil_supply.liner_transport.splash_rate_mm_per_s=2",
+                                               "liner.oil_supply.liner_transport.splash_below_mm=110",
+                                               "liner.oil_supply.liner_transport.max_film_um=20",
+                                               "liner.oil_supply.liner_transport.skirt_share=0.3",
+                                               "liner.oil_supply.liner_transport.initial_film_um=2"}));
+  const plugin::LubricatedSkirtParameters& p = b.skirt().getParameters();
+  ASSERT_TRUE(p.linerOil.has_value());
+  EXPECT_EQ(p.linerOil->ringHeightAbovePin_m, 13.0 * 1e-3);
+  EXPECT_EQ(p.linerOil->ringFilm_m, 0.8 * 1e-6);
+  EXPECT_EQ(p.linerOil->floodedBelow_m, 95.0 * 1e-3);
+  EXPECT_EQ(p.linerOil->splashRate_mps, 2.0 * 1e-3);
+  EXPECT_EQ(p.linerOil->splashBelow_m, 110.0 * 1e-3);
+  EXPECT_EQ(p.linerOil->maxFilm_m, 20.0 * 1e-6);
+  EXPECT_EQ(p.linerOil->skirtShare, 0.3);
+  EXPECT_EQ(p.linerOil->initialFilm_m, 2.0 * 1e-6);
+  // The element then offers its liner film to the edge (io/, app/).
+  EXPECT_NE(b.skirt().getLinerOil(), nullptr);
+  EXPECT_GT(b.skirt().getLinerOilRowHeights_m().size(), 100);
+}
+
+TEST_F(SkirtScratchDeck, LinerTransportMistakesNameTheirKey) {
+  using liner_transport::with;
+  EXPECT_EQ(rejection(with({})), "");
+  struct Case {
+    std::vector<std::string> overrides;
+    std::string key, words;
+  };
+  const std::vector<Case> cases = {
+      {with({"liner.film.cavitation=reynolds"}), "liner.oil_supply.liner_transport",
+       "mass_conserving"},
+      {with({"liner.oil_supply.film_um=0.5"}), "liner.oil_supply.liner_transport",
+       "exactly one of"},
+      {with({"liner.oil_supply.liner_transport.ring_height_above_pin_mm=null"}),
+       "liner.oil_supply.liner_transport.ring_height_above_pin_mm", "missing"},
+      {with({"liner.oil_supply.liner_transport.ring_height_above_pin_mm=5"}),
+       "liner.oil_supply.liner_transport.ring_height_above_pin_mm", "below the skirt's top"},
+      {with({"liner.oil_supply.liner_transport.ring_film_um=null"}),
+       "liner.oil_supply.liner_transport.ring_film_um", "exactly one of"},
+      {with({"liner.oil_supply.liner_transport.splash_rate_mm_per_s=3"}),
+       "liner.oil_supply.liner_transport.splash_rate_mm_per_s", "splash_below_mm"},
+      {with({"liner.oil_supply.liner_transport.skirt_share=1.5"}),
+       "liner.oil_supply.liner_transport.skirt_share", ""},
+  };
+  for (const Case& c : cases) {
+    const std::string m = rejection(c.overrides);
+    EXPECT_NE(m.find(c.key), std::string::npos) << c.overrides.back() << "\n" << m;
+    EXPECT_NE(m.find(c.words), std::string::npos) << c.overrides.back() << "\n" << m;
+  }
+}
+
+// A coarse cycle with the oil carried on the liner, through runDeck: liner_film.csv holds the
+// last cycle's film along the bore on both sides at every output row, finite, within [0,
+// max_film]; the rows above the skirt's reach (and above the row its top edge leaves oil in)
+// that the oil-control ring passes hold exactly the ring's film once it passed them (nothing
+// else reaches them); and the summary's balance over the cycle closes to round-off of the oil
+// that moved.
+TEST_F(SkirtScratchDeck, LinerTransportWritesTheFilmAlongTheBoreAndClosesItsBalance) {
+  const std::vector<std::string> o = liner_transport::with(
+      {"liner.oil_supply.liner_transport.flooded_below_mm=95",
+       "liner.oil_supply.liner_transport.ring_height_above_pin_mm=20",
+       "liner.oil_supply.liner_transport.initial_film_um=0.5",
+       "liner.oil_supply.liner_transport.max_film_um=20", "simulation.cycles=1",
+       "simulation.until_periodic=false", "liner.grid.nodes_circumferential=16",
+       "liner.grid.nodes_axial=12", "simulation.output_step_deg=5"});
+  const io::EngineDeck d = io::loadEngineDeck(deck(), o);
+  const fs::path out = dir_ / "transport";
+  const io::RunOutcome r = io::runDeck(d, out.string());
+  ASSERT_TRUE(r.linerOilLastCycle.has_value());
+  const plugin::LinerOilBalance& b = *r.linerOilLastCycle;
+  const double moved = b.ringSource_m3 + b.splashSource_m3 + b.skirtShareLoss_m3 +
+                       std::abs(b.filmIntake_m3) + b.stored_m3;
+  EXPECT_NE(b.ringSource_m3, 0.0);  // here a net sink: it scrapes what the skirt carried up
+  EXPECT_GT(b.splashSource_m3, 0.0);
+  EXPECT_NEAR(b.stored_m3 - b.initial_m3,
+              b.ringSource_m3 + b.splashSource_m3 + b.deficitSource_m3 - b.drainLoss_m3 -
+                  b.filmIntake_m3 - b.sideLeakage_m3 - b.skirtShareLoss_m3,
+              1e-12 * moved);
+  // The file: 4 columns, every value finite, films within [0, 20] um.
+  std::ifstream in(out / "liner_film.csv");
+  ASSERT_TRUE(in.good());
+  std::string line;
+  int rows = 0, ringRows = 0;
+  std::set<double> heights;
+  const double skirtTopAtTdc_mm = 1e3 * (d.engine.piston.skirtTopAbovePin_m +
+                                        pistondyn::mbd::SliderCrank(d.engine.geometry).pinHeightAtTdc_m());
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line.rfind("crank_angle_deg", 0) == 0)
+      continue;
+    double a, h, ft, fa;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &a, &h, &ft, &fa), 4) << line;
+    ASSERT_TRUE(std::isfinite(ft) && std::isfinite(fa)) << line;
+    EXPECT_GE(std::min(ft, fa), 0.0) << line;
+    EXPECT_LE(std::max(ft, fa), 20.0 * (1 + 1e-12)) << line;
+    ++rows;
+    heights.insert(h);
+    // Over 3 mm (a liner row) above the skirt's top at TDC, below the ring's lower edge at
+    // TDC (8 mm above it): only the ring's film once the ring has passed (it starts at TDC,
+    // 0 deg, and is far below these rows by 90 deg).
+    if (h > skirtTopAtTdc_mm + 3.0 && h < skirtTopAtTdc_mm + 7.95 && a > 90.0) {
+      EXPECT_NEAR(ft, 0.8, 1e-9) << line;
+      EXPECT_NEAR(fa, 0.8, 1e-9) << line;
+      ++ringRows;
+    }
+  }
+  EXPECT_GT(heights.size(), 40u);  // the 12 axial nodes' spacing along 120 mm of bore
+  EXPECT_EQ(rows, 144 * static_cast<int>(heights.size()));  // 144 output rows of 5 deg
+  EXPECT_GT(ringRows, 0);
+}

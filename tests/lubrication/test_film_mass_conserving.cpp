@@ -139,6 +139,12 @@ TEST(FilmMassConserving, OilBalanceClosesSteadyAndTransient) {
     EXPECT_GT(std::abs(bt.storage), 1e-3 * bt.in);  // the storage term really matters here
     EXPECT_LT(std::abs(bt.defect()), 1e-8);
     EXPECT_NEAR(rt.storageRate_m3ps, bt.storage, 1e-12 * bt.in);  // the diagnostics again
+    // The per-edge-node flows (what a liner film takes and receives) carry the same balance:
+    // their net outflow is the test's out - in, and in - out is the storage.
+    const double edgeNet = rt.edgeOutflowYMin_m3ps.sum() + rt.edgeOutflowYMax_m3ps.sum() +
+                           rt.edgeOutflowXMin_m3ps.sum() + rt.edgeOutflowXMax_m3ps.sum();
+    EXPECT_NEAR(edgeNet, bt.out - bt.in, 1e-10 * bt.in);
+    EXPECT_NEAR(rt.edgeInflow_m3ps - rt.edgeOutflow_m3ps, bt.storage, 1e-8 * bt.in);
     expectFillFractionInUnitInterval(rt);
   }
 }

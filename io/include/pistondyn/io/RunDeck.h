@@ -13,6 +13,7 @@
 ///   const io::RunOutcome o = io::runDeck(deck, "results/3000rpm");
 ///   std::printf("mean crank torque %.2f N m\n", o.summary.meanCrankTorque_Nm);
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,8 @@ struct RunOutcome {
   CycleSummary summary;           ///< the last 720 deg cycle
   plugin::SimulationStats stats;  ///< steps, cycles, fmep per cycle, wall time
   long rows = 0;                  ///< rows simulated (and written to cycle.csv)
+  /// The liner oil's balance over the last cycle (a liner element with a LinerOilSource).
+  std::optional<plugin::LinerOilBalance> linerOilLastCycle;
 };
 
 /// Builds the deck's model and runs it (runModel). outDir empty: no files, the summary

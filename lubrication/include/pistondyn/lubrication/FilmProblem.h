@@ -343,12 +343,12 @@ struct FilmResult {
   // The same balance at the edge lines themselves: the net flow out of the film across each
   // open edge, per edge node [m^3/s] (+ out): yMin / yMax one entry per column (nx), xMin /
   // xMax one per row (ny; empty on an x-periodic grid; the corner nodes count with the y
-  // edges). Each is the flow through the face from the node inside, minus what the edge
-  // node's own control volume (half a cell, a quarter at a corner) takes up as its gap changes,
-  // theta A dhT/dt: the face flow alone lies half a cell inside the edge and misses that
-  // volume. edgeInflow / edgeOutflow sum the entries' negative and positive parts; with the
-  // mass-conserving model edgeInflow - edgeOutflow = storageRate_m3ps plus the edge nodes'
-  // theta A dhT/dt, and oilVolume_m3 is sum over all nodes of A theta hT.
+  // edges). Each is the flow through the face between the edge node and the node inside
+  // it: the edge nodes' half cells, whose fill the boundary prescribes, count as outside (their
+  // storage would draw oil the outside need not hold). edgeInflow / edgeOutflow sum the
+  // entries' negative and positive parts; with the mass-conserving model edgeInflow -
+  // edgeOutflow = storageRate_m3ps (the interior nodes' storage), and oilVolume_m3 is sum over
+  // all nodes of A theta hT.
   Eigen::ArrayXd edgeOutflowYMin_m3ps, edgeOutflowYMax_m3ps;
   Eigen::ArrayXd edgeOutflowXMin_m3ps, edgeOutflowXMax_m3ps;
   double edgeInflow_m3ps = 0.0;

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "pistondyn/plugin/ForceElement.h"
+#include "pistondyn/plugin/LinerOilSource.h"
 #include "pistondyn/plugin/NodalFields.h"
 
 namespace pistondyn::plugin {
@@ -64,6 +65,8 @@ class LinerElement : public ForceElement {
   // Nodal fields over the liner's contact regions (NodalFields.h), for field dumps and maps;
   // null for a liner without them.
   virtual const NodalFieldSource* getNodalFields() const { return nullptr; }
+  // The oil film it carries on the liner along the bore (LinerOilSource.h), if any.
+  virtual const LinerOilSource* getLinerOil() const { return nullptr; }
 };
 
 // The outputs the summary, the figures and the report know, computed from the liner role's

@@ -134,6 +134,12 @@ struct LubricatedSkirtParameters {
   contact_forces::BoundaryFrictionParameters boundaryFriction;  // f_dry = 0.1
   skirt::SkirtLubricationParameters lubrication;                // cavitation model, solver, wear
   SupplyFilm supplyFilm;                                        // inlet oil film
+  // Oil transport on the liner (skirt/LinerOilFilm.h): when set, each side draws its inlet
+  // from a liner film carried from step to step (ring film, splash, what the skirt left)
+  // instead of supplyFilm; needs the mass-conserving film (its edge flows). The ring's height
+  // is above the pin axis; the flooded and splash heights are bore heights above the crank
+  // axis.
+  std::optional<skirt::LinerOilParameters> linerOil;
   // Mass-conserving model: order of the fill fraction's storage term in time. 2 = variable-
   // step BDF2 over the last two accepted steps (default: second order like
   // LinearlyImplicitStepper; on the starved example skirt it converges with the step where
@@ -190,10 +196,17 @@ struct LubricatedSkirtResults {
   double dissipatedPower_W = 0;
   double secondaryKineticEnergy_J = 0;
   double supplyFilm_m = 0;
+  // Liner oil transport only: the mean liner film at each side's leading edge (the one the
+  // liner enters the gap through; interior columns) [m], and the oil on the liner per side
+  // after this evaluation's step [m^3].
+  std::array<double, 2> inletFilm_m{0.0, 0.0};
+  std::array<double, 2> linerOilVolume_m3{0.0, 0.0};
   double retainerForce_N = 0;  // tertiary: force of the pin retainer on the piston (+z)
 };
 
-class LubricatedSkirtElement final : public LinerElement, public NodalFieldSource {
+class LubricatedSkirtElement final : public LinerElement,
+                                     public NodalFieldSource,
+                                     public LinerOilSource {
  public:
   static constexpr double kMinSlapEnergy_J = 1e-6;
 
@@ -236,6 +249,10 @@ class LubricatedSkirtElement final : public LinerElement, public NodalFieldSourc
   // Its nodal fields (NodalFieldSource below): the gap with its seven terms, the film gap,
   // h/sigma, film pressure, fill fraction and asperity pressure on both sides.
   const NodalFieldSource* getNodalFields() const override { return this; }
+  // Its liner oil film (LinerOilSource below) when parameters.linerOil is set.
+  const LinerOilSource* getLinerOil() const override {
+    return parameters_.linerOil ? this : nullptr;
+  }
   // Film solves, fallbacks, derivative failures and the time of the phases of both sides.
   std::optional<SolverCounters> getSolverCounters() const override { return counters_; }
 
@@ -243,6 +260,12 @@ class LubricatedSkirtElement final : public LinerElement, public NodalFieldSourc
   std::vector<NodalFieldRegion> getNodalFieldRegions() const override;
   std::vector<NodalFieldDeclaration> getNodalFieldDeclarations() const override;
   void calcNodalFields(const SimTK::State& s, int region, Eigen::MatrixXd& values) const override;
+
+  // ---- LinerOilSource (parameters.linerOil only; throws std::logic_error otherwise) ----
+  Eigen::VectorXd getLinerOilRowHeights_m() const override;
+  void calcLinerOilFilm(const SimTK::State& s, SkirtSide side,
+                        Eigen::VectorXd& film_m) const override;
+  LinerOilBalance calcLinerOilBalance(const SimTK::State& s) const override;
 
   // ---- for tests, dumps and studies -------------------------------------------------
   const LubricatedSkirtParameters& getParameters() const { return parameters_; }
@@ -289,8 +312,9 @@ class LubricatedSkirtElement final : public LinerElement, public NodalFieldSourc
   // side's error with the crank angle.
   void solveSides(const SimTK::State& s, const skirt::SkirtSideMotion& motion,
                   double crankAngle_deg, double supplyFilm_m) const;
-  // The sides' loads, derivatives and figures into r (thrust first).
-  void sumSides(LubricatedSkirtResults& r) const;
+  // The sides' loads, derivatives and figures into r (thrust first); the piston's axial
+  // velocity tells the liner film's leading edge.
+  void sumSides(double axialVelocity_mps, LubricatedSkirtResults& r) const;
   // Each side's history this evaluation leads to, installed if its step is accepted.
   void installHistories(const SimTK::State& s) const;
   // The pin retainer (tertiary motion) and the loads in ground.

@@ -14,6 +14,7 @@
 //   pistondyn fit FIT.yaml --out DIR [...]        (calibration to measured traces)
 //   pistondyn propagate PROP.yaml --out DIR [...] (uncertainty bands)
 //   pistondyn keys [--markdown] (the deck reference, from io/DeckKeys.h)
+//   pistondyn new DIR --bore-mm B --stroke-mm S [...] (a deck from a drawing, NewCommand.cpp)
 //   pistondyn --help | --version          (and pistondyn <command> --help)
 //
 // Exit codes: 0 success; 1 bad input (deck, table, override) - nothing written;
@@ -52,6 +53,9 @@ const char* kSynopsis =
     "[--quiet]\n"
     "                       (optimize, fit, propagate: also under mpirun -np K)\n"
     "       pistondyn keys [--markdown]     (every deck key: unit, default, range)\n"
+    "       pistondyn new DIR --bore-mm B --stroke-mm S [--rod-mm L] [--speed-rpm N]\n"
+    "                     [--imep-kPa P | --motored | --pressure-table FILE] [--type TYPE] [...]\n"
+    "                                       (a deck folder from a drawing, EST estimates)\n"
     "       pistondyn --help | --version | <command> --help\n";
 
 }  // namespace
@@ -86,6 +90,7 @@ int runProgram(int argc, char** argv) {
   commands.push_back(addFitCommand(program));
   commands.push_back(addPropagateCommand(program));
   commands.push_back(addKeysCommand(program));
+  commands.push_back(addNewCommand(program));
 
   // An unknown first word is an unknown command (CLI11 would only say one is required).
   if (argc >= 2 && argv[1][0] != '-') {

@@ -40,6 +40,7 @@ std::unique_ptr<Subcommand> addPlotCommand(CLI::App& program);
 std::unique_ptr<Subcommand> addReportCommand(CLI::App& program);
 std::unique_ptr<Subcommand> addSweepCommand(CLI::App& program);
 std::unique_ptr<Subcommand> addKeysCommand(CLI::App& program);
+std::unique_ptr<Subcommand> addNewCommand(CLI::App& program);
 std::unique_ptr<Subcommand> addStudyCommand(CLI::App& program);
 std::unique_ptr<Subcommand> addOptimizeCommand(CLI::App& program);
 std::unique_ptr<Subcommand> addFitCommand(CLI::App& program);

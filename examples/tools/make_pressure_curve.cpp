@@ -1,7 +1,7 @@
 // Generates the cylinder-pressure tables of the example engines (examples/engines/*),
-// so that every committed table can be reproduced and its model is on record.
-//
-// Model (single zone, crank angle 0 = firing TDC, 720 deg cycle):
+// so that every committed table can be reproduced and its model is on record. The model is
+// the library's single-zone cycle (mbd_models/SingleZonePressureModel.h, which `pistondyn
+// new` uses too):
 //   closed cycle IVC -> EVO:  dp/dtheta = (k-1)/V dQ/dtheta - k p/V dV/dtheta
 //       with a Wiebe heat release Q = Q_tot (1 - exp(-a ((theta-theta_s)/dtheta)^(m+1)))
 //       (a = 6.908 i.e. 99.9 % burnt at theta_s + dtheta, m = 2); Q_tot = 0 = motored.
@@ -11,6 +11,7 @@
 //   intake stroke at p_int until IVC.
 // With --target-imep-kPa the heat Q_tot is found by the secant method so that the
 // net imep (closed integral of p dV over V_d, trapezoid at 0.01 deg) hits the target.
+// This file is the command line: options, the file and its header.
 //
 // Usage (make_pressure_curve --help prints the options with units and defaults):
 //        make_pressure_curve --bore-mm B --stroke-mm S --rod-mm L --cr CR
@@ -23,11 +24,15 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <functional>
 #include <map>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "pistondyn/io/PressureTableCsv.h"
+#include "pistondyn/mbd_models/SingleZonePressureModel.h"
 #include "pistondyn/mbd_models/SliderCrank.h"
 
 namespace {
@@ -39,74 +44,7 @@ struct Params {
   std::string out;
 };
 
-constexpr double kDeg = M_PI / 180.0;
-constexpr double kFine_deg = 0.01;  // integration step
-
-double wiebeFraction(double theta, const Params& p) {
-  if (theta <= p.soc_deg)
-    return 0.0;
-  const double x = (theta - p.soc_deg) / p.burn_deg;
-  return 1.0 - std::exp(-6.908 * x * x * x);
-}
-
-// Pressure on the fine grid theta_i = i * kFine_deg, i = 0 .. 72000 - 1.
-std::vector<double> buildCycle(const Params& p, const pistondyn::mbd::CylinderVolume& vol,
-                               double qTot_J) {
-  const int n = static_cast<int>(std::lround(720.0 / kFine_deg));
-  std::vector<double> pr(n, 0.0);
-  const double pInt = p.pInt_bar * 1e5, pExh = p.pExh_bar * 1e5;
-  auto V = [&](double th) { return vol.calcVolume_m3(th * kDeg); };
-  auto dV = [&](double th) {
-    return vol.calcVolumeDerivative_m3prad(th * kDeg) * kDeg;
-  };  // per deg
-  // Heat release per degree; burn measured from firing TDC (theta may be < 0 before it).
-  auto dQ = [&](double th) {
-    const double h = 1e-4;
-    return qTot_J * (wiebeFraction(th + h, p) - wiebeFraction(th - h, p)) / (2 * h);
-  };
-  auto rhs = [&](double th, double pp) {
-    return (p.k - 1.0) / V(th) * dQ(th - 720.0 * (th > 360.0)) - p.k * pp / V(th) * dV(th);
-  };
-  // Closed cycle from IVC (e.g. 580) to EVO + 720 (e.g. 860), RK4.
-  double pp = pInt;
-  const int iIvc = static_cast<int>(std::lround(p.ivc_deg / kFine_deg));
-  const int iEvo = static_cast<int>(std::lround((p.evo_deg + 720.0) / kFine_deg));
-  for (int i = iIvc; i <= iEvo; ++i) {
-    pr[i % n] = pp;
-    const double th = i * kFine_deg, h = kFine_deg;
-    const double k1 = rhs(th, pp), k2 = rhs(th + h / 2, pp + h / 2 * k1);
-    const double k3 = rhs(th + h / 2, pp + h / 2 * k2), k4 = rhs(th + h, pp + h * k3);
-    pp += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
-  }
-  const double pEvo = pr[iEvo % n];
-  auto blend = [](double th, double a, double b) {  // 1 at a, 0 at b, cosine
-    return 0.5 * (1.0 + std::cos(M_PI * (th - a) / (b - a)));
-  };
-  for (int i = (iEvo % n) + 1; i < iIvc; ++i) {
-    const double th = i * kFine_deg;
-    if (th < p.evo_deg + 60.0) {
-      pr[i] = pExh + (pEvo - pExh) * blend(th, p.evo_deg, p.evo_deg + 60.0);
-    } else if (th < 370.0) {
-      pr[i] = pExh;
-    } else if (th < 400.0) {
-      pr[i] = pInt + (pExh - pInt) * blend(th, 370.0, 400.0);
-    } else {
-      pr[i] = pInt;
-    }
-  }
-  return pr;
-}
-
-double netImep_Pa(const std::vector<double>& pr, const pistondyn::mbd::CylinderVolume& vol) {
-  const int n = static_cast<int>(pr.size());
-  double w = 0.0;
-  for (int i = 0; i < n; ++i) {
-    const double a = i * kFine_deg, b = (i + 1) * kFine_deg;
-    w += 0.5 * (pr[i] + pr[(i + 1) % n]) *
-         (vol.calcVolume_m3(b * kDeg) - vol.calcVolume_m3(a * kDeg));
-  }
-  return w / vol.displacement_m3();
-}
+constexpr double kFine_deg = pistondyn::mbd::kSingleZoneFineStep_deg;
 
 const char* kHelp =
     "make_pressure_curve: writes a cylinder-pressure table (CSV crank_angle_deg,pressure_bar,\n"
@@ -208,47 +146,48 @@ int main(int argc, char** argv) {
   g.conrodLength_m = 1e-3 * p.rod_mm;
   g.pinOffset_m = 1e-3 * p.pinOffset_mm;
   g.crankOffset_m = 1e-3 * p.crankOffset_mm;
-  const pistondyn::mbd::SliderCrank kin(g);
-  const pistondyn::mbd::CylinderVolume vol(kin, 1e-3 * p.bore_mm, p.cr);
-
-  double q = 0.0;
-  if (std::isfinite(p.targetImep_kPa)) {
-    auto f = [&](double qq) {
-      return netImep_Pa(buildCycle(p, vol, qq), vol) - p.targetImep_kPa * 1e3;
-    };
-    double q0 = 0.0, q1 = 1000.0 * vol.displacement_m3() * 1e3;  // ~ 1 kJ per litre
-    double f0 = f(q0), f1 = f(q1);
-    for (int it = 0; it < 50 && std::abs(f1) > 1e-6; ++it) {
-      const double q2 = q1 - f1 * (q1 - q0) / (f1 - f0);
-      q0 = q1;
-      f0 = f1;
-      q1 = q2;
-      f1 = f(q1);
-    }
-    q = q1;
+  pistondyn::mbd::SingleZoneCycle cycle;
+  cycle.polytropicExponent = p.k;
+  cycle.intakePressure_Pa = p.pInt_bar * 1e5;
+  cycle.exhaustPressure_Pa = p.pExh_bar * 1e5;
+  cycle.intakeValveClosing_deg = p.ivc_deg;
+  cycle.exhaustValveOpening_deg = p.evo_deg;
+  cycle.combustionStart_deg = p.soc_deg;
+  cycle.combustionDuration_deg = p.burn_deg;
+  std::optional<double> target;
+  if (std::isfinite(p.targetImep_kPa))
+    target = p.targetImep_kPa * 1e3;
+  pistondyn::mbd::SingleZonePressureTable table;
+  try {
+    const pistondyn::mbd::SliderCrank kin(g);
+    const pistondyn::mbd::CylinderVolume vol(kin, 1e-3 * p.bore_mm, p.cr);
+    table = pistondyn::mbd::makeSingleZonePressureTable(cycle, vol, target, p.step_deg);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "make_pressure_curve: %s (make_pressure_curve --help: the options)\n",
+                 e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "make_pressure_curve: %s\n", e.what());
+    return 1;
   }
-  const std::vector<double> pr = buildCycle(p, vol, q);
-  const double imep = netImep_Pa(pr, vol);
+  const double q = table.heatReleased_J, imep = table.netImep_Pa;
 
+  std::string command = "command:";
+  for (int i = 1; i < argc; ++i)
+    command += std::string(" ") + argv[i];
+  std::ostringstream result;  // default stream format, as the committed tables' headers
+  result << "heat released Q_tot = " << q << " J per cycle; net imep (trapezoid at " << kFine_deg
+         << " deg) = " << imep / 1e3 << " kPa";
+  const std::string text = pistondyn::io::formatPressureTableCsv(
+      table.crankAngle_deg, table.pressure_Pa,
+      {"Generated by examples/tools/make_pressure_curve (single-zone model, see its header)",
+       command, result.str(), "crank angle 0 deg = firing TDC; absolute pressure"});
   std::ofstream out(p.out);
   if (!out) {
     std::fprintf(stderr, "make_pressure_curve: cannot write %s\n", p.out.c_str());
     return 1;
   }
-  out << "# Generated by examples/tools/make_pressure_curve (single-zone model, see its header)\n";
-  out << "# command:";
-  for (int i = 1; i < argc; ++i)
-    out << ' ' << argv[i];
-  out << "\n# heat released Q_tot = " << q << " J per cycle; net imep (trapezoid at " << kFine_deg
-      << " deg) = " << imep / 1e3 << " kPa\n";
-  out << "# crank angle 0 deg = firing TDC; absolute pressure\n";
-  out << "crank_angle_deg,pressure_bar\n";
-  const int stride = static_cast<int>(std::lround(p.step_deg / kFine_deg));
-  char buf[64];
-  for (std::size_t i = 0; i < pr.size(); i += static_cast<std::size_t>(stride)) {
-    std::snprintf(buf, sizeof buf, "%.10g,%.8g\n", i * kFine_deg, pr[i] / 1e5);
-    out << buf;
-  }
+  out << text;
   out.close();
   if (!out) {
     std::fprintf(stderr, "make_pressure_curve: writing %s failed\n", p.out.c_str());

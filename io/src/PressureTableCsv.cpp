@@ -3,8 +3,10 @@
 #include "MessageText.h"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
+#include <stdexcept>
 #include <vector>
 
 #include "CsvText.h"
@@ -114,6 +116,25 @@ mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath,
       throw DeckError(filePath + ":" + std::to_string(lineOfRow[*e.row()]) + ": " + e.what());
     throw DeckError(filePath + ": " + e.what());
   }
+}
+
+std::string formatPressureTableCsv(const std::vector<double>& crankAngle_deg,
+                                   const std::vector<double>& pressure_Pa,
+                                   const std::vector<std::string>& commentLines) {
+  if (crankAngle_deg.size() != pressure_Pa.size())
+    throw std::invalid_argument("formatPressureTableCsv: " + std::to_string(crankAngle_deg.size()) +
+                                " angles but " + std::to_string(pressure_Pa.size()) +
+                                " pressures");
+  std::string text;
+  for (const std::string& line : commentLines)
+    text += "# " + line + "\n";
+  text += "crank_angle_deg,pressure_bar\n";
+  char row[64];
+  for (std::size_t i = 0; i < crankAngle_deg.size(); ++i) {
+    std::snprintf(row, sizeof row, "%.10g,%.8g\n", crankAngle_deg[i], pressure_Pa[i] / 1e5);
+    text += row;
+  }
+  return text;
 }
 
 }  // namespace pistondyn::io

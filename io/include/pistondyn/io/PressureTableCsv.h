@@ -14,6 +14,7 @@
 /// are reported together (up to 20 lines, then how many more).
 
 #include <string>
+#include <vector>
 
 #include "pistondyn/mbd_models/CylinderPressureCurve.h"
 
@@ -23,5 +24,13 @@ namespace pistondyn::io {
 /// the unit the header names ("bar" of pressure_bar).
 mbd::CylinderPressureCurve readPressureTableCsv(const std::string& filePath,
                                                 std::string* pressureUnit = nullptr);
+
+/// The text of a table readPressureTableCsv reads back: each of `commentLines` as a "# "
+/// line, the header crank_angle_deg,pressure_bar, then one row per angle ("%.10g,%.8g": the
+/// angle to 10 and the pressure in bar to 8 significant digits). `pressure_Pa` absolute,
+/// as long as `crankAngle_deg` (std::invalid_argument otherwise).
+std::string formatPressureTableCsv(const std::vector<double>& crankAngle_deg,
+                                   const std::vector<double>& pressure_Pa,
+                                   const std::vector<std::string>& commentLines);
 
 }  // namespace pistondyn::io

@@ -75,7 +75,8 @@ class LinerElement : public ForceElement {
   /// Nodal fields over the liner's contact regions (NodalFields.h), for field dumps and maps;
   /// null for a liner without them.
   virtual const NodalFieldSource* getNodalFields() const { return nullptr; }
-  // The oil film it carries on the liner along the bore (LinerOilSource.h), if any.
+  /// The oil film it carries on the liner along the bore (LinerOilSource.h); null for a liner
+  /// without one.
   virtual const LinerOilSource* getLinerOil() const { return nullptr; }
 };
 

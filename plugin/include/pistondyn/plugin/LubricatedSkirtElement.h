@@ -1,46 +1,49 @@
 #pragma once
-// The lubricated skirt-liner force element: the piston held in the bore by the oil film and
-// the asperity contact between its skirt and the liner, on a thrust-side and an
-// anti-thrust-side sector of the skirt (docs/DESIGN.md §4, thesis §2).
-//
-// At every force evaluation it reads the piston's pose and rates from the State
-// (PistonPose.h), builds the gap and its rate on both sides (skirt::GapAssembly: the seven
-// terms), solves film and contact there (skirt::SkirtSideLubrication: one film solve per
-// side), integrates pressure and shear to the force and moment on the piston (radial
-// pressure components in x and z, so the same film carries the secondary and the tertiary
-// motion; axial and circumferential friction) and applies them; the reaction acts on the
-// liner, which is ground. The element supplies the stiff part of its force Jacobian (the
-// film's exact squeeze damping, the asperity stiffness) for LinearlyImplicitStepper.
-//
-// State it keeps (ElementState.h):
-//   z:            friction work (total, hydrodynamic, asperity) [J], Archard wear volume
-//                 per side [m^3] - cycle integrals, integrated with the motion
-//   auto-update:  the mass-conserving model's fill fraction per side (advanced once per
-//                 accepted step; the film's transient step is t - last update time), and
-//                 the slap tracker (approach direction, peak secondary kinetic energy of
-//                 the approach, energy of the last completed slap event, event count)
-//   cache:        the per-state results (loads, their derivatives, figures of both sides)
-// Mutable workspace: the two sides' film solvers and their warm starts (results depend on
-// them only within the film solver's tolerance; one model per thread, ForceElement.h), and
-// with the elastic skirt each side's last converged deformation, the start of the next
-// coupling (results depend on it only within the coupling tolerance). The
-// nodal fields of the last evaluation are kept there too (getLastSideResults(): valid
-// right after realizing a state, e.g. at an output row, for field dumps).
-//
-// Slap events. The secondary kinetic energy K = 1/2 (m_piston + m_pin) v_G^2 +
-// 1/2 I_piston (dalpha/dt)^2, v_G the lateral velocity of the piston's centre of mass
-// relative to the cylinder axis, grows while the piston crosses the clearance and is
-// absorbed by the film and the asperities when it arrives. An approach towards one side
-// begins when v_G changes sign and ends (the event completes) at the next sign change; its
-// impact kinetic energy is the peak of K over the approach: K is evaluated at every force
-// evaluation and the tracker installed once per accepted step (an auto-update variable, so
-// with LinearlyImplicitStepper usually the value at the step's predictor or output row).
-// Events below kMinSlapEnergy_J are not counted (the film's small oscillations).
-//
-// Tertiary motion (along the pin axis) is a switch. Off (the thesis' study): the crank
-// train must be built without the tertiary mobility (EngineDescription::tertiaryMotion =
-// false). On: the film's z pressure components and a pin-retainer contact (a stiff spring
-// outside the axial play, the circlips or the skirt end against the liner's wall) hold it.
+/// @file
+/// The lubricated skirt-liner force element: the piston held in the bore by the oil film and
+/// the asperity contact between its skirt and the liner, on a thrust-side and an
+/// anti-thrust-side sector of the skirt (docs/DESIGN.md §4, thesis §2).
+///
+/// At every force evaluation it reads the piston's pose and rates from the State
+/// (PistonPose.h), builds the gap and its rate on both sides (skirt::GapAssembly: the seven
+/// terms), solves film and contact there (skirt::SkirtSideLubrication: one film solve per
+/// side), integrates pressure and shear to the force and moment on the piston (radial
+/// pressure components in x and z, so the same film carries the secondary and the tertiary
+/// motion; axial and circumferential friction) and applies them; the reaction acts on the
+/// liner, which is ground. The element supplies the stiff part of its force Jacobian (the
+/// film's exact squeeze damping, the asperity stiffness) for LinearlyImplicitStepper.
+///
+/// State it keeps (ElementState.h):
+/// - z: friction work (total, hydrodynamic, asperity), dissipated energy and secondary-motion
+///   work [J], Archard wear volume per side [m^3] - cycle integrals, integrated with the motion
+/// - auto-update: each side's history (skirt::SkirtSideHistory: the mass-conserving model's
+///   fill fraction, the elastic skirt's accepted deformation and rate, the liner oil film;
+///   advanced once per accepted step; the film's transient step is t - last update time), and
+///   the slap tracker (approach direction, peak secondary kinetic energy of the approach,
+///   energy of the last completed slap event, event count)
+/// - cache: the per-state results (loads, their derivatives, figures of both sides)
+///
+/// Mutable workspace: the two sides' film solvers and their warm starts (results depend on
+/// them only within the film solver's tolerance; one model per thread, ForceElement.h), and
+/// with the elastic skirt each side's last converged deformation, the start of the next
+/// coupling (results depend on it only within the coupling tolerance). The
+/// nodal fields of the last evaluation are kept there too (getLastSideResults(): valid
+/// right after realizing a state, e.g. at an output row, for field dumps).
+///
+/// Slap events. The secondary kinetic energy K = 1/2 (m_piston + m_pin) v_G^2 +
+/// 1/2 I_piston (dalpha/dt)^2, v_G the lateral velocity of the piston's centre of mass
+/// relative to the cylinder axis, grows while the piston crosses the clearance and is
+/// absorbed by the film and the asperities when it arrives. An approach towards one side
+/// begins when v_G changes sign and ends (the event completes) at the next sign change; its
+/// impact kinetic energy is the peak of K over the approach: K is evaluated at every force
+/// evaluation and the tracker installed once per accepted step (an auto-update variable, so
+/// with LinearlyImplicitStepper usually the value at the step's predictor or output row).
+/// Events below kMinSlapEnergy_J are not counted (the film's small oscillations).
+///
+/// Tertiary motion (along the pin axis) is a switch. Off (the thesis' study): the crank
+/// train must be built without the tertiary mobility (EngineDescription::tertiaryMotion =
+/// false). On: the film's z pressure components and a pin-retainer contact (a stiff spring
+/// outside the axial play, the circlips or the skirt end against the liner's wall) hold it.
 
 #include <array>
 #include <memory>
@@ -116,6 +119,9 @@ struct ElasticSkirtParameters {
   bool squeezeRate = true;
 };
 
+/// The lubricated skirt's parameters (LubricatedSkirtElement). The constructor checks those
+/// that do not need the engine, addToModel() the rest; what the engine gives (the grid's
+/// radius and skirt range, the piston travel and liner top when unset) is filled in there.
 struct LubricatedSkirtParameters {
   /// Both sides' grids: arc width, node counts, clustering (side, radius and the skirt's
   /// height range are filled in from the engine).
@@ -164,12 +170,19 @@ struct LubricatedSkirtParameters {
 struct LubricatedSkirtResults {
   /// A side's figures (skirt::SkirtSideFigures) and what its solve did.
   struct Side : skirt::SkirtSideFigures {
+    /// The film solver's iterations in the side's last film solve (FilmResult::iterations,
+    /// lubrication/FilmProblem.h; with the elastic skirt, the solve at the converged
+    /// deformation).
     int filmIterations = 0;
+    /// That film solve was finished by the reference solver's fallback
+    /// (lubrication::FilmResult::usedFallback).
     bool filmUsedFallback = false;
+    ///@{
     /// Elastic skirt only: film evaluations of the coupling and the largest elastic gap term
     /// [m] (+ opens the gap) of this evaluation.
     int elasticIterations = 0;
     double maxElasticDeformation_m = 0;
+    ///@}
   };
   std::array<Side, 2> sides;                                    ///< [0] thrust, [1] anti-thrust
   Eigen::Vector3d skirtForce_N = Eigen::Vector3d::Zero();      ///< both sides, piston frame
@@ -180,6 +193,7 @@ struct LubricatedSkirtResults {
   /// NaN when the evaluation left the film's squeeze derivatives out
   /// (setForceJacobianWanted(false)); dQ_dPose stays exact.
   Eigen::Matrix3d dQ_dPoseRate = Eigen::Matrix3d::Zero();
+  ///@{
   /// The skirt's axial friction force on the piston in the bore frame [N] (both sides: film shear,
   /// the film pressure's axial part on the sloped skirt, the tilt's share of the normal load,
   /// boundary friction), and the power it takes from the piston's primary motion,
@@ -187,6 +201,8 @@ struct LubricatedSkirtResults {
   double frictionForce_N = 0;
   double frictionPower_W = 0;
   double hydrodynamicFrictionPower_W = 0, asperityFrictionPower_W = 0;
+  ///@}
+  ///@{
   /// The power the skirt forces take from the piston's secondary motion [W] (lateral, tilt,
   /// tertiary; squeeze damping and the asperities' give), and the power the two sides
   /// dissipate (films and asperity friction, >= 0) [W]. Over a periodic cycle the friction and
@@ -194,20 +210,31 @@ struct LubricatedSkirtResults {
   /// returns).
   double secondaryMotionPower_W = 0;
   double dissipatedPower_W = 0;
+  ///@}
+  /// The secondary kinetic energy K of piston and pin [J] (lateral and tilt motion; this
+  /// file's comment, "Slap events").
   double secondaryKineticEnergy_J = 0;
+  /// The supply film (LubricatedSkirtParameters::supplyFilm) at this evaluation's crank angle
+  /// [m]; not read with the liner oil transport (inletFilm_m).
   double supplyFilm_m = 0;
+  ///@{
   /// Liner oil transport only: the mean liner film at each side's leading edge (the one the
   /// liner enters the gap through; interior columns) [m], and the oil on the liner per side
   /// after this evaluation's step [m^3].
   std::array<double, 2> inletFilm_m{0.0, 0.0};
   std::array<double, 2> linerOilVolume_m3{0.0, 0.0};
+  ///@}
   double retainerForce_N = 0;  ///< tertiary: force of the pin retainer on the piston (+z)
 };
 
+/// The lubricated skirt-liner force element (this file's comment): the liner role, its nodal
+/// fields and, with parameters.linerOil, its liner oil film.
 class LubricatedSkirtElement final : public LinerElement,
                                      public NodalFieldSource,
                                      public LinerOilSource {
  public:
+  /// Smallest impact kinetic energy of a counted slap event [J]: an approach whose peak
+  /// secondary kinetic energy is below it is not counted (the film's small oscillations).
   static constexpr double kMinSlapEnergy_J = 1e-6;
 
   /// Checks the parameters that do not need the engine (the rest in addToModel()).
@@ -228,7 +255,7 @@ class LubricatedSkirtElement final : public LinerElement,
   void setForceJacobianWanted(bool wanted) const override { jacobianWanted_ = wanted; }
   ElementOutputs getOutputs() const override;
 
-  /// ---- LinerElement role ------------------------------------------------------------
+  // ---- LinerElement role ------------------------------------------------------------
   double getSideForce_N(const SimTK::State& s) const override;
   double getFrictionForce_N(const SimTK::State& s) const override;
   double getFrictionPower_W(const SimTK::State& s) const override;
@@ -257,33 +284,47 @@ class LubricatedSkirtElement final : public LinerElement,
   /// Film solves, fallbacks, derivative failures and the time of the phases of both sides.
   std::optional<SolverCounters> getSolverCounters() const override { return counters_; }
 
-  /// ---- NodalFieldSource -------------------------------------------------------------
+  // ---- NodalFieldSource -------------------------------------------------------------
   std::vector<NodalFieldRegion> getNodalFieldRegions() const override;
   std::vector<NodalFieldDeclaration> getNodalFieldDeclarations() const override;
   void calcNodalFields(const SimTK::State& s, int region, Eigen::MatrixXd& values) const override;
 
-  /// ---- LinerOilSource (parameters.linerOil only; throws std::logic_error otherwise) ----
+  // ---- LinerOilSource (parameters.linerOil only; throws std::logic_error otherwise) ----
   Eigen::VectorXd getLinerOilRowHeights_m() const override;
   void calcLinerOilFilm(const SimTK::State& s, SkirtSide side,
                         Eigen::VectorXd& film_m) const override;
   LinerOilBalance calcLinerOilBalance(const SimTK::State& s) const override;
 
-  /// ---- for tests, dumps and studies -------------------------------------------------
+  // ---- for tests, dumps and studies -------------------------------------------------
+  /// The parameters; once added to a model, with what the engine gives filled in (the gap's
+  /// piston travel and liner top).
   const LubricatedSkirtParameters& getParameters() const { return parameters_; }
+  /// The results of state s, computed on the first request for it and cached in s
+  /// (ElementCache.h); s realized through Stage::Velocity at least (calcForces() asks there).
   const LubricatedSkirtResults& getResults(const SimTK::State& s) const;
+  /// A side's gap assembly (its terms and data); throws std::logic_error before addToModel().
   const skirt::GapAssembly& getGapAssembly(SkirtSide side) const;
-  /// A side's Simbody-free solver (its grid, gap assembly, last fields, elastic coupling).
+  /// A side's Simbody-free solver (its grid, gap assembly, last fields, elastic coupling);
+  /// throws std::logic_error before addToModel().
   const skirt::SkirtSideSolver& getSideSolver(SkirtSide side) const;
+  /// The film's dynamic viscosity [Pa s]: the oil's at oilTemperature_degC, set by
+  /// addToModel() (0 before).
   double getViscosity_Pas() const { return viscosity_Pas_; }
-  /// Gap fields and film/contact fields of the last evaluation (see the top).
+  ///@{
+  /// Gap fields and film/contact fields of the last evaluation (this file's comment: valid
+  /// right after realizing a state); throw std::logic_error before addToModel().
   const skirt::GapFields& getLastGapFields(SkirtSide side) const;
   const skirt::SkirtSideResults& getLastSideResults(SkirtSide side) const;
+  ///@}
+  /// A side's Archard wear volume since the start of the run [m^3] (a continuous state).
   double getWearVolume_m3(const SimTK::State& s, SkirtSide side) const;
   /// The friction work's split since the start of the run [J] (continuous states).
   double getHydrodynamicFrictionWork_J(const SimTK::State& s) const {
     return integrals_.getValue(s, kHydrodynamicFrictionWork);
   }
 
+  /// Slap events completed since the start of the run, those of impact energy >=
+  /// kMinSlapEnergy_J (this file's comment, "Slap events").
   long getSlapEventCount(const SimTK::State& s) const;
 
  private:

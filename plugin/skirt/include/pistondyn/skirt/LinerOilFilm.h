@@ -57,19 +57,25 @@ struct LinerOilParameters {
   /// Film the oil-control ring leaves on the liner it passes [m], > 0, as long as the ring
   /// film table below is empty.
   double ringFilm_m = 1.0e-6;
+  ///@{
   /// Optional: the ring's film over the 720 deg cycle, crank angles strictly increasing in
-  /// [0, 720) [deg] and films > 0 [m], periodic linear interpolation.
+  /// [0, 720) [deg] and films > 0 [m] (same size, at least 2 points), periodic linear
+  /// interpolation; replaces ringFilm_m when set.
   std::vector<double> ringFilmAngle_deg, ringFilmTable_m;
+  ///@}
   /// Height of the oil-control ring's lower edge above the pin axis (piston frame) [m], at
   /// least the skirt's top.
   double ringHeightAbovePin_m = std::numeric_limits<double>::quiet_NaN();
   /// Crankcase splash: the liner below this bore height (above the crank axis) is flooded
   /// [m]; NaN: no flooded region.
   double floodedBelow_m = std::numeric_limits<double>::quiet_NaN();
-  /// Crankcase splash as a rate: the film below splashBelow_m grows by splashRate_mps [m/s]
-  /// (>= 0) up to maxFilm_m; NaN height: none.
+  ///@{
+  /// Crankcase splash as a rate: the free rows below the bore height splashBelow_m (above the
+  /// crank axis) [m] gain splashRate_mps [m/s] (>= 0) of film, up to maxFilm_m; NaN height:
+  /// none.
   double splashRate_mps = 0.0;
   double splashBelow_m = std::numeric_limits<double>::quiet_NaN();
+  ///@}
   /// A liner film thicker than this drains to the crankcase [m], > 0; also the film of the
   /// flooded region.
   double maxFilm_m = 50e-6;
@@ -97,17 +103,20 @@ struct LinerOilState {
   double filmIntake_m3 = 0.0;     ///< see drainLoss_m3
   double sideLeakage_m3 = 0.0;    ///< see drainLoss_m3
   double skirtShareLoss_m3 = 0.0;  ///< see drainLoss_m3
+  /// True for a state not started yet (no cells: not made by LinerOilFilm::makeInitialState()
+  /// or advance()).
   bool empty() const { return volume_m3.size() == 0; }
 };
 
 /// The film's net flows out across the side's edges over one evaluation [m^3/s] (+ out), per
 /// edge node (lubrication::FilmResult): skirt bottom and top per column, the circumferential
-/// edges per row.
+/// edges per row. Non-owning: the arrays must outlive the LinerOilFilm::advance() call they are
+/// passed to; a null pointer is an edge without flow.
 struct EdgeOutflows {
-  const Eigen::ArrayXd* bottom = nullptr;
-  const Eigen::ArrayXd* top = nullptr;
-  const Eigen::ArrayXd* sideMin = nullptr;
-  const Eigen::ArrayXd* sideMax = nullptr;
+  const Eigen::ArrayXd* bottom = nullptr;   ///< skirt bottom, per column (edgeOutflowYMin_m3ps)
+  const Eigen::ArrayXd* top = nullptr;      ///< skirt top, per column (edgeOutflowYMax_m3ps)
+  const Eigen::ArrayXd* sideMin = nullptr;  ///< first column's edge, per row (edgeOutflowXMin_m3ps)
+  const Eigen::ArrayXd* sideMax = nullptr;  ///< last column's edge, per row (edgeOutflowXMax_m3ps)
 };
 
 /// The liner film along one skirt side (this file's comment). Immutable after construction.
@@ -142,12 +151,16 @@ class LinerOilFilm {
   /// Film thickness per cell [m] (column fastest).
   void calcFilm(const LinerOilState& state, Eigen::ArrayXd& film_m) const;
 
+  /// Number of columns: the side's film grid angles (SkirtSideGrid::getPhiNodes_rad()).
   int columns() const { return static_cast<int>(width_m_.size()); }
+  /// Number of rows along the bore, from below the skirt's lowest reach to above the ring's
+  /// highest.
   int rows() const { return rows_; }
+  /// Height of a row along the bore, dY [m]: the skirt film grid's mean axial node spacing.
   double rowSpacing_m() const { return dY_; }
   double rowHeight_m(int m) const { return y0_ + m * dY_; }  ///< bore height of row m [m]
   const Eigen::ArrayXd& columnWidth_m() const { return width_m_; }  ///< arc length [m]
-  const LinerOilParameters& getParameters() const { return parameters_; }
+  const LinerOilParameters& getParameters() const { return parameters_; }  ///< as constructed
   /// The film the ring leaves at a crank angle [m].
   double calcRingFilm_m(double crankAngle_deg) const;
 

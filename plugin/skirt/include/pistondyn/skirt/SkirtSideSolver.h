@@ -42,8 +42,8 @@ namespace pistondyn::skirt {
 
 /// The piston's motion as one side sees it (PistonPose.h).
 struct SkirtSideMotion {
-  PistonPose pose;
-  PistonPoseRate rate;
+  PistonPose pose;      ///< lateral [m], tilt [rad] and tertiary [m] displacement (PistonPose.h)
+  PistonPoseRate rate;  ///< their time derivatives [m/s], [rad/s], [m/s]
   double pinHeight_m = 0.0;        ///< Y_pin, pin-axis height above the crank axis [m]
   double axialVelocity_mps = 0.0;  ///< v_y = dY_pin/dt [m/s]
 };
@@ -74,7 +74,11 @@ struct ElasticHistory {
 
 /// What a side carries from accepted step to accepted step (empty: a full film at rest).
 struct SkirtSideHistory {
+  /// The mass-conserving film's fill fraction (and expected gap) at the last accepted steps
+  /// (lubrication::FilmHistory.h); empty with the Reynolds or no cavitation model.
   lubrication::FilmHistory film;
+  /// An elastic skirt's deformation and its rate at the last accepted step (read only with
+  /// SkirtSideSettings::elasticRate); empty for a rigid skirt.
   ElasticHistory elastic;
   LinerOilState liner;  ///< the liner's oil along the side (LinerOilFilm.h); empty: none yet
 };
@@ -96,13 +100,17 @@ struct SkirtSideCounters {
   long filmSolves = 0;          ///< film solves (an elastic coupling does several)
   long filmFallbacks = 0;       ///< of them with the film solver's reference fallback
   long derivativeFailures = 0;  ///< of them without derivatives (FilmResult::derivativesFailed)
-  double gap_s = 0.0, film_s = 0.0, contact_s = 0.0, loads_s = 0.0;  ///< phases [s]
+  ///@{
+  /// Time of the phases [s]: gap assembly, film solves, asperity contact, load integration
+  /// (summed over the film evaluations; counted also when a film solve throws).
+  double gap_s = 0.0, film_s = 0.0, contact_s = 0.0, loads_s = 0.0;
+  ///@}
   double coupling_s = 0.0;  ///< the elastic coupling's own work between film evaluations [s]
 };
 
 /// One evaluation's outcome besides the fields (SkirtSideSolver::getResults()).
 struct SkirtSideSolution {
-  SkirtSideCounters counters;
+  SkirtSideCounters counters;  ///< this evaluation's work and time; valid also when solve() throws
   /// Whether results.dLoads_dPoseRate holds the pose's squeeze derivatives.
   bool poseDerivatives = false;
   /// Elastic skirt only: what the coupling did (its iterations, largest deformation).
@@ -110,7 +118,7 @@ struct SkirtSideSolution {
   /// The history this evaluation leads to if its step is accepted; valid when historyAdvanced
   /// (a mass-conserving film), otherwise the caller's history stays.
   bool historyAdvanced = false;
-  SkirtSideHistory next;
+  SkirtSideHistory next;  ///< the history after this step (see historyAdvanced)
 };
 
 /// One skirt side (this file's top comment). Holds the side's gap assembly, film solver (with
@@ -136,29 +144,36 @@ class SkirtSideSolver {
                   std::unique_ptr<ElasticCoupling> coupling = nullptr,
                   std::optional<LinerOilFilm> linerOil = std::nullopt);
   ~SkirtSideSolver();
+  ///@{
+  /// Movable (the side's state moves with it), not copyable.
   SkirtSideSolver(SkirtSideSolver&&) noexcept;
   SkirtSideSolver& operator=(SkirtSideSolver&&) noexcept;
+  ///@}
 
   /// Solves the side for a motion, conditions and history; fields in getGapFields() and
   /// getResults() until the next call. `out` is reused between calls.
   void solve(const SkirtSideMotion& motion, const SkirtSideConditions& conditions,
              const SkirtSideHistory& history, SkirtSideSolution& out);
 
-  const SkirtSideGrid& getGrid() const;
-  const SkirtSideSettings& getSettings() const;
-  const GapAssembly& getGapAssembly() const;
+  const SkirtSideGrid& getGrid() const;          ///< the side's film grid (copied at construction)
+  const SkirtSideSettings& getSettings() const;  ///< the constructor's settings
+  const GapAssembly& getGapAssembly() const;     ///< the side's gap assembly (its terms and data)
+  ///@{
   /// The gap fields and the film/contact results of the last evaluation (for an elastic skirt,
   /// those of the converged deformation).
   const GapFields& getGapFields() const;
   const SkirtSideResults& getResults() const;
+  ///@}
   /// The elastic coupling, or null for a rigid skirt.
   const ElasticCoupling* getElasticCoupling() const;
   /// The liner oil film, or null without one.
   const LinerOilFilm* getLinerOilFilm() const;
+  ///@{
   /// The supply per column of the last evaluation [m] (a liner oil film's; empty without one):
   /// at the skirt's bottom and top edges.
   const Eigen::ArrayXd& getSupplyBottom_m() const;
   const Eigen::ArrayXd& getSupplyTop_m() const;
+  ///@}
   /// The composite roughness sigma of the pair [m].
   double getCompositeSigma_m() const;
 

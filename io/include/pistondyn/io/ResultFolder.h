@@ -52,7 +52,9 @@ struct ResultFolder {
   std::vector<FieldDumpFile> fieldDumps;   ///< by angle, thrust before anti-thrust
   /// cycle_map_<region>.csv and field_frames_<region>.csv: thrust, anti-thrust, then any
   /// other region by name.
+  ///@{
   std::vector<RegionFile> cycleMaps, fieldFrames;
+  ///@}
 
   /// The flattened summary value of `key`, or "" if absent.
   std::string getSummaryValue(const std::string& key) const;

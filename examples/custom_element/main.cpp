@@ -8,7 +8,9 @@
 // the program changes; the summary's side-force figures come from whichever liner the
 // deck selects.
 //
-// Run: custom_element_example [DECK.yaml] [--set key.path=value]...
+// Run: custom_element_example [DECK.yaml] [--set key.path=value]... [--out DIR]
+//      (--out: the spring_guide run's result folder, which `pistondyn plot DIR` draws like
+//      any run's: the figures come from the liner role's outputs, not the element's type)
 //      (default deck: the gasoline example engine; the overrides apply to both runs, so
 //      spring keys such as liner.tilt_damping_Nms_per_rad belong in the deck's liner
 //      section only when it selects spring_guide)
@@ -31,10 +33,13 @@ int main(int argc, char** argv) {
   // film and takes no constraints, which the ideal guide is made of).
   std::vector<std::string> overrides = {"simulation.integrator=rk_merson",
                                         "simulation.until_periodic=false", "simulation.cycles=2"};
+  std::string outDir;  // the spring run's result folder ("": none)
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--set" && i + 1 < argc) {
       overrides.push_back(argv[++i]);
+    } else if (arg == "--out" && i + 1 < argc) {
+      outDir = argv[++i];
     } else {
       deckPath = arg;
     }
@@ -54,7 +59,7 @@ int main(int argc, char** argv) {
 
   plugin::ResultTableSink idealRows, springRows;
   const io::RunOutcome ideal = io::runDeck(idealDeck, "", {}, {&idealRows});
-  const io::RunOutcome spring = io::runDeck(springDeck, "", {}, {&springRows});
+  const io::RunOutcome spring = io::runDeck(springDeck, outDir, {}, {&springRows});
 
   const auto a = idealRows.getTable().column("side_force_N");
   const auto b = springRows.getTable().column("side_force_N");

@@ -37,20 +37,7 @@ Eigen::Vector3d poseForces(const Eigen::Matrix<double, 6, 1>& loads) {
 double SupplyFilm::calcThickness_m(double angle_deg) const {
   if (crankAngle_deg.empty())
     return constant_m;
-  const std::size_t n = crankAngle_deg.size();
-  double a = common::wrapCrankAngle_deg(angle_deg);
-  // Periodic linear interpolation: the segment after the last point wraps to the first.
-  const auto it = std::upper_bound(crankAngle_deg.begin(), crankAngle_deg.end(), a);
-  const std::size_t hi = static_cast<std::size_t>(it - crankAngle_deg.begin()) % n;
-  const std::size_t lo = (hi + n - 1) % n;
-  const double a0 = crankAngle_deg[lo];
-  double a1 = crankAngle_deg[hi];
-  if (a1 <= a0)
-    a1 += 720.0;
-  if (a < a0)
-    a += 720.0;
-  const double w = (a - a0) / (a1 - a0);
-  return (1.0 - w) * thickness_m[lo] + w * thickness_m[hi];
+  return common::interpolateOverCycle(crankAngle_deg, thickness_m, angle_deg);
 }
 
 // Per side: its solver (gap, film, contact, elastic coupling) and the last solution.

@@ -19,3 +19,17 @@ TEST(CrankAngle, WrapsIntoTheCycle) {
   EXPECT_GE(a, 0.0);
   EXPECT_LT(a, 720.0);
 }
+
+// A table over the cycle (the skirt's supply film, the oil-control ring's film): its points
+// exactly, linear between them, and the segment from the last point across 720 deg back to
+// the first (hand-computed: 600 -> 100 deg spans 220 deg).
+TEST(CrankAngle, ATableOverTheCycleIsLinearAndWrapsFromItsLastPointToItsFirst) {
+  const std::vector<double> angle = {100.0, 300.0, 600.0}, value = {1.0, 3.0, 5.0};
+  EXPECT_EQ(pc::interpolateOverCycle(angle, value, 100.0), 1.0);
+  EXPECT_EQ(pc::interpolateOverCycle(angle, value, 300.0), 3.0);
+  EXPECT_DOUBLE_EQ(pc::interpolateOverCycle(angle, value, 200.0), 2.0);
+  EXPECT_DOUBLE_EQ(pc::interpolateOverCycle(angle, value, 650.0), 5.0 - 4.0 * 50.0 / 220.0);
+  EXPECT_DOUBLE_EQ(pc::interpolateOverCycle(angle, value, 50.0), 5.0 - 4.0 * 170.0 / 220.0);
+  EXPECT_DOUBLE_EQ(pc::interpolateOverCycle(angle, value, 50.0 + 1440.0),
+                   pc::interpolateOverCycle(angle, value, 50.0));
+}

@@ -97,22 +97,10 @@ bool LinerOilFilm::covered(int m, double pinHeight_m) const {
 }
 
 double LinerOilFilm::calcRingFilm_m(double crankAngle_deg) const {
-  const auto& angle = parameters_.ringFilmAngle_deg;
-  const auto& film = parameters_.ringFilmTable_m;
-  if (angle.empty())
+  if (parameters_.ringFilmAngle_deg.empty())
     return parameters_.ringFilm_m;
-  const std::size_t n = angle.size();
-  double a = common::wrapCrankAngle_deg(crankAngle_deg);
-  const auto it = std::upper_bound(angle.begin(), angle.end(), a);
-  const std::size_t hi = static_cast<std::size_t>(it - angle.begin()) % n;
-  const std::size_t lo = (hi + n - 1) % n;
-  double a1 = angle[hi];
-  if (a1 <= angle[lo])
-    a1 += 720.0;
-  if (a < angle[lo])
-    a += 720.0;
-  const double w = (a - angle[lo]) / (a1 - angle[lo]);
-  return (1.0 - w) * film[lo] + w * film[hi];
+  return common::interpolateOverCycle(parameters_.ringFilmAngle_deg, parameters_.ringFilmTable_m,
+                                      crankAngle_deg);
 }
 
 LinerOilState LinerOilFilm::makeInitialState(double pinHeight_m) const {

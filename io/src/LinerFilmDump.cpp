@@ -16,13 +16,7 @@ plugin::LinerOilBalance change(const plugin::LinerOilBalance& a, const plugin::L
   plugin::LinerOilBalance d;
   d.initial_m3 = a.stored_m3;
   d.stored_m3 = b.stored_m3;
-  d.ringSource_m3 = b.ringSource_m3 - a.ringSource_m3;
-  d.splashSource_m3 = b.splashSource_m3 - a.splashSource_m3;
-  d.deficitSource_m3 = b.deficitSource_m3 - a.deficitSource_m3;
-  d.drainLoss_m3 = b.drainLoss_m3 - a.drainLoss_m3;
-  d.filmIntake_m3 = b.filmIntake_m3 - a.filmIntake_m3;
-  d.sideLeakage_m3 = b.sideLeakage_m3 - a.sideLeakage_m3;
-  d.skirtShareLoss_m3 = b.skirtShareLoss_m3 - a.skirtShareLoss_m3;
+  d.flows = b.flows - a.flows;
   return d;
 }
 

@@ -181,17 +181,14 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
     };
     put("stored_start", b.initial_m3);
     put("stored_end", b.stored_m3);
-    put("ring_source", b.ringSource_m3);
-    put("splash_source", b.splashSource_m3);
-    put("deficit_source", b.deficitSource_m3);
-    put("drain", b.drainLoss_m3);
-    put("skirt_film_intake", b.filmIntake_m3);
-    put("side_leakage", b.sideLeakage_m3);
-    put("left_on_skirt", b.skirtShareLoss_m3);
-    put("balance_residual",
-        (b.stored_m3 - b.initial_m3) -
-            (b.ringSource_m3 + b.splashSource_m3 + b.deficitSource_m3 - b.drainLoss_m3 -
-             b.filmIntake_m3 - b.sideLeakage_m3 - b.skirtShareLoss_m3));
+    put("ring_source", b.flows.ringSource_m3);
+    put("splash_source", b.flows.splashSource_m3);
+    put("deficit_source", b.flows.deficitSource_m3);
+    put("drain", b.flows.drainLoss_m3);
+    put("skirt_film_intake", b.flows.filmIntake_m3);
+    put("side_leakage", b.flows.sideLeakage_m3);
+    put("left_on_skirt", b.flows.skirtShareLoss_m3);
+    put("balance_residual", (b.stored_m3 - b.initial_m3) - b.flows.netSource_m3());
   }
   j["wall_time_s"] = o.stats.wallTime_s;
   j["integrator_steps"] = o.stats.integratorSteps;

@@ -495,18 +495,9 @@ LinerOilBalance LubricatedSkirtElement::calcLinerOilBalance(const SimTK::State& 
     if (state.empty())
       continue;
     // The start is the initial film on the rows free at the run's first step.
-    b.initial_m3 += liner.storedVolume_m3(state) -
-                    (state.ringSource_m3 + state.splashSource_m3 + state.deficitSource_m3 -
-                     state.drainLoss_m3 - state.filmIntake_m3 - state.sideLeakage_m3 -
-                     state.skirtShareLoss_m3);
+    b.initial_m3 += liner.storedVolume_m3(state) - state.flows.netSource_m3();
     b.stored_m3 += liner.storedVolume_m3(state);
-    b.ringSource_m3 += state.ringSource_m3;
-    b.splashSource_m3 += state.splashSource_m3;
-    b.deficitSource_m3 += state.deficitSource_m3;
-    b.drainLoss_m3 += state.drainLoss_m3;
-    b.filmIntake_m3 += state.filmIntake_m3;
-    b.sideLeakage_m3 += state.sideLeakage_m3;
-    b.skirtShareLoss_m3 += state.skirtShareLoss_m3;
+    b.flows += state.flows;
   }
   return b;
 }

@@ -478,13 +478,14 @@ TEST_F(SkirtScratchDeck, LinerTransportWritesTheFilmAlongTheBoreAndClosesItsBala
   const io::RunOutcome r = io::runDeck(d, out.string());
   ASSERT_TRUE(r.linerOilLastCycle.has_value());
   const plugin::LinerOilBalance& b = *r.linerOilLastCycle;
-  const double moved = b.ringSource_m3 + b.splashSource_m3 + b.skirtShareLoss_m3 +
-                       std::abs(b.filmIntake_m3) + b.stored_m3;
-  EXPECT_NE(b.ringSource_m3, 0.0);  // here a net sink: it scrapes what the skirt carried up
-  EXPECT_GT(b.splashSource_m3, 0.0);
+  const pistondyn::skirt::LinerOilFlows& f = b.flows;
+  const double moved = f.ringSource_m3 + f.splashSource_m3 + f.skirtShareLoss_m3 +
+                       std::abs(f.filmIntake_m3) + b.stored_m3;
+  EXPECT_NE(f.ringSource_m3, 0.0);  // here a net sink: it scrapes what the skirt carried up
+  EXPECT_GT(f.splashSource_m3, 0.0);
   EXPECT_NEAR(b.stored_m3 - b.initial_m3,
-              b.ringSource_m3 + b.splashSource_m3 + b.deficitSource_m3 - b.drainLoss_m3 -
-                  b.filmIntake_m3 - b.sideLeakage_m3 - b.skirtShareLoss_m3,
+              f.ringSource_m3 + f.splashSource_m3 + f.deficitSource_m3 - f.drainLoss_m3 -
+                  f.filmIntake_m3 - f.sideLeakage_m3 - f.skirtShareLoss_m3,
               1e-12 * moved);
   // The file: 4 columns, every value finite, films within [0, 20] um.
   std::ifstream in(out / "liner_film.csv");

@@ -40,8 +40,9 @@ ps::SkirtSideGrid side() {
 }
 
 double sum(const ps::LinerOilState& s) {
-  return s.ringSource_m3 + s.splashSource_m3 + s.deficitSource_m3 - s.drainLoss_m3 -
-         s.filmIntake_m3 - s.sideLeakage_m3 - s.skirtShareLoss_m3;
+  const ps::LinerOilFlows& f = s.flows;
+  return f.ringSource_m3 + f.splashSource_m3 + f.deficitSource_m3 - f.drainLoss_m3 -
+         f.filmIntake_m3 - f.sideLeakage_m3 - f.skirtShareLoss_m3;
 }
 
 TEST(LinerOilFilm, BalanceClosesToRoundOffOverRandomSteps) {
@@ -76,18 +77,19 @@ TEST(LinerOilFilm, BalanceClosesToRoundOffOverRandomSteps) {
     const ps::LinerOilState before = s;
     s = liner.advance(before, Y, v, 360.0 * t / 0.06, dt, {&bottom, &top, &sideMin, &sideMax});
     const double change = liner.storedVolume_m3(s) - liner.storedVolume_m3(before);
-    throughput += std::abs(s.ringSource_m3 - before.ringSource_m3) +
-                  std::abs(s.splashSource_m3 - before.splashSource_m3) +
-                  std::abs(s.drainLoss_m3 - before.drainLoss_m3) +
-                  std::abs(s.sideLeakage_m3 - before.sideLeakage_m3);
+    const ps::LinerOilFlows &f = s.flows, &f0 = before.flows;
+    throughput += std::abs(f.ringSource_m3 - f0.ringSource_m3) +
+                  std::abs(f.splashSource_m3 - f0.splashSource_m3) +
+                  std::abs(f.drainLoss_m3 - f0.drainLoss_m3) +
+                  std::abs(f.sideLeakage_m3 - f0.sideLeakage_m3);
     ASSERT_NEAR(change, sum(s) - sum(before), 1e-12 * throughput + 1e-20) << "step " << step;
     ASSERT_TRUE((s.volume_m3 >= 0.0).all()) << "step " << step;
   }
   EXPECT_NEAR(liner.storedVolume_m3(s) - start, sum(s), 1e-12 * throughput);
   std::printf("[LinerOilFilm] balance over 4000 random steps: stored %.4e -> %.4e m^3, "
               "ring %+.3e, splash %+.3e, deficit %.3e, drain %.3e, film intake %+.3e m^3\n",
-              start, liner.storedVolume_m3(s), s.ringSource_m3, s.splashSource_m3,
-              s.deficitSource_m3, s.drainLoss_m3, s.filmIntake_m3);
+              start, liner.storedVolume_m3(s), s.flows.ringSource_m3, s.flows.splashSource_m3,
+              s.flows.deficitSource_m3, s.flows.drainLoss_m3, s.flows.filmIntake_m3);
 }
 
 TEST(LinerOilFilm, RingMetersTheFilmOfTheRowsItPasses) {

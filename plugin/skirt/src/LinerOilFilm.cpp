@@ -43,6 +43,29 @@ void checkParameters(const LinerOilParameters& p, double skirtTop_m) {
 
 }  // namespace
 
+LinerOilFlows& LinerOilFlows::operator+=(const LinerOilFlows& o) {
+  ringSource_m3 += o.ringSource_m3;
+  splashSource_m3 += o.splashSource_m3;
+  deficitSource_m3 += o.deficitSource_m3;
+  drainLoss_m3 += o.drainLoss_m3;
+  filmIntake_m3 += o.filmIntake_m3;
+  sideLeakage_m3 += o.sideLeakage_m3;
+  skirtShareLoss_m3 += o.skirtShareLoss_m3;
+  return *this;
+}
+
+LinerOilFlows LinerOilFlows::operator-(const LinerOilFlows& earlier) const {
+  LinerOilFlows d;
+  d.ringSource_m3 = ringSource_m3 - earlier.ringSource_m3;
+  d.splashSource_m3 = splashSource_m3 - earlier.splashSource_m3;
+  d.deficitSource_m3 = deficitSource_m3 - earlier.deficitSource_m3;
+  d.drainLoss_m3 = drainLoss_m3 - earlier.drainLoss_m3;
+  d.filmIntake_m3 = filmIntake_m3 - earlier.filmIntake_m3;
+  d.sideLeakage_m3 = sideLeakage_m3 - earlier.sideLeakage_m3;
+  d.skirtShareLoss_m3 = skirtShareLoss_m3 - earlier.skirtShareLoss_m3;
+  return d;
+}
+
 LinerOilFilm::LinerOilFilm(const SkirtSideGrid& side, const LinerOilParameters& parameters,
                            double lowestPinHeight_m, double highestPinHeight_m)
     : parameters_(parameters),
@@ -146,7 +169,7 @@ void LinerOilFilm::calcSupply(const LinerOilState& state, double pinHeight_m,
 
 LinerOilState LinerOilFilm::advance(const LinerOilState& state, double pinHeight_m,
                                     double axialVelocity_mps, double crankAngle_deg, double dt_s,
-                                    const EdgeOutflows& flows) const {
+                                    const EdgeOutflows& edgeFlows) const {
   const int nc = columns();
   LinerOilState s = state;
   Eigen::ArrayXd& v = s.volume_m3;
@@ -167,7 +190,7 @@ LinerOilState LinerOilFilm::advance(const LinerOilState& state, double pinHeight
       if (free(target))
         v[i + nc * target] += cell;
       else
-        s.drainLoss_m3 += cell;  // beyond the liner's rows: the oil leaves the model
+        s.flows.drainLoss_m3 += cell;  // beyond the liner's rows: the oil leaves the model
       cell = 0.0;
     }
   }
@@ -177,14 +200,14 @@ LinerOilState LinerOilFilm::advance(const LinerOilState& state, double pinHeight
   const auto exchange = [&](int row, int outward, const Eigen::ArrayXd& out, bool trailing) {
     for (int i = 0; i < nc; ++i) {
       const double V = out[i] * dt_s;  // + leaves the film
-      s.filmIntake_m3 -= V;
+      s.flows.filmIntake_m3 -= V;
       if (V >= 0.0) {
         const double share = trailing ? parameters_.skirtShare * V : 0.0;
-        s.skirtShareLoss_m3 += share;
+        s.flows.skirtShareLoss_m3 += share;
         if (free(row))
           v[i + nc * row] += V - share;
         else
-          s.drainLoss_m3 += V - share;
+          s.flows.drainLoss_m3 += V - share;
         continue;
       }
       double need = -V;  // drawn by the film: from the row outside, then the rows beyond it
@@ -194,20 +217,20 @@ LinerOilState LinerOilFilm::advance(const LinerOilState& state, double pinHeight
         cell -= take;
         need -= take;
       }
-      s.deficitSource_m3 += need;
+      s.flows.deficitSource_m3 += need;
     }
   };
-  if (flows.top)
-    exchange(up, +1, *flows.top, axialVelocity_mps < 0.0);
-  if (flows.bottom)
-    exchange(down, -1, *flows.bottom, axialVelocity_mps > 0.0);
+  if (edgeFlows.top)
+    exchange(up, +1, *edgeFlows.top, axialVelocity_mps < 0.0);
+  if (edgeFlows.bottom)
+    exchange(down, -1, *edgeFlows.bottom, axialVelocity_mps > 0.0);
   // 3. Side leakage leaves the model.
-  for (const Eigen::ArrayXd* side : {flows.sideMin, flows.sideMax}) {
+  for (const Eigen::ArrayXd* side : {edgeFlows.sideMin, edgeFlows.sideMax}) {
     if (!side)
       continue;
     const double V = side->sum() * dt_s;
-    s.sideLeakage_m3 += V;
-    s.filmIntake_m3 -= V;
+    s.flows.sideLeakage_m3 += V;
+    s.flows.filmIntake_m3 -= V;
   }
 
   // 4. The rows whose centres the oil-control ring passed get the film it leaves.
@@ -223,7 +246,7 @@ LinerOilState LinerOilFilm::advance(const LinerOilState& state, double pinHeight
     for (int i = 0; i < nc; ++i) {
       double& cell = v[i + nc * m];
       const double metered = cellCapacity_m3(i, ringFilm);
-      s.ringSource_m3 += metered - cell;
+      s.flows.ringSource_m3 += metered - cell;
       cell = metered;
     }
   }
@@ -238,17 +261,17 @@ LinerOilState LinerOilFilm::advance(const LinerOilState& state, double pinHeight
       double& cell = v[i + nc * m];
       const double cap = cellCapacity_m3(i, parameters_.maxFilm_m);
       if (c < parameters_.floodedBelow_m) {
-        s.splashSource_m3 += cap - cell;
+        s.flows.splashSource_m3 += cap - cell;
         cell = cap;
         continue;
       }
       if (c < parameters_.splashBelow_m && cell < cap) {
         const double add = std::min(cellCapacity_m3(i, dSplash), cap - cell);
-        s.splashSource_m3 += add;
+        s.flows.splashSource_m3 += add;
         cell += add;
       }
       if (cell > cap) {
-        s.drainLoss_m3 += cell - cap;
+        s.flows.drainLoss_m3 += cell - cap;
         cell = cap;
       }
     }

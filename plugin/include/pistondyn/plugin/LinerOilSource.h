@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include "pistondyn/skirt/LinerOilFilm.h"
+
 namespace SimTK {
 class State;
 }
@@ -14,19 +16,12 @@ namespace pistondyn::plugin {
 
 enum class SkirtSide;
 
-/// Where the liner's oil came from and went since the start of the run, both sides summed
-/// [m^3]. stored - initial = ring + splash + deficit - drain - filmIntake - sideLeakage -
-/// skirtShare, to round-off (skirt::LinerOilState).
+/// The liner's oil since the start of the run, both sides summed: stored - initial =
+/// flows.netSource_m3(), to round-off (skirt::LinerOilFlows).
 struct LinerOilBalance {
-  double stored_m3 = 0.0;          ///< on the liner now
-  double initial_m3 = 0.0;         ///< on the liner at the start
-  double ringSource_m3 = 0.0;      ///< net film the oil-control ring left
-  double splashSource_m3 = 0.0;    ///< crankcase splash
-  double deficitSource_m3 = 0.0;   ///< oil the skirt's film drew that the liner did not hold
-  double drainLoss_m3 = 0.0;       ///< drained above the largest film
-  double filmIntake_m3 = 0.0;      ///< the skirt films' net gain across all their edges
-  double sideLeakage_m3 = 0.0;     ///< lost across the films' circumferential edges
-  double skirtShareLoss_m3 = 0.0;  ///< left on the skirt at the trailing edge
+  double stored_m3 = 0.0;       ///< on the liner now [m^3]
+  double initial_m3 = 0.0;      ///< on the liner at the start [m^3]
+  skirt::LinerOilFlows flows;   ///< what came and went
 };
 
 /// The liner film of an element (LinerElement::getLinerOil()).

@@ -86,23 +86,42 @@ struct LinerOilParameters {
   double initialFilm_m = 1.0e-6;
 };
 
+/// The oil that entered and left a liner film since the start [m^3] (sums over steps, one
+/// side or several): stored volume - initial volume = netSource_m3(), to round-off.
+struct LinerOilFlows {
+  /// Sources: the ring's net (what it left less what it scraped), the splash, and oil the
+  /// skirt's film drew that no liner row held.
+  ///@{
+  double ringSource_m3 = 0.0;
+  double splashSource_m3 = 0.0;
+  double deficitSource_m3 = 0.0;
+  ///@}
+  /// Losses: drained above maxFilm_m, the skirt film's net gain across all its edges, what
+  /// the film lost across its circumferential edges and the skirt's share of its trailing-edge
+  /// outflow (both to the crankcase).
+  ///@{
+  double drainLoss_m3 = 0.0;
+  double filmIntake_m3 = 0.0;
+  double sideLeakage_m3 = 0.0;
+  double skirtShareLoss_m3 = 0.0;
+  ///@}
+  /// Sources less losses [m^3]: the change of the stored oil they account for.
+  double netSource_m3() const {
+    return ringSource_m3 + splashSource_m3 + deficitSource_m3 - drainLoss_m3 - filmIntake_m3 -
+           sideLeakage_m3 - skirtShareLoss_m3;
+  }
+  /// Adds another film's flows (both sides of a piston).
+  LinerOilFlows& operator+=(const LinerOilFlows& o);
+  /// The flows between two moments: this (the later) less `earlier`.
+  LinerOilFlows operator-(const LinerOilFlows& earlier) const;
+};
+
 /// The liner film of one side and its cumulative balance; a value the caller keeps.
 struct LinerOilState {
   /// Oil volume per cell [m^3], column fastest (k = i + nPhi m); empty: not started.
   Eigen::ArrayXd volume_m3;
   double pinHeight_m = std::numeric_limits<double>::quiet_NaN();  ///< of this state [m]
-  /// Since the start [m^3]: sources (the ring's net, the splash, oil the film drew that no
-  /// row held) ...
-  double ringSource_m3 = 0.0;
-  double splashSource_m3 = 0.0;  ///< see ringSource_m3
-  double deficitSource_m3 = 0.0;  ///< see ringSource_m3
-  /// ... losses (drained above maxFilm_m), the skirt film's net gain across all its edges,
-  /// and what the film lost across its circumferential edges and the skirt's share of its
-  /// trailing-edge outflow (both to the crankcase).
-  double drainLoss_m3 = 0.0;
-  double filmIntake_m3 = 0.0;     ///< see drainLoss_m3
-  double sideLeakage_m3 = 0.0;    ///< see drainLoss_m3
-  double skirtShareLoss_m3 = 0.0;  ///< see drainLoss_m3
+  LinerOilFlows flows;  ///< what came and went since the start
   /// True for a state not started yet (no cells: not made by LinerOilFilm::makeInitialState()
   /// or advance()).
   bool empty() const { return volume_m3.size() == 0; }
@@ -142,7 +161,7 @@ class LinerOilFilm {
   /// edge outflows (arrays of the side's sizes).
   LinerOilState advance(const LinerOilState& state, double pinHeight_m,
                         double axialVelocity_mps, double crankAngle_deg, double dt_s,
-                        const EdgeOutflows& flows) const;
+                        const EdgeOutflows& edgeFlows) const;
 
   /// The oil on the liner [m^3].
   double storedVolume_m3(const LinerOilState& state) const { return state.volume_m3.sum(); }

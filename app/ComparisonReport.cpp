@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -14,15 +13,6 @@ namespace pistondyn::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string readBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw std::runtime_error(path + ": cannot read");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 const char* kStyle = R"(body{font-family:sans-serif;max-width:1250px;margin:1em auto;padding:0 1em;color:#222}
 table.cases{border-collapse:collapse;margin:0.5em 0}
@@ -78,14 +68,7 @@ std::string makeComparisonHtml(const std::string& title, const std::vector<Compa
     html << "</tr>\n";
   }
   html << "</tbody></table>\n<h2>The cases' curves</h2>\n";
-  if (pngPaths.empty())
-    html << "<p class=\"noplots\">" << escapeHtml(plotNote) << "</p>\n";
-  for (const std::string& p : pngPaths) {
-    const std::string name = fs::path(p).stem().string();
-    html << "<figure><img alt=\"" << escapeHtml(name) << "\" src=\"data:image/png;base64,"
-         << encodeBase64(readBytes(p)) << "\"><figcaption>" << escapeHtml(name)
-         << ".png</figcaption></figure>\n";
-  }
+  writeEmbeddedFigures(html, pngPaths, plotNote);
   html << "<script>window.addEventListener('error', function (e) {\n"
           "  document.body.setAttribute('data-js-error', String(e.message));\n});\n"
           "window.addEventListener('load', function () {\n"

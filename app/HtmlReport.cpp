@@ -437,14 +437,7 @@ std::string makeHtmlReport(const io::ResultFolder& f, const std::vector<std::str
           "something (summary.json holds every digit, in the units its keys name).</p>\n";
   summaryTable(html, f);
   html << "<h2>Plots</h2>\n";
-  if (pngPaths.empty())
-    html << "<p class=\"noplots\">" << escape(plotNote) << "</p>\n";
-  for (const auto& p : pngPaths) {
-    const std::string name = fs::path(p).stem().string();
-    html << "<figure><img alt=\"" << escape(name) << "\" src=\"data:image/png;base64,"
-         << encodeBase64(readBytes(p)) << "\"><figcaption>" << escape(name)
-         << ".png</figcaption></figure>\n";
-  }
+  writeEmbeddedFigures(html, pngPaths, plotNote);
   html << "<h2>Inputs</h2>\n";
   const std::string deck = f.getSummaryValue("deck_file");
   std::error_code ec;
@@ -465,6 +458,18 @@ std::string makeHtmlReport(const io::ResultFolder& f, const std::vector<std::str
   }
   html << "<script>" << kScript << "</script>\n</body></html>\n";
   return html.str();
+}
+
+void writeEmbeddedFigures(std::ostream& html, const std::vector<std::string>& pngPaths,
+                          const std::string& plotNote) {
+  if (pngPaths.empty())
+    html << "<p class=\"noplots\">" << escape(plotNote) << "</p>\n";
+  for (const auto& p : pngPaths) {
+    const std::string name = fs::path(p).stem().string();
+    html << "<figure><img alt=\"" << escape(name) << "\" src=\"data:image/png;base64,"
+         << encodeBase64(readBytes(p)) << "\"><figcaption>" << escape(name)
+         << ".png</figcaption></figure>\n";
+  }
 }
 
 }  // namespace pistondyn::app

@@ -7,6 +7,7 @@
 // a factor the page states) and, with the liner's field frames, an animated map of each
 // side's film following it (a canvas per side).
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -26,5 +27,10 @@ std::string makeHtmlReport(const io::ResultFolder& folder, const std::vector<std
 double chooseExaggeration(double bore_m, double clearance_m);
 
 std::string encodeBase64(const std::string& bytes);
+
+// The PNG figures embedded in a page (base64 <figure>s captioned with their file names), or
+// `plotNote` when there are none; the report and the comparison page share it.
+void writeEmbeddedFigures(std::ostream& html, const std::vector<std::string>& pngPaths,
+                          const std::string& plotNote);
 
 }  // namespace pistondyn::app

@@ -70,10 +70,16 @@ std::vector<HeadlineItem> makeHeadline(const io::ResultFolder& f) {
                  const std::string& angleKey = "") {
     const std::string full = "results." + key;
     if (const auto v = getNumber(f, full)) {
-      items.push_back({label,
-                       angleKey.empty() ? units::formatDisplayValue(key, *v)
-                                        : valueAt(f, key, *v, "results." + angleKey),
-                       note});
+      std::string value = angleKey.empty() ? units::formatDisplayValue(key, *v)
+                                           : valueAt(f, key, *v, "results." + angleKey);
+      // A run that did not become periodic: the last cycles' mean and spread beside it.
+      const auto mean = getNumber(f, "results.last_cycles.mean." + key);
+      const auto spread = getNumber(f, "results.last_cycles.spread." + key);
+      if (mean && spread) {
+        value += "; last cycles: mean " + units::formatDisplayValue(key, *mean) + ", spread " +
+                 units::formatDisplayValue(key, *spread);
+      }
+      items.push_back({label, value, note});
     }
   };
   add("fmep", "fmep_kPa", "friction mean effective pressure of the skirt, last cycle");

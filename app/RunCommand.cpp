@@ -1,9 +1,11 @@
 // pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--fidelity full|preview]
 //               [--quiet] [--no-plot] [--log-level LEVEL]
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <optional>
 
@@ -64,6 +66,48 @@ void printLinerFigures(const io::CycleSummary::LinerFigures& f, const io::CycleS
   }
 }
 
+// The range (smallest .. largest) of the main figures over the last cycles of a run that did
+// not become periodic (summary.json: results.last_cycles).
+void printLastCyclesRange(const std::vector<io::CycleSummary>& cycles) {
+  const std::size_t n = std::min<std::size_t>(3, cycles.size());
+  if (n < 2)
+    return;
+  using Figure = std::function<std::optional<double>(const io::CycleSummary&)>;
+  const auto range = [&](const char* name, const char* unit, const char* format,
+                         const Figure& figure) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (std::size_t i = cycles.size() - n; i < cycles.size(); ++i) {
+      const std::optional<double> v = figure(cycles[i]);
+      if (!v)
+        return;
+      lo = std::min(lo, *v);
+      hi = std::max(hi, *v);
+    }
+    const std::string pattern = std::string("  %s ") + format + " .. " + format + " %s";
+    std::printf(pattern.c_str(), name, lo, hi, unit);
+  };
+  const auto liner = [](auto get) {
+    return [get](const io::CycleSummary& c) -> std::optional<double> {
+      return c.liner ? get(*c.liner) : std::nullopt;
+    };
+  };
+  std::printf("  over the last %zu cycles: ", n);
+  range("fmep", "kPa", "%.3f", liner([](const auto& f) {
+          return f.fmep_Pa ? std::optional<double>(*f.fmep_Pa / 1e3) : std::nullopt;
+        }));
+  range("min h/sigma thrust", "", "%.2f",
+        liner([](const auto& f) { return f.minGapOverSigmaThrust; }));
+  range("anti-thrust", "", "%.2f", liner([](const auto& f) { return f.minGapOverSigmaAntiThrust; }));
+  range("max |u_lat|", "um", "%.2f", [](const io::CycleSummary& c) -> std::optional<double> {
+    return c.maxAbsLateralDisplacement_m * 1e6;
+  });
+  range("largest slap", "mJ", "%.3f", liner([](const auto& f) {
+          return f.slapEnergyMax_J ? std::optional<double>(*f.slapEnergyMax_J * 1e3)
+                                   : std::nullopt;
+        }));
+  std::printf("\n");
+}
+
 void printSummary(const io::EngineDeck& deck, const io::RunOutcome& o, const std::string& outDir) {
   const auto& s = o.summary;
   std::printf("pistondyn: %s\n", deck.engine.name.c_str());
@@ -84,6 +128,7 @@ void printSummary(const io::EngineDeck& deck, const io::RunOutcome& o, const std
     } else {
       std::printf("  NOT periodic after %d cycles: the figures are those of the last one\n",
                   o.stats.cyclesRun);
+      printLastCyclesRange(o.cycleSummaries);
     }
   }
   std::printf("  imep %.1f kPa   peak cylinder pressure %.2f bar at %.1f deg\n", s.imep_Pa / 1e3,

@@ -53,8 +53,10 @@ void CycleSummarySink::beginRun(const std::vector<std::string>& columns) {
   }
   liner_ = model_.findLinerElement();
   summary_ = CycleSummary();
+  cycles_.clear();
   rows_ = 0;
   rowInCycle_ = -1;
+  closeWithNextRow_ = false;
 }
 
 void CycleSummarySink::resetCycle() {
@@ -81,7 +83,11 @@ void CycleSummarySink::discardRows() {
 }
 
 void CycleSummarySink::beginCycle(int) {
-  resetCycle();
+  // A cycle that lacks only its closing row is closed by the next row (CycleSimulation
+  // hands the row that closes one cycle over as the first row of the next).
+  closeWithNextRow_ = rowInCycle_ == perCycle_;
+  if (!closeWithNextRow_)
+    resetCycle();
   rowInCycle_ = 0;
 }
 
@@ -89,10 +95,20 @@ void CycleSummarySink::consumeRow(const SimTK::State& state, const std::vector<d
   ++rows_;
   if (rowInCycle_ < 0)
     return;  // rows before the first cycle (none with CycleSimulation)
+  if (closeWithNextRow_) {
+    accumulate(state, r, perCycle_);
+    cycles_.push_back(finishCycle());
+    resetCycle();
+    closeWithNextRow_ = false;
+  }
   const long k = rowInCycle_++;
   if (k > perCycle_)
     return;
-  if (k == 0 || k == perCycle_) {
+  accumulate(state, r, k);
+}
+
+void CycleSummarySink::accumulate(const SimTK::State& state, const std::vector<double>& r,
+                                  long k) {  if (k == 0 || k == perCycle_) {
     (k == 0 ? timeAtCycleStart_s_ : timeAtCycleEnd_s_) = state.getTime();
     if (liner_ != nullptr)
       (k == 0 ? workAtCycleStart_J_ : workAtCycleEnd_J_) = liner_->getFrictionWork_J(state);
@@ -170,7 +186,12 @@ void CycleSummarySink::endRun() {
   if (rowInCycle_ != perCycle_ + 1) {
     throw std::runtime_error("CycleSummarySink: the run ended without completing a 720 deg cycle");
   }
-  CycleSummary& s = summary_;
+  summary_ = finishCycle();
+  cycles_.push_back(summary_);
+}
+
+CycleSummary CycleSummarySink::finishCycle() const {
+  CycleSummary s;
   addDeckFigures(deck_, s);
   const double n = static_cast<double>(perCycle_);
   s.conrodForceMax_N = conrodMax_;
@@ -208,6 +229,7 @@ void CycleSummarySink::endRun() {
     }
     if (workAtCycleStart_J_ && workAtCycleEnd_J_) {
       f.frictionWork_J = *workAtCycleEnd_J_ - *workAtCycleStart_J_;
+      f.fmep_Pa = *f.frictionWork_J / s.displacement_m3;
       const double duration_s = timeAtCycleEnd_s_ - timeAtCycleStart_s_;
       if (duration_s > 0.0)
         f.frictionPowerMean_W = *f.frictionWork_J / duration_s;
@@ -229,6 +251,7 @@ void CycleSummarySink::endRun() {
     }
     s.liner = f;
   }
+  return s;
 }
 
 }  // namespace pistondyn::io

@@ -82,12 +82,23 @@ void checkSummaryShape(const Json& j, const std::string& file) {
   const Json& results = j.at("results");
   if (!results.is_object())
     fail("\"results\" is " + describe(results) + ", expected an object");
-  for (auto it = results.begin(); it != results.end(); ++it) {
-    const Json& v = it.value();
-    if (it.key() == "note" ? !v.is_string()
-                           : !(isNumberOrNull(v) || v.is_boolean() || isNumberList(v)))
-      fail("results." + it.key() + ": expected " + (it.key() == "note" ? "text" : "a number") +
-           ", found " + describe(v));
+  // Figures, and groups of figures (results.last_cycles: mean and spread) of the same shape.
+  std::vector<std::pair<std::string, const Json*>> groups{{"results", &results}};
+  while (!groups.empty()) {
+    const auto [path, group] = groups.back();
+    groups.pop_back();
+    for (auto it = group->begin(); it != group->end(); ++it) {
+      const Json& v = it.value();
+      const std::string key = path + "." + it.key();
+      if (v.is_object() && path == "results")
+        groups.emplace_back(key, &v);
+      else if (v.is_object() && path == "results.last_cycles")
+        groups.emplace_back(key, &v);
+      else if (it.key() == "note" ? !v.is_string()
+                                  : !(isNumberOrNull(v) || v.is_boolean() || isNumberList(v)))
+        fail(key + ": expected " + (it.key() == "note" ? "text" : "a number") + ", found " +
+             describe(v));
+    }
   }
   for (const char* key : {"wall_time_s", "integrator_steps"}) {
     if (j.contains(key) && !isNumberOrNull(j.at(key)))

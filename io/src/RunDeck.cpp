@@ -1,5 +1,6 @@
 #include "pistondyn/io/RunDeck.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -45,52 +46,28 @@ Json nestedInputs(const std::vector<ResolvedInput>& inputs) {
   return root;
 }
 
-}  // namespace
-
-std::vector<std::string> makeCycleCsvComments(const EngineDeck& deck) {
-  return {"pistondyn " + getVersion() + " cycle results for " + deck.deckPath, kAngleConvention,
-          kFrameConvention};
+// Every number written is finite: a figure that is not would be a failed run, never a null in
+// the summary.
+double finite(const char* key, double v) {
+  if (!std::isfinite(v))
+    throw std::runtime_error(std::string("summary.json: ") + key + " is not finite");
+  return v;
 }
 
-std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
-  const mbd::EngineDescription& e = deck.engine;
-  const plugin::SimulationSettings& st = deck.simulation;
-  Json j;
-  j["pistondyn_version"] = getVersion();
-  j["crank_angle_convention"] = kAngleConvention;
-  j["frame_convention"] = kFrameConvention;
-  // Absolute: the summary names the deck wherever it is read from (the report reads it).
-  std::error_code ec;
-  const std::filesystem::path deckFile = std::filesystem::absolute(deck.deckPath, ec);
-  j["deck_file"] = ec ? deck.deckPath : deckFile.lexically_normal().string();
-  j["overrides"] = deck.overrides;
-  // full: the deck as written; preview: a coarser film grid for a quick look (EngineDeck.h),
-  // its assignments among the overrides above and its grid among the inputs below.
-  j["fidelity"] = getFidelityName(deck.fidelity);
-  if (!deck.fidelityNote.empty())
-    j["fidelity_note"] = deck.fidelityNote;
-
-  j["inputs"] = nestedInputs(deck.inputs);
-  // What the model uses besides the deck's keys.
-  Json& model = j["model"];
-  model["crank_train_tertiary_motion"] = e.tertiaryMotion;
-  model["constraint_tolerance"] = st.constraintTolerance;
-
-  const CycleSummary& s = o.summary;
-  Json& r = j["results"];
-  r["note"] = "figures of the last simulated 720 deg cycle";
+// The deck's figures of a summary (the same in every cycle), in the summary's names and units.
+Json deckFigures(const CycleSummary& s) {
+  Json r;
   r["imep_kPa"] = s.imep_Pa / 1e3;
   r["displacement_m3"] = s.displacement_m3;
   r["kinematic_stroke_m"] = s.kinematicStroke_m;
   r["peak_cylinder_pressure_Pa"] = s.peakCylinderPressure_Pa;
   r["peak_cylinder_pressure_angle_deg"] = s.peakCylinderPressureAngle_deg;
-  // Every number written is finite: a figure that is not would be a failed run, never a
-  // null in the summary.
-  auto finite = [](const char* key, double v) {
-    if (!std::isfinite(v))
-      throw std::runtime_error(std::string("summary.json: ") + key + " is not finite");
-    return v;
-  };
+  return r;
+}
+
+// The simulated figures of one cycle, in the summary's names and units.
+Json cycleFigures(const CycleSummary& s) {
+  Json r = Json::object();
   if (s.liner) {
     // From the liner element's role interface (plugin::LinerElement), if there is one.
     const CycleSummary::LinerFigures& f = *s.liner;
@@ -103,8 +80,7 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
       if (v)
         r[key] = finite(key, *v * scale);
     };
-    if (!o.stats.cycleFmep_Pa.empty())
-      r["fmep_kPa"] = finite("fmep_kPa", o.stats.cycleFmep_Pa.back() / 1e3);
+    optional("fmep_kPa", f.fmep_Pa, 1e-3);
     optional("friction_work_J", f.frictionWork_J);
     optional("friction_power_mean_W", f.frictionPowerMean_W);
     optional("asperity_friction_work_J", f.asperityFrictionWork_J);
@@ -139,18 +115,6 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
     }
     optional("slap_energy_max_mJ", f.slapEnergyMax_J, 1e3);
     optional("hot_clearance_um", f.hotRunningClearance_m, 1e6);
-    if (!o.stats.cycleFmep_Pa.empty()) {
-      Json list = Json::array();
-      for (double v : o.stats.cycleFmep_Pa)
-        list.push_back(finite("cycle_fmep_kPa", v / 1e3));
-      r["cycle_fmep_kPa"] = list;
-    }
-    if (f.filmSolves)
-      r["film_solves"] = *f.filmSolves;
-    if (f.filmFallbacks)
-      r["film_fallbacks"] = *f.filmFallbacks;
-    if (f.filmDerivativeFailures)
-      r["film_derivative_failures"] = *f.filmDerivativeFailures;
   }
   r["conrod_force_max_N"] = s.conrodForceMax_N;
   r["conrod_force_min_N"] = s.conrodForceMin_N;
@@ -162,11 +126,110 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
   r["mean_crank_torque_Nm"] = s.meanCrankTorque_Nm;
   r["mean_drive_torque_Nm"] = s.meanDriveTorque_Nm;
   r["indicated_power_W"] = s.indicatedPower_W;
+  return r;
+}
+
+// How many of the last cycles a run that did not become periodic is summarised over.
+constexpr std::size_t kSpreadCycles = 3;
+
+// The mean and the spread (largest minus smallest) of every figure of cycleFigures() over the
+// last kSpreadCycles cycles (fewer if fewer ran), and which cycles they are (1 = the first).
+Json lastCyclesSpread(const std::vector<CycleSummary>& cycles) {
+  const std::size_t n = std::min(kSpreadCycles, cycles.size());
+  std::vector<Json> figures;
+  Json numbers = Json::array();
+  for (std::size_t i = cycles.size() - n; i < cycles.size(); ++i) {
+    figures.push_back(cycleFigures(cycles[i]));
+    numbers.push_back(i + 1);
+  }
+  Json out;
+  out["note"] = "the run did not become periodic: mean and spread (largest - smallest) of each "
+                "figure over these cycles";
+  out["cycles"] = numbers;
+  Json& mean = out["mean"];
+  Json& spread = out["spread"];
+  for (const auto& [key, last] : figures.back().items()) {
+    double sum = 0.0, lo = INFINITY, hi = -INFINITY;
+    bool everyCycle = true;
+    for (const Json& f : figures) {
+      const auto it = f.find(key);
+      if (it == f.end() || !it->is_number()) {
+        everyCycle = false;
+        break;
+      }
+      const double v = it->get<double>();
+      sum += v;
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+    if (!everyCycle)
+      continue;  // a figure some cycle does not have is not averaged
+    mean[key] = sum / static_cast<double>(n);
+    spread[key] = hi - lo;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> makeCycleCsvComments(const EngineDeck& deck) {
+  return {"pistondyn " + getVersion() + " cycle results for " + deck.deckPath, kAngleConvention,
+          kFrameConvention};
+}
+
+std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
+  const mbd::EngineDescription& e = deck.engine;
+  const plugin::SimulationSettings& st = deck.simulation;
+  Json j;
+  j["pistondyn_version"] = getVersion();
+  j["crank_angle_convention"] = kAngleConvention;
+  j["frame_convention"] = kFrameConvention;
+  // Absolute: the summary names the deck wherever it is read from (the report reads it).
+  std::error_code ec;
+  const std::filesystem::path deckFile = std::filesystem::absolute(deck.deckPath, ec);
+  j["deck_file"] = ec ? deck.deckPath : deckFile.lexically_normal().string();
+  j["overrides"] = deck.overrides;
+  // full: the deck as written; preview: a coarser film grid for a quick look (EngineDeck.h),
+  // its assignments among the overrides above and its grid among the inputs below.
+  j["fidelity"] = getFidelityName(deck.fidelity);
+  if (!deck.fidelityNote.empty())
+    j["fidelity_note"] = deck.fidelityNote;
+
+  j["inputs"] = nestedInputs(deck.inputs);
+  // What the model uses besides the deck's keys.
+  Json& model = j["model"];
+  model["crank_train_tertiary_motion"] = e.tertiaryMotion;
+  model["constraint_tolerance"] = st.constraintTolerance;
+
+  Json& r = j["results"];
+  r["note"] = "figures of the last simulated 720 deg cycle";
+  r.update(deckFigures(o.summary));
+  r.update(cycleFigures(o.summary));
+  if (o.summary.liner) {
+    // The run's own figures of a liner that reports them.
+    if (!o.stats.cycleFmep_Pa.empty()) {
+      Json list = Json::array();
+      for (double v : o.stats.cycleFmep_Pa)
+        list.push_back(finite("cycle_fmep_kPa", v / 1e3));
+      r["cycle_fmep_kPa"] = list;
+    }
+    const CycleSummary::LinerFigures& f = *o.summary.liner;
+    if (f.filmSolves)
+      r["film_solves"] = *f.filmSolves;
+    if (f.filmFallbacks)
+      r["film_fallbacks"] = *f.filmFallbacks;
+    if (f.filmDerivativeFailures)
+      r["film_derivative_failures"] = *f.filmDerivativeFailures;
+  }
   // The run itself (SimulationStats).
   r["cycles_run"] = o.stats.cyclesRun;
   r["converged"] = o.stats.converged;                  // until_periodic: the last two agreed
   // null unless converged: no number of cycles to converge is claimed for a run that did not.
   r["cycles_to_converge"] = o.stats.converged ? Json(o.stats.cyclesToConverge) : Json(nullptr);
+  // A run of several cycles that did not reach a periodic state: its last cycles' spread says
+  // how much the one cycle above stands for.
+  if (!o.stats.converged && o.cycleSummaries.size() >= 2)
+    r["last_cycles"] = lastCyclesSpread(o.cycleSummaries);
   r["rejected_steps"] = o.stats.rejectedSteps;         // linearly_implicit_bdf2's error test
   // linearly_implicit_bdf2: steps retried because an element threw, e.g. a film solve or an
   // elastic coupling that did not converge on a trial step (never silent, issue 12).
@@ -253,6 +316,7 @@ RunOutcome runModel(const EngineDeck& deck, plugin::PistonAssemblyModel& model,
 
   RunOutcome o;
   o.summary = summary.getSummary();
+  o.cycleSummaries = summary.getCycleSummaries();
   o.stats = sim.getStats();
   o.rows = summary.getRowCount();
   if (linerFilm)

@@ -76,7 +76,9 @@ TEST(ResultFolder, ReadsCsvSummaryAndFieldDumps) {
                                       "time_s,crank_angle_deg,side_force_N\n0,0,1\n1,720,2\n";
   std::ofstream(dir / "summary.json")
       << R"({"inputs": {"engine_name": "e", "geometry": {"bore_m": 0.0745}},
-             "results": {"fmep_kPa": 2.5, "converged": false, "cycle_fmep_kPa": [2.4, 2.5]}})";
+             "results": {"fmep_kPa": 2.5, "converged": false, "cycle_fmep_kPa": [2.4, 2.5],
+                         "last_cycles": {"note": "n", "cycles": [1, 2],
+                                         "mean": {"fmep_kPa": 2.45}, "spread": {"fmep_kPa": 0.1}}}})";
   for (const char* f : {"field_dump_380deg_thrust.csv", "field_dump_380deg_antithrust.csv",
                         "field_dump_0deg_antithrust.csv", "field_dump_0deg_thrust.csv",
                         "field_dump_notes.txt"})
@@ -90,6 +92,8 @@ TEST(ResultFolder, ReadsCsvSummaryAndFieldDumps) {
   EXPECT_EQ(r.getSummaryValue("results.converged"), "false");
   EXPECT_EQ(r.getSummaryValue("results.cycle_fmep_kPa"), "[2.4, 2.5]");
   EXPECT_EQ(r.getSummaryValue("results.no_such_key"), "");
+  EXPECT_EQ(r.getSummaryValue("results.last_cycles.mean.fmep_kPa"), "2.45");
+  EXPECT_EQ(r.getSummaryValue("results.last_cycles.cycles"), "[1, 2]");
   ASSERT_EQ(r.fieldDumps.size(), 4u);
   EXPECT_EQ(r.fieldDumps[0].crankAngle_deg, 0.0);
   EXPECT_EQ(r.fieldDumps[0].side, "thrust");
@@ -121,6 +125,10 @@ TEST(ResultFolder, SummaryNotAsRunWritesItIsRefused) {
       {R"({"results": {"fmep_kPa": "abc"}})",
        "results.fmep_kPa: expected a number, found the text \"abc\""},
       {R"({"results": {"note": 3}})", "results.note: expected text, found 3"},
+      {R"({"results": {"last_cycles": {"mean": {"fmep_kPa": "x"}}}})",
+       "results.last_cycles.mean.fmep_kPa: expected a number, found the text \"x\""},
+      {R"({"results": {"last_cycles": {"mean": {"fmep": {"kPa": 1}}}}})",
+       "results.last_cycles.mean.fmep: expected a number, found an object"},
       {R"({"results": {}, "wall_time_s": "fast"})", "wall_time_s: expected a number"},
       {R"({"results": {}, "inputs": {"geometry": {"bore_m": "wide"}}})",
        "inputs.geometry.bore_m: expected a number, found the text \"wide\""},

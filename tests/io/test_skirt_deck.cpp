@@ -5,11 +5,15 @@
 // ideal guide selectable from the same deck.
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <memory>
 #include <set>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -517,4 +521,114 @@ TEST_F(SkirtScratchDeck, LinerTransportWritesTheFilmAlongTheBoreAndClosesItsBala
   EXPECT_GT(heights.size(), 40u);  // the 12 axial nodes' spacing along 120 mm of bore
   EXPECT_EQ(rows, 144 * static_cast<int>(heights.size()));  // 144 output rows of 5 deg
   EXPECT_GT(ringRows, 0);
+}
+
+namespace {
+
+// The rows of cycle.csv (comment lines skipped) as numbers, and the header's column names.
+struct CsvRows {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+  std::size_t column(const std::string& name) const {
+    const auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end())
+      throw std::runtime_error("no column " + name);
+    return static_cast<std::size_t>(it - header.begin());
+  }
+};
+
+CsvRows readCycleCsv(const fs::path& file) {
+  CsvRows csv;
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#')
+      continue;
+    std::vector<std::string> fields;
+    std::stringstream ss(line);
+    for (std::string f; std::getline(ss, f, ',');)
+      fields.push_back(f);
+    if (csv.header.empty()) {
+      csv.header = fields;
+      continue;
+    }
+    std::vector<double> row;
+    for (const std::string& f : fields)
+      row.push_back(std::stod(f));
+    csv.rows.push_back(row);
+  }
+  return csv;
+}
+
+}  // namespace
+
+// Every cycle of a run is summarised, not only the last: each cycle's fmep equals the one the
+// simulation integrated for that cycle (CycleSimulation, its own code), each cycle's largest
+// |u_lat| the largest of that cycle's rows in cycle.csv (a run not to periodic steady state
+// writes every cycle); and a run that did not become periodic reports its last cycles' mean
+// and spread (largest - smallest) of each figure in summary.json, results.last_cycles - here
+// checked against those independent per-cycle figures. A run to periodic steady state that
+// did not converge summarises its discarded cycles too.
+TEST_F(SkirtScratchDeck, EveryCycleIsSummarisedAndANonPeriodicRunReportsItsLastCyclesSpread) {
+  const std::vector<std::string> coarse = {
+      "liner.grid.nodes_circumferential=12", "liner.grid.nodes_axial=8",
+      "simulation.output_step_deg=2", "liner.parallel_sides=false"};
+  std::vector<std::string> o = coarse;
+  o.insert(o.end(), {"simulation.cycles=2", "simulation.until_periodic=false"});
+  const fs::path out = dir_ / "two";
+  const io::RunOutcome r = io::runDeck(io::loadEngineDeck(deck(), o), out.string());
+  ASSERT_EQ(r.cycleSummaries.size(), 2u);
+  ASSERT_EQ(r.stats.cycleFmep_Pa.size(), 2u);
+  const CsvRows csv = readCycleCsv(out / "cycle.csv");
+  ASSERT_EQ(csv.rows.size(), 2u * 360u + 1u);
+  const std::size_t uLat = csv.column("u_lat_um");
+  std::vector<double> fmep_kPa, maxULat_um;
+  for (std::size_t c = 0; c < 2; ++c) {
+    const io::CycleSummary& s = r.cycleSummaries[c];
+    ASSERT_TRUE(s.liner && s.liner->fmep_Pa);
+    EXPECT_NEAR(*s.liner->fmep_Pa, r.stats.cycleFmep_Pa[c], 1e-12 * r.stats.cycleFmep_Pa[c]);
+    double largest = 0.0;
+    for (std::size_t k = 360 * c; k < 360 * (c + 1); ++k)
+      largest = std::max(largest, std::abs(csv.rows[k][uLat]));
+    EXPECT_NEAR(s.maxAbsLateralDisplacement_m * 1e6, largest, 1e-9);
+    fmep_kPa.push_back(r.stats.cycleFmep_Pa[c] / 1e3);
+    maxULat_um.push_back(largest);
+  }
+  EXPECT_EQ(*r.cycleSummaries.back().liner->fmep_Pa, *r.summary.liner->fmep_Pa);
+  EXPECT_NE(fmep_kPa[0], fmep_kPa[1]);  // the start-up cycle differs: the check can fail
+
+  const auto json = nlohmann::json::parse(readFile(out / "summary.json"))["results"];
+  ASSERT_FALSE(json["converged"].get<bool>());
+  ASSERT_TRUE(json.contains("last_cycles")) << json.dump();
+  const auto& last = json["last_cycles"];
+  EXPECT_EQ(last["cycles"], nlohmann::json::array({1, 2}));
+  const auto expectMeanAndSpread = [&](const std::string& key, const std::vector<double>& v,
+                                       double tol) {
+    EXPECT_NEAR(last["mean"][key].get<double>(), 0.5 * (v[0] + v[1]), tol) << key;
+    EXPECT_NEAR(last["spread"][key].get<double>(), std::abs(v[0] - v[1]), tol) << key;
+  };
+  expectMeanAndSpread("fmep_kPa", fmep_kPa, 1e-12);
+  expectMeanAndSpread("max_abs_u_lat_um", maxULat_um, 1e-9);
+  // Every figure of the last cycle is averaged, none of the deck's own (the same in each).
+  for (const auto& [key, value] : last["mean"].items())
+    EXPECT_TRUE(json.contains(key)) << key;
+  EXPECT_FALSE(last["mean"].contains("imep_kPa"));
+  EXPECT_TRUE(last["mean"].contains("min_h_over_sigma_thrust"));
+  EXPECT_TRUE(last["mean"].contains("slap_energy_max_mJ"));
+
+  // To periodic steady state, not reached (a tolerance no run meets): the discarded cycles are
+  // summarised as well, the spread over the last three.
+  o = coarse;
+  o.insert(o.end(), {"simulation.cycles=4", "simulation.until_periodic=true",
+                     "simulation.periodic_fmep_tolerance=1e-12"});
+  const fs::path out4 = dir_ / "four";
+  const io::RunOutcome r4 = io::runDeck(io::loadEngineDeck(deck(), o), out4.string());
+  ASSERT_EQ(r4.cycleSummaries.size(), 4u);
+  for (std::size_t c = 0; c < 4; ++c)
+    EXPECT_NEAR(*r4.cycleSummaries[c].liner->fmep_Pa, r4.stats.cycleFmep_Pa[c],
+                1e-12 * r4.stats.cycleFmep_Pa[c]);
+  const auto json4 = nlohmann::json::parse(readFile(out4 / "summary.json"))["results"];
+  EXPECT_EQ(json4["last_cycles"]["cycles"], nlohmann::json::array({2, 3, 4}));
+  const double mean4 =
+      (r4.stats.cycleFmep_Pa[1] + r4.stats.cycleFmep_Pa[2] + r4.stats.cycleFmep_Pa[3]) / 3e3;
+  EXPECT_NEAR(json4["last_cycles"]["mean"]["fmep_kPa"].get<double>(), mean4, 1e-12);
 }

@@ -52,6 +52,9 @@ struct CycleSummary {
     std::optional<double> minGapOverSigmaAntiThrust;            ///< smallest h/sigma, anti-thrust
     std::optional<double> minGapOverSigmaAntiThrustAngle_deg;   ///< its crank angle [deg]
     std::optional<double> frictionWork_J;                       ///< dissipated over the cycle, >= 0
+    /// Friction mean effective pressure: frictionWork_J / displacement_m3 [Pa] (the same
+    /// figure as SimulationStats::cycleFmep_Pa of the cycle).
+    std::optional<double> fmep_Pa;
     /// The part of it dissipated by asperity (boundary) friction, from the lubricated
     /// liner's integrated state (plugin::LinerElement::getAsperityFrictionWork_J).
     std::optional<double> asperityFrictionWork_J;
@@ -97,11 +100,15 @@ struct CycleSummary {
 /// The deck-level figures (imep, displacement, stroke, peak pressure) of a summary.
 void addDeckFigures(const EngineDeck& deck, CycleSummary& summary);
 
-/// Accumulates the figures of the last cycle of a run of `model` with `settings`: at
-/// every beginCycle() it starts again, so after endRun() it holds the last cycle's (also
-/// in a run to periodic steady state, whose earlier cycles are discarded). The row that
-/// closes the last cycle (crank angle start + 720 * cycles) is not part of the means or
-/// extremes, as the first row of the cycle already stands for that angle.
+/// Accumulates the figures of every cycle of a run of `model` with `settings`: at every
+/// beginCycle() it starts again, so after endRun() getSummary() holds the last cycle's (also
+/// in a run to periodic steady state, whose earlier cycles are discarded from the files), and
+/// getCycleSummaries() every completed cycle's, in order. The row that closes a cycle
+/// (crank angle start + 720 * (cycle + 1)) is not part of the means or extremes, as the
+/// first row of the cycle already stands for that angle; it gives the cycle's end values
+/// (friction work, slap events). Where the simulation hands that row over as the first row
+/// of the next cycle (CycleSimulation: beginCycle() comes first), the sink closes the
+/// previous cycle with it before starting the next.
 class CycleSummarySink final : public plugin::RowSink {
  public:
   /// `model` must outlive the sink; its liner element (if any) is looked up at beginRun()
@@ -116,6 +123,9 @@ class CycleSummarySink final : public plugin::RowSink {
 
   /// Valid after endRun().
   const CycleSummary& getSummary() const { return summary_; }
+  /// Every completed cycle's figures, the first cycle first; the last is getSummary().
+  /// Valid after endRun().
+  const std::vector<CycleSummary>& getCycleSummaries() const { return cycles_; }
   /// Rows kept (consumed since the start or the last discardRows()).
   long getRowCount() const { return rows_; }
 
@@ -125,6 +135,10 @@ class CycleSummarySink final : public plugin::RowSink {
     double value_m = 0.0, angle_deg = 0.0;
   };
   void resetCycle();
+  /// Adds one row at index k of the current cycle (k = perCycle_ closes it).
+  void accumulate(const SimTK::State& state, const std::vector<double>& values, long k);
+  /// The figures of the cycle accumulated so far (its closing row seen).
+  CycleSummary finishCycle() const;
 
   const EngineDeck& deck_;
   const plugin::PistonAssemblyModel& model_;
@@ -137,7 +151,10 @@ class CycleSummarySink final : public plugin::RowSink {
   long perCycle_;
   long rows_ = 0;
   long rowInCycle_ = -1;  ///< -1 before the first beginCycle()
+  /// beginCycle() came after every row of a cycle but its closing one: the next row closes it.
+  bool closeWithNextRow_ = false;
   CycleSummary summary_;
+  std::vector<CycleSummary> cycles_;
   /// Running figures of the current cycle.
   double torque_ = 0.0, drive_ = 0.0, speed_ = 0.0;
   double conrodMax_ = 0.0, conrodMin_ = 0.0;

@@ -26,6 +26,9 @@ namespace pistondyn::io {
 /// What a run gives back besides its files.
 struct RunOutcome {
   CycleSummary summary;           ///< the last 720 deg cycle
+  /// Every simulated cycle's figures, the first cycle first (the last is `summary`); in a run
+  /// to periodic steady state also the cycles whose rows were discarded.
+  std::vector<CycleSummary> cycleSummaries;
   plugin::SimulationStats stats;  ///< steps, cycles, fmep per cycle, wall time
   long rows = 0;                  ///< rows simulated (and written to cycle.csv)
   /// The liner oil's balance over the last cycle (a liner element with a LinerOilSource).

@@ -121,7 +121,7 @@ TEST_F(SkirtBadInput, BoreDistortionAndTemperatureTables) {
 }
 
 TEST_F(SkirtBadInput, OilSupplyTables) {
-  editDeck("    film_um: 0.5", "    film_file: supply.csv\n    #");
+  editDeck("    film_um: 1.0", "    film_file: supply.csv\n    #");
   const std::string key = at("film_file", "liner.oil_supply.film_file");
   writeFile("supply.csv", "crank_angle_deg,film_um\n0,0.5\n360,0\n");
   expectRejected("", {key, table("supply.csv", 3) + "film_um 0 um must be positive"});
@@ -165,7 +165,7 @@ TEST_F(SkirtBadInput, ValuesAndCrossChecks) {
   expectRejected("--set liner.oil_supply.fully_flooded=true",
                  {at("film_um", "liner.oil_supply.film_um"),
                   "give exactly one of fully_flooded: true, film_um, film_file"});
-  editDeck("  oil_supply:\n    film_um: 0.5", "  oil_supply:\n    fully_flooded: false");
+  editDeck("    film_um: 1.0", "    fully_flooded: false");
   expectRejected("", {"liner.oil_supply: missing: say how oil reaches the skirt"});
   SetUp();
   // The oil.
@@ -239,7 +239,14 @@ TEST_F(SkirtScratchDeck, AShortRunWritesEverySkirtFigure) {
   EXPECT_GT(r["film_solves"].get<long>(), 0);
   // A healthy run: every film solve also returned its squeeze derivatives.
   EXPECT_EQ(r["film_derivative_failures"].get<long>(), 0);
-  EXPECT_EQ(r["hot_clearance_um"].get<double>(), 40.0);  // no thermal growth: c0 at -6 mm
+  // The deck's thermal section: the Al-Si skirt (20.5e-6/K, 120-140 degC on the skirt) grows
+  // more than the bore (17e-6/K, 100-130 degC): hot below the cold 40 um, and at most the
+  // clearance on the profile's zero-drop line (-6 mm above the pin, 126.7 degC) against the
+  // hottest bore (130 degC): 40 - 37.21 mm x (20.5e-6 x 106.7 - 17e-6 x 110) = 28.2 um.
+  const double hot_um = r["hot_clearance_um"].get<double>();
+  EXPECT_GT(hot_um, 0.0);
+  EXPECT_LT(hot_um, 40.0 - 37.21e3 * (20.5e-6 * (120.0 + 10.0 * 12.0 / 18.0 - 20.0) -
+                                      17e-6 * (130.0 - 20.0)));
   // No null anywhere (nlohmann writes NaN and infinities as null) but the one documented:
   // cycles_to_converge of a run that did not converge.
   nlohmann::json withoutCount = summary;
@@ -361,15 +368,19 @@ TEST_F(SkirtScratchDeck, AShortRunWritesEverySkirtFigure) {
       EXPECT_EQ(size.height, f.rfind("field_map", 0) == 0 ? 1250 : 830) << f;
     }
   }
-  // The report: every figure embedded, the exaggeration a round factor drawing the 40 um
-  // hot clearance as about 8 % of the 74.5 mm bore (0.08 x 74.5 / 0.040 = 149 -> 100).
+  // The report: every figure embedded, the exaggeration a round factor (1, 2 or 5 x 10^n,
+  // rounded down) drawing the hot clearance as about 8 % of the 74.5 mm bore (9.4 um hot:
+  // 0.08 x 74.5 / 0.0094 = 632 -> 500).
   const std::string report = std::string(PISTONDYN_EXE) + " report " + out.string() + " > " +
                              (dir_ / "report.txt").string() + " 2>&1";
   ASSERT_EQ(std::system(report.c_str()), 0) << readFile(dir_ / "report.txt");
   const std::string html = readFile(out / "report.html");
   checkReportEmbedsThePlots(html, out / "plots");
-  EXPECT_NE(html.find("exaggerated × 100</strong>"), std::string::npos);
-  EXPECT_NE(html.find("{\"factor\":100,"), std::string::npos);
+  const double wanted = 0.08 * 74.5 / (1e-3 * hot_um);
+  const int factor = wanted >= 500.0 && wanted < 1000.0 ? 500 : wanted >= 200.0 ? 200 : 100;
+  EXPECT_NE(html.find("exaggerated × " + std::to_string(factor) + "</strong>"), std::string::npos)
+      << hot_um;
+  EXPECT_NE(html.find("{\"factor\":" + std::to_string(factor) + ","), std::string::npos);
   // Issue 37: the headline names the skirt's figures in engineering units (h/σ with its
   // crank angle, films in µm, tilt in mrad, slap in mJ, fmep in kPa), with no number in
   // exponent form; the field map's frames are embedded and its script draws them.

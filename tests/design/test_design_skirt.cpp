@@ -48,8 +48,10 @@ class SkirtOptimize : public SkirtScratchDeck {
   SkirtOptimum runSeed(int seed) const {
     const fs::path dir = dir_ / ("seed" + std::to_string(seed));
     fs::create_directories(dir);
-    for (const std::string& f : {std::string("engine.yaml"), kTable, kProfileTable})
-      fs::copy_file(dir_ / f, dir / f);
+    for (const auto& entry : fs::directory_iterator(dir_)) {
+      if (entry.is_regular_file())
+        fs::copy_file(entry.path(), dir / entry.path().filename());
+    }
     std::ofstream(dir / "opt.yaml") << "base_deck: engine.yaml\nset:\n" + fastSkirtSet() +
                                            "variables:\n"
                                            "  liner.cold_radial_clearance_um: [25, 60]\n"

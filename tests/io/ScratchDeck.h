@@ -79,9 +79,12 @@ class ScratchDeck : public ::testing::Test {
             ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
+    // The deck and every table beside it (pressure, skirt profile, temperatures).
     fs::copy_file(kEngineDir + "/engine.yaml", dir_ / "engine.yaml");
-    fs::copy_file(kEngineDir + "/" + kTable, dir_ / kTable);
-    fs::copy_file(kEngineDir + "/" + kProfileTable, dir_ / kProfileTable);
+    for (const auto& entry : fs::directory_iterator(kEngineDir)) {
+      if (entry.path().extension() == ".csv")
+        fs::copy_file(entry.path(), dir_ / entry.path().filename());
+    }
     if (!keepsTheExampleLiner()) {
       std::string text = readFile(deck());
       text = replaceSection(text, "liner", kIdealGuideLiner);

@@ -78,8 +78,17 @@ TEST(SkirtDeck, TheGasolineExampleSectionBecomesTheElementsParametersInSI) {
   EXPECT_EQ(p.gap.skirtProfile.ovality.diametralOvality_m, 300.0 * 1e-6);
   EXPECT_EQ(p.gap.skirtProfile.ovality.cos4Coefficient, 0.0);
   EXPECT_TRUE(p.gap.linerShape.orders.empty());  // ideal cylinder
-  EXPECT_EQ(p.gap.pistonThermal.height_m.size(), 0);
-  EXPECT_EQ(p.gap.linerThermal.depth_m.size(), 0);
+  // The hot shapes: the tables beside the deck (their rows as written) and the coefficients.
+  EXPECT_EQ(p.gap.pistonThermal.expansionCoefficient_perK, 20.5e-6);
+  ASSERT_EQ(p.gap.pistonThermal.height_m.size(), 5);
+  EXPECT_EQ(p.gap.pistonThermal.height_m[0], -18.0 * 1e-3);
+  EXPECT_EQ(p.gap.pistonThermal.temperature_degC[0], 120.0);
+  EXPECT_EQ(p.gap.pistonThermal.height_m[4], 28.0 * 1e-3);
+  EXPECT_EQ(p.gap.pistonThermal.temperature_degC[4], 220.0);
+  EXPECT_EQ(p.gap.linerThermal.expansionCoefficient_perK, 17.0e-6);
+  ASSERT_EQ(p.gap.linerThermal.depth_m.size(), 3);
+  EXPECT_EQ(p.gap.linerThermal.depth_m[1], 40.0 * 1e-3);
+  EXPECT_EQ(p.gap.linerThermal.temperature_degC[1], 110.0);
   // Oil: the grade's data sheet, at 105 degC.
   const auto grade =
       pistondyn::lubrication::makeSaeGradeOilSpec(pistondyn::lubrication::SaeGrade::k0W30);
@@ -87,8 +96,8 @@ TEST(SkirtDeck, TheGasolineExampleSectionBecomesTheElementsParametersInSI) {
   EXPECT_EQ(p.oil.kinematicViscosity1_m2ps, grade.kinematicViscosity1_m2ps);
   EXPECT_EQ(p.oil.kinematicViscosity2_m2ps, grade.kinematicViscosity2_m2ps);
   EXPECT_EQ(p.oilTemperature_degC, 105.0);
-  // Partially flooded: a constant 0.5 um supply film.
-  EXPECT_EQ(p.supplyFilm.constant_m, 0.5 * 1e-6);
+  // Partially flooded: a constant 1 um supply film.
+  EXPECT_EQ(p.supplyFilm.constant_m, 1.0 * 1e-6);
   EXPECT_TRUE(p.supplyFilm.crankAngle_deg.empty());
   // One roughness pair for both the flow factors and the contact.
   EXPECT_EQ(p.roughness.rq1_m, 0.4 * 1e-6);
@@ -127,9 +136,12 @@ TEST(SkirtDeck, TheGasolineExampleSectionBecomesTheElementsParametersInSI) {
   EXPECT_EQ(s.stepperOrder, 2);
   EXPECT_EQ(s.periodicFmepTolerance, 0.005);
   EXPECT_EQ(s.periodicPoseTolerance_m, 0.2 * 1e-6);
-  // The hot running clearance without thermal growth is the cold one at the profile's
-  // zero-drop line (inside the skirt: -6 mm).
-  EXPECT_NEAR(*b.skirt().getHotRunningClearance_m(), 40e-6, 1e-15);
+  // The hot running clearance: below the cold one (the skirt grows more than the bore); without
+  // thermal growth it is the cold one at the profile's zero-drop line (inside the skirt: -6 mm).
+  EXPECT_LT(*b.skirt().getHotRunningClearance_m(), 40e-6);
+  const Built cold = build(kEngineDir + "/engine.yaml", {"liner.thermal.piston_expansion_per_K=0",
+                                    "liner.thermal.liner_expansion_per_K=0"});
+  EXPECT_NEAR(*cold.skirt().getHotRunningClearance_m(), 40e-6, 1e-15);
 }
 
 TEST(SkirtDeck, TheBriggsAndStrattonExampleHasTheThesisClearance) {

@@ -373,8 +373,9 @@ TEST_F(SkirtSweepDeckTest, TablesTheCasesReadArePartOfTheFingerprint) {
                           "flat_profile.csv]\n";
   const SweepPlan a = loadSweepDeck(sweep.string());
   ASSERT_EQ(a.cases.size(), 2u);
-  // The pressure table and both profiles, each by the SHA-256 of its bytes.
-  ASSERT_EQ(a.inputFiles.size(), 3u);
+  // The pressure table, the two temperature tables and both profiles, each by the SHA-256 of
+  // its bytes.
+  ASSERT_EQ(a.inputFiles.size(), 5u);
   std::set<std::string> hashes;
   for (const auto& f : a.inputFiles) {
     EXPECT_EQ(f.sha256, *pistondyn::io::detail::sha256HexOfFile(f.path)) << f.path;

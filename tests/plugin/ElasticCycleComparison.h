@@ -21,12 +21,16 @@ struct CycleOutcome {
 };
 
 // The deck's parameters on 32 x 24 with `extra` overrides; `elastic` adds the FE skirt,
-// `elasticLiner` (with elastic) the FE liner in series with it.
+// `elasticLiner` (with elastic) the FE liner in series with it. The cold shapes, as in the
+// thesis' rigid/elastic study (the deck's expansion coefficients 0: SkirtTestDeck.h), and the
+// deck's supply unless `extra` sets another.
 inline plugin::LubricatedSkirtParameters comparisonParameters(
     bool elastic, const std::vector<std::string>& extra = {}, bool elasticLiner = false) {
   std::vector<std::string> overrides = {"liner.grid.nodes_circumferential=32",
                                         "liner.grid.nodes_axial=24", "liner.film.tolerance=1e-11",
                                         "liner.parallel_sides=false",
+                                        "liner.thermal.piston_expansion_per_K=0",
+                                        "liner.thermal.liner_expansion_per_K=0",
                                         // both cases on the faces the elastic skirt needs
                                         "liner.film.faces=nodal_mean"};
   overrides.insert(overrides.end(), extra.begin(), extra.end());

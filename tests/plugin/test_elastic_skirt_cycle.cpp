@@ -26,8 +26,12 @@ using namespace pistondyn;
 namespace ts = pistondyn::testsupport;
 
 TEST(ElasticSkirtCycle, WholeCycleRunsAndFollowsTheThesisTrends) {
-  const plugin::LubricatedSkirtParameters rigidParameters = ts::comparisonParameters(false);
-  const plugin::LubricatedSkirtParameters elasticParameters = ts::comparisonParameters(true);
+  // The starved skirt of the thesis' study point as the deck had it: a 0.5 um supply.
+  const std::vector<std::string> starved = {"liner.oil_supply.film_um=0.5"};
+  const plugin::LubricatedSkirtParameters rigidParameters =
+      ts::comparisonParameters(false, starved);
+  const plugin::LubricatedSkirtParameters elasticParameters =
+      ts::comparisonParameters(true, starved);
   ASSERT_FALSE(rigidParameters.elasticSkirt.enabled);
   ASSERT_TRUE(elasticParameters.elasticSkirt.enabled);
   ASSERT_EQ(elasticParameters.elasticSkirt.coupling.scheme, skirt::ElasticCouplingScheme::Modal);

@@ -24,7 +24,7 @@ namespace {
 using namespace pistondyn;
 namespace ts = pistondyn::testsupport;
 
-constexpr double kStarvedSupply_m = 0.5e-6;  // the example deck's partially flooded skirt
+constexpr double kStarvedSupply_m = 0.5e-6;  // the starved extreme of the supply estimate
 
 struct Outcome {
   plugin::ResultTable lastCycle;

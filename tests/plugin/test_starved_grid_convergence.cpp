@@ -1,6 +1,6 @@
 // Grid convergence of the starved skirt (issue 10's criterion "doubling the film grid in both
 // directions changes fmep by < 2 %"), on the passenger-car example exactly as its deck
-// stands: partially flooded (0.5 um supply), mass-conserving film, the deck's stepper and
+// stands: partially flooded (its supply film), hot shapes, mass-conserving film, the deck's stepper and
 // grid (64 x 48 per side), three cycles from the deck's start, last cycle's fmep, against the
 // same run on the doubled grid (128 x 96). The grid is read from the deck, so the test
 // follows a change of the default.
@@ -36,9 +36,12 @@ struct Outcome {
 
 // The deck as it stands (serial sides: one core per run), on nPhi x nY (0: the deck's grid).
 plugin::LubricatedSkirtParameters deckParameters(int nPhi, int nY) {
-  plugin::LubricatedSkirtParameters p = ts::deckSkirtParameters(
-      nPhi > 0 ? ts::loadGasolineSkirtDeck(nPhi, nY)
-               : io::loadEngineDeck(ts::gasolineDeckPath(), {}));
+  std::vector<std::string> grid;
+  if (nPhi > 0)
+    grid = {"liner.grid.nodes_circumferential=" + std::to_string(nPhi),
+            "liner.grid.nodes_axial=" + std::to_string(nY)};
+  plugin::LubricatedSkirtParameters p =
+      ts::deckSkirtParameters(io::loadEngineDeck(ts::gasolineDeckPath(), grid));
   p.parallelSides = false;
   return p;
 }

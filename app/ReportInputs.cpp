@@ -225,6 +225,17 @@ std::vector<InputRow> makeInputRows(const std::string& summaryJson, const std::s
         overridden.push_back(o.get<std::string>().substr(0, o.get<std::string>().find('=')));
     }
   }
+  // A preview run appends its film-grid assignments to the overrides (io::loadEngineDeck with
+  // Fidelity::Preview): they are the preview's, not the user's --set.
+  std::vector<std::string> preview;
+  if (summary.value("fidelity", "") == "preview") {
+    for (const char* key : {"liner.grid.nodes_axial", "liner.grid.nodes_circumferential"}) {
+      if (!overridden.empty() && overridden.back() == key) {
+        preview.push_back(key);
+        overridden.pop_back();
+      }
+    }
+  }
   std::vector<std::pair<std::string, const Json*>> inputs;
   if (summary.contains("inputs") && summary["inputs"].is_object())
     flattenInputs(summary["inputs"], "", inputs);
@@ -252,7 +263,9 @@ std::vector<InputRow> makeInputRows(const std::string& summaryJson, const std::s
       row.unit = value->is_number_float() ? units::getDisplayUnitText(path) : "";
     }
     const auto comment = comments.find(row.key);
-    if (std::find(overridden.begin(), overridden.end(), row.key) != overridden.end()) {
+    if (std::find(preview.begin(), preview.end(), row.key) != preview.end()) {
+      row.source = "--fidelity preview";
+    } else if (std::find(overridden.begin(), overridden.end(), row.key) != overridden.end()) {
       row.source = "--set";
     } else if (comment != comments.end()) {
       row.note = comment->second;

@@ -218,8 +218,11 @@ struct TargetCase {
   bool withReference;  ///< also run the thesis' Gauss-Seidel (the ratio's row)
 };
 
+// The flooded and elastic rows on the cold shapes, as the table's figures were measured.
 const std::vector<std::string> kFlooded = {"liner.oil_supply.fully_flooded=true",
-                                           "liner.oil_supply.film_um=null"};
+                                           "liner.oil_supply.film_um=null",
+                                           "liner.thermal.piston_expansion_per_K=0",
+                                           "liner.thermal.liner_expansion_per_K=0"};
 const std::vector<std::string> kElastic = {
     "liner.elastic_skirt.compliance_file=../../fe/gasoline_1400_2000rpm/skirt_compliance.mtx",
     "liner.elastic_skirt.nodes_file=../../fe/gasoline_1400_2000rpm/skirt_nodes.csv",
@@ -237,7 +240,11 @@ std::vector<TargetCase> issue35Cases() {
                          "liner.grid.nodes_axial=24"}),
        0.15, false},
       {"rigid, flooded, mass-conserving, 64 x 48", kFlooded, 0.5, false},
-      {"the flagship deck as it stands (starved 0.5 um, 64 x 48)", {}, 5.0, true},
+      {"the flagship deck as it stands (hot shapes, 1 um supply, 64 x 48)", {}, 2.0, true},
+      {"the starved deck (cold shapes, 0.5 um supply, 64 x 48)",
+       {"liner.thermal.piston_expansion_per_K=0", "liner.thermal.liner_expansion_per_K=0",
+        "liner.oil_supply.film_um=0.5"},
+       5.0, false},
       {"elastic skirt, flooded, 64 x 48", joined(kFlooded, kElastic), 10.0, false},
   };
 }
@@ -277,6 +284,15 @@ int runTargets(const std::string& deckPath, const std::vector<std::string>& user
     std::printf("      %s after %d cycle(s), fmep %.4f kPa\n",
                 l.result.converged ? "periodic" : "NOT periodic", l.result.cyclesRun,
                 l.result.fmep_kPa);
+  }
+  for (const Line& l : lines) {
+    if (l.name.rfind("the flagship", 0) == 0) {
+      if (l.result.converged)
+        printTarget("cycles to converge, flagship", l.result.cyclesToConverge, 3.0, true, "");
+      else
+        std::printf("    %-34s NOT converged in %d cycles (target <= 3): MISSED\n",
+                    "cycles to converge, flagship", l.result.cyclesRun);
+    }
   }
   if (flagshipFast > 0.0 && flagshipReference > 0.0)
     printTarget("thesis' Gauss-Seidel / fast, flagship", flagshipReference / flagshipFast, 10.0,

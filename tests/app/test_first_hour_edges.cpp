@@ -442,6 +442,20 @@ TEST_F(FirstHourSkirtEdges, PreviewFidelityIsRecordedAndPrinted) {
   EXPECT_NE(readFile(dir_ / "stdout.txt").find("fidelity preview: film grid 16 x 12"),
             std::string::npos)
       << readFile(dir_ / "stdout.txt");
+  // The report's inputs table names the preview as the grid's source (the user's own grid
+  // assignment came before it), the user's other assignments as --set.
+  ASSERT_EQ(invokeInScratch("report " + out.string()).exitCode, 0);
+  const std::string html = readFile(out / "report.html");
+  const auto row = [&html](const std::string& key) {
+    const std::size_t at = html.find("<code>" + key + "</code>");
+    return at == std::string::npos ? std::string() : html.substr(at, html.find("</tr>", at) - at);
+  };
+  EXPECT_NE(row("liner.grid.nodes_axial").find("<td>--fidelity preview</td>"), std::string::npos)
+      << row("liner.grid.nodes_axial");
+  EXPECT_NE(row("liner.grid.nodes_circumferential").find("<td>--fidelity preview</td>"),
+            std::string::npos);
+  EXPECT_NE(row("simulation.cycles").find("<td>--set</td>"), std::string::npos)
+      << row("simulation.cycles");
   // An unknown fidelity is a bad command line.
   EXPECT_EQ(invokeInScratch("check " + deck() + " --fidelity coarse").exitCode, 2);
 }

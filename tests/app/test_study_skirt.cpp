@@ -69,13 +69,14 @@ TEST(StudySkirt, FloodingStudyComparesAsperityWorkAndDrawsEveryFigure) {
     EXPECT_NEAR(asperity / total, share, 0.01) << "trapezoid " << asperity / total;
     shares.push_back(share);
   }
-  // Thesis §4.1: asperity contact only when starved (case 1 fully flooded, case 2 0.5 um).
+  // Thesis §4.1: asperity contact only when starved (case 1 fully flooded, case 2 the deck's
+  // 1 um supply).
   EXPECT_LT(shares[0], 0.1 * shares[1]);
 
   // The comparison: both cases ok, the Markdown table with each minimum h/sigma's angle.
   const std::string md = readFile(dir / "comparison.md");
   EXPECT_NE(md.find("| 1 | true | null | ok |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| 2 | – | 0.5 | ok |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 2 | – | 1 | ok |"), std::string::npos) << md;
   EXPECT_NE(md.find("° |"), std::string::npos) << md;
   // Every figure, 900 + 8 x (legend "case 1: fully_flooded=true, film_um=null" + 8) px wide,
   // 110 + 360 px per panel high.

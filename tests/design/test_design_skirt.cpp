@@ -52,7 +52,7 @@ class SkirtOptimize : public SkirtScratchDeck {
       if (entry.is_regular_file())
         fs::copy_file(entry.path(), dir / entry.path().filename());
     }
-    std::ofstream(dir / "opt.yaml") << "base_deck: engine.yaml\nset:\n" + fastSkirtSet() +
+    std::ofstream(dir / "opt.yaml") << "base_deck: engine.yaml\nset:\n" + fastSkirtSet() + gasolineColdShapesSet() +
                                            "variables:\n"
                                            "  liner.cold_radial_clearance_um: [25, 60]\n"
                                            "  geometry.pin_offset_mm: [-1, 1]\n"

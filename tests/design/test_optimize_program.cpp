@@ -299,7 +299,7 @@ class ProfileProgram : public SkirtScratchDeck {
 };
 
 TEST_F(ProfileProgram, EveryDesignRunsTheTableOfItsOwnNumbers) {
-  std::ofstream(dir_ / "opt.yaml") << "base_deck: engine.yaml\nset:\n" + fastSkirtSet() +
+  std::ofstream(dir_ / "opt.yaml") << "base_deck: engine.yaml\nset:\n" + fastSkirtSet() + gasolineColdShapesSet() +
                                           "variables:\n"
                                           "  liner.cold_radial_clearance_um: [30, 50]\n"
                                           "profile:\n"

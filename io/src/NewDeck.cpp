@@ -248,7 +248,7 @@ void writeLiner(DeckText& d, const Engine& e) {
             "contact data. Run the same engine on the ideal guide with --set "
             "liner.model=ideal_guide --set simulation.integrator=rk_merson. No bore_distortion "
             "section: ideal cylindrical liner (EST, as the thesis' study). No thermal section: "
-            "the cold shapes as measured, hot clearance = cold (EST, as the examples).");
+            "the shapes and the clearance are the running (hot) ones (EST).");
   d.entry(2, "model", "lubricated_skirt");
   d.entry(2, "cold_radial_clearance_um", num(e.clearance.number), e.clearance.note);
   d.entry(2, "reference_temperature_degC", "20.0",
@@ -269,7 +269,9 @@ void writeLiner(DeckText& d, const Engine& e) {
   d.entry(4, "grade", e.oilGrade, e.oilNote + " (data-sheet oil, lubrication/OilGrades.h)");
   d.entry(4, "temperature_degC", num(e.oilTemperature.number), e.oilTemperature.note);
   d.section(2, "oil_supply");
-  d.entry(4, "film_um", "0.5", "EST: partially flooded, as both examples and the thesis' study");
+  d.entry(4, "film_um", "1.0",
+          "EST: partially flooded [T]: the film an oil-control ring leaves on a warm liner, "
+          "0.2-1.5 um, as the gasoline example");
   d.section(2, "roughness", "entered once: flow factors and asperity contact");
   d.entry(4, "liner_rq_um", "0.4", "EST: plateau-honed cast-iron bore, as both examples");
   d.entry(4, "skirt_rq_um", "0.6", "EST: machined skirt with its coating, as both examples");

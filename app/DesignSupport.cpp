@@ -88,15 +88,6 @@ int runDesignTask(const DesignOptions& options, DesignTask& task) {
   return task.run(executor);
 }
 
-std::string readWholeFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw std::runtime_error(path + ": cannot be read");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 void writeDesignDeck(const design::DesignStudy& study, const std::vector<double>& x,
                      const std::string& evaluationFolder, const std::string& target,
                      std::vector<std::string> header) {

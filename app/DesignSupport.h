@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "FileText.h"
 #include "pistondyn/design/DesignStudy.h"
 #include "pistondyn/design/Evaluations.h"
 
@@ -76,9 +77,6 @@ std::optional<int> reportPrepareError(const std::string& kindText,
 void writeDesignDeck(const design::DesignStudy& study, const std::vector<double>& x,
                      const std::string& evaluationFolder, const std::string& target,
                      std::vector<std::string> header);
-
-// A whole file's bytes; throws std::runtime_error naming it.
-std::string readWholeFile(const std::string& path);
 
 #ifdef PISTONDYN_WITH_MPI
 int runDesignTaskMpi(const DesignOptions& options, DesignTask& task);

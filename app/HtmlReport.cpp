@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "DisplayUnits.h"
+#include "FileText.h"
 #include "ReportInputs.h"
 #include "ReportSummary.h"
 #include "SvgChart.h"
@@ -23,15 +24,6 @@ namespace fs = std::filesystem;
 
 std::string escape(const std::string& s) {
   return escapeHtml(s);
-}
-
-std::string readBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw std::runtime_error(path + ": cannot read");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 // The results table: every figure of summary.json's `results` in its display unit.
@@ -442,7 +434,7 @@ std::string makeHtmlReport(const io::ResultFolder& f, const std::vector<std::str
   const std::string deck = f.getSummaryValue("deck_file");
   std::error_code ec;
   const bool deckReadable = !deck.empty() && fs::is_regular_file(deck, ec);
-  const std::string deckText = deckReadable ? readBytes(deck) : "";
+  const std::string deckText = deckReadable ? readWholeFile(deck) : "";
   if (!deckReadable) {
     html << "<p>The deck file <code>" << escape(deck)
          << "</code> is not readable from here: the inputs follow without their sources.</p>\n";
@@ -467,7 +459,7 @@ void writeEmbeddedFigures(std::ostream& html, const std::vector<std::string>& pn
   for (const auto& p : pngPaths) {
     const std::string name = fs::path(p).stem().string();
     html << "<figure><img alt=\"" << escape(name) << "\" src=\"data:image/png;base64,"
-         << encodeBase64(readBytes(p)) << "\"><figcaption>" << escape(name)
+         << encodeBase64(readWholeFile(p)) << "\"><figcaption>" << escape(name)
          << ".png</figcaption></figure>\n";
   }
 }

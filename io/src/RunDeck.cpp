@@ -231,6 +231,16 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
   if (!o.stats.converged && o.cycleSummaries.size() >= 2)
     r["last_cycles"] = lastCyclesSpread(o.cycleSummaries);
   r["rejected_steps"] = o.stats.rejectedSteps;         // linearly_implicit_bdf2's error test
+  // The integrator's work per cycle run (each list sums to the run's figure).
+  const auto counts = [&r](const char* key, const std::vector<long>& v) {
+    Json list = Json::array();
+    for (long x : v)
+      list.push_back(x);
+    r[key] = list;
+  };
+  counts("cycle_integrator_steps", o.stats.cycleIntegratorSteps);
+  counts("cycle_rejected_steps", o.stats.cycleRejectedSteps);
+  counts("cycle_force_evaluations", o.stats.cycleRealizations);
   // linearly_implicit_bdf2: steps retried because an element threw, e.g. a film solve or an
   // elastic coupling that did not converge on a trial step (never silent, issue 12).
   r["failed_evaluations"] = o.stats.failedEvaluations;

@@ -280,6 +280,20 @@ void landOnCrankAngle(Advancer& integ, const mbd::CrankTrain& ct, double thetaTa
       common::message("could not land on crank angle ", thetaTarget * 180.0 / M_PI, " deg"));
 }
 
+// The steps, rejected steps and realizations of the cycle that closed now: the integrator's
+// counts since the previous cycle closed (or since the start).
+void recordCycleCounts(const Advancer& integ, SimulationStats& stats) {
+  const auto sum = [](const std::vector<long>& v) {
+    long total = 0;
+    for (long x : v)
+      total += x;
+    return total;
+  };
+  stats.cycleIntegratorSteps.push_back(integ.getSteps() - sum(stats.cycleIntegratorSteps));
+  stats.cycleRejectedSteps.push_back(integ.getRejectedSteps() - sum(stats.cycleRejectedSteps));
+  stats.cycleRealizations.push_back(integ.getRealizations() - sum(stats.cycleRealizations));
+}
+
 }  // namespace
 
 std::vector<std::string> CycleSimulation::getColumns() const {
@@ -424,6 +438,7 @@ void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& pr
         // A cycle closes at this row.
         const int cycle = static_cast<int>(k / perCycle);
         stats_.cyclesRun = cycle;
+        recordCycleCounts(*integ, stats_);
         if (work)
           stats_.cycleFmep_Pa.push_back((*work - workAtCycleStart) / displacement_m3);
         if (settings_.untilPeriodic && cycle >= 2) {

@@ -619,6 +619,19 @@ TEST_F(SkirtScratchDeck, EveryCycleIsSummarisedAndANonPeriodicRunReportsItsLastC
     EXPECT_NEAR(last["spread"][key].get<double>(), std::abs(v[0] - v[1]), tol) << key;
   };
   expectMeanAndSpread("fmep_kPa", fmep_kPa, 1e-12);
+  // The integrator's work per cycle sums to the run's.
+  const auto whole = nlohmann::json::parse(readFile(out / "summary.json"));
+  const auto total = [&json](const char* key) {
+    long sum = 0;
+    for (const auto& v : json[key])
+      sum += v.get<long>();
+    EXPECT_EQ(json[key].size(), 2u) << key;
+    return sum;
+  };
+  EXPECT_EQ(total("cycle_integrator_steps"), whole["integrator_steps"].get<long>());
+  EXPECT_EQ(total("cycle_rejected_steps"), json["rejected_steps"].get<long>());
+  EXPECT_EQ(total("cycle_force_evaluations"), r.stats.realizations);
+  EXPECT_GT(json["cycle_integrator_steps"][1].get<long>(), 720 / 0.25 - 1);  // the 0.25 deg cap
   expectMeanAndSpread("max_abs_u_lat_um", maxULat_um, 1e-9);
   // Every figure of the last cycle is averaged, none of the deck's own (the same in each).
   for (const auto& [key, value] : last["mean"].items())

@@ -154,6 +154,12 @@ struct SimulationStats {
   bool converged = false;            ///< untilPeriodic: the last two cycles agreed
   int cyclesToConverge = 0;          ///< untilPeriodic: cycles run when they did (0 if not)
   std::vector<double> cycleFmep_Pa;  ///< fmep of every cycle run, if the liner integrates it
+  /// Per cycle run, in order (each sums to its whole-run figure above over the cycles; the
+  /// steps before the first cycle's first row, none with CycleSimulation's start, belong to
+  /// the first): accepted steps, rejected steps, force evaluations (realizations).
+  std::vector<long> cycleIntegratorSteps;
+  std::vector<long> cycleRejectedSteps;      ///< see cycleIntegratorSteps
+  std::vector<long> cycleRealizations;       ///< see cycleIntegratorSteps
 };
 
 /// Runs a model over whole cycles (the documentation of CycleSimulation.h).

@@ -12,13 +12,12 @@
 #include <fstream>
 #include <memory>
 #include <set>
-#include <sstream>
-#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "FullSkirtDeck.h"
+#include "NumericCsv.h"
 #include "ScratchDeck.h"
 #include "pistondyn/io/DeckError.h"
 #include "pistondyn/io/EngineDeck.h"
@@ -535,44 +534,6 @@ TEST_F(SkirtScratchDeck, LinerTransportWritesTheFilmAlongTheBoreAndClosesItsBala
   EXPECT_GT(ringRows, 0);
 }
 
-namespace {
-
-// The rows of cycle.csv (comment lines skipped) as numbers, and the header's column names.
-struct CsvRows {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
-  std::size_t column(const std::string& name) const {
-    const auto it = std::find(header.begin(), header.end(), name);
-    if (it == header.end())
-      throw std::runtime_error("no column " + name);
-    return static_cast<std::size_t>(it - header.begin());
-  }
-};
-
-CsvRows readCycleCsv(const fs::path& file) {
-  CsvRows csv;
-  std::ifstream in(file);
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#')
-      continue;
-    std::vector<std::string> fields;
-    std::stringstream ss(line);
-    for (std::string f; std::getline(ss, f, ',');)
-      fields.push_back(f);
-    if (csv.header.empty()) {
-      csv.header = fields;
-      continue;
-    }
-    std::vector<double> row;
-    for (const std::string& f : fields)
-      row.push_back(std::stod(f));
-    csv.rows.push_back(row);
-  }
-  return csv;
-}
-
-}  // namespace
-
 // Every cycle of a run is summarised, not only the last: each cycle's fmep equals the one the
 // simulation integrated for that cycle (CycleSimulation, its own code), each cycle's largest
 // |u_lat| the largest of that cycle's rows in cycle.csv (a run not to periodic steady state
@@ -590,9 +551,9 @@ TEST_F(SkirtScratchDeck, EveryCycleIsSummarisedAndANonPeriodicRunReportsItsLastC
   const io::RunOutcome r = io::runDeck(io::loadEngineDeck(deck(), o), out.string());
   ASSERT_EQ(r.cycleSummaries.size(), 2u);
   ASSERT_EQ(r.stats.cycleFmep_Pa.size(), 2u);
-  const CsvRows csv = readCycleCsv(out / "cycle.csv");
+  const pistondyn::test::NumericCsv csv = pistondyn::test::readNumericCsv(out / "cycle.csv");
   ASSERT_EQ(csv.rows.size(), 2u * 360u + 1u);
-  const std::size_t uLat = csv.column("u_lat_um");
+  const std::size_t uLat = csv.col("u_lat_um");
   std::vector<double> fmep_kPa, maxULat_um;
   for (std::size_t c = 0; c < 2; ++c) {
     const io::CycleSummary& s = r.cycleSummaries[c];

@@ -108,7 +108,8 @@ void CycleSummarySink::consumeRow(const SimTK::State& state, const std::vector<d
 }
 
 void CycleSummarySink::accumulate(const SimTK::State& state, const std::vector<double>& r,
-                                  long k) {  if (k == 0 || k == perCycle_) {
+                                  long k) {
+  if (k == 0 || k == perCycle_) {
     (k == 0 ? timeAtCycleStart_s_ : timeAtCycleEnd_s_) = state.getTime();
     if (liner_ != nullptr)
       (k == 0 ? workAtCycleStart_J_ : workAtCycleEnd_J_) = liner_->getFrictionWork_J(state);

@@ -90,9 +90,7 @@ void checkSummaryShape(const Json& j, const std::string& file) {
     for (auto it = group->begin(); it != group->end(); ++it) {
       const Json& v = it.value();
       const std::string key = path + "." + it.key();
-      if (v.is_object() && path == "results")
-        groups.emplace_back(key, &v);
-      else if (v.is_object() && path == "results.last_cycles")
+      if (v.is_object() && (path == "results" || path == "results.last_cycles"))
         groups.emplace_back(key, &v);
       else if (it.key() == "note" ? !v.is_string()
                                   : !(isNumberOrNull(v) || v.is_boolean() || isNumberList(v)))

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 
@@ -284,10 +285,7 @@ void landOnCrankAngle(Advancer& integ, const mbd::CrankTrain& ct, double thetaTa
 // counts since the previous cycle closed (or since the start).
 void recordCycleCounts(const Advancer& integ, SimulationStats& stats) {
   const auto sum = [](const std::vector<long>& v) {
-    long total = 0;
-    for (long x : v)
-      total += x;
-    return total;
+    return std::accumulate(v.begin(), v.end(), 0L);
   };
   stats.cycleIntegratorSteps.push_back(integ.getSteps() - sum(stats.cycleIntegratorSteps));
   stats.cycleRejectedSteps.push_back(integ.getRejectedSteps() - sum(stats.cycleRejectedSteps));
@@ -438,9 +436,9 @@ void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& pr
         // A cycle closes at this row.
         const int cycle = static_cast<int>(k / perCycle);
         stats_.cyclesRun = cycle;
-        recordCycleCounts(*integ, stats_);
         if (work)
           stats_.cycleFmep_Pa.push_back((*work - workAtCycleStart) / displacement_m3);
+        recordCycleCounts(*integ, stats_);
         if (settings_.untilPeriodic && cycle >= 2) {
           double poseChange = 0.0;
           for (std::size_t i = 0; i < currentPose.size(); ++i)

@@ -69,7 +69,7 @@ void printLinerFigures(const io::CycleSummary::LinerFigures& f, const io::CycleS
 // The range (smallest .. largest) of the main figures over the last cycles of a run that did
 // not become periodic (summary.json: results.last_cycles).
 void printLastCyclesRange(const std::vector<io::CycleSummary>& cycles) {
-  const std::size_t n = std::min<std::size_t>(3, cycles.size());
+  const std::size_t n = std::min(io::kLastCyclesSummarised, cycles.size());
   if (n < 2)
     return;
   using Figure = std::function<std::optional<double>(const io::CycleSummary&)>;

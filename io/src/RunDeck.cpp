@@ -129,13 +129,10 @@ Json cycleFigures(const CycleSummary& s) {
   return r;
 }
 
-// How many of the last cycles a run that did not become periodic is summarised over.
-constexpr std::size_t kSpreadCycles = 3;
-
 // The mean and the spread (largest minus smallest) of every figure of cycleFigures() over the
-// last kSpreadCycles cycles (fewer if fewer ran), and which cycles they are (1 = the first).
+// last kLastCyclesSummarised cycles (fewer if fewer ran), and which cycles they are (1 = the first).
 Json lastCyclesSpread(const std::vector<CycleSummary>& cycles) {
-  const std::size_t n = std::min(kSpreadCycles, cycles.size());
+  const std::size_t n = std::min(kLastCyclesSummarised, cycles.size());
   std::vector<Json> figures;
   Json numbers = Json::array();
   for (std::size_t i = cycles.size() - n; i < cycles.size(); ++i) {
@@ -148,7 +145,8 @@ Json lastCyclesSpread(const std::vector<CycleSummary>& cycles) {
   out["cycles"] = numbers;
   Json& mean = out["mean"];
   Json& spread = out["spread"];
-  for (const auto& [key, last] : figures.back().items()) {
+  for (const auto& item : figures.back().items()) {
+    const std::string& key = item.key();
     double sum = 0.0, lo = INFINITY, hi = -INFINITY;
     bool everyCycle = true;
     for (const Json& f : figures) {

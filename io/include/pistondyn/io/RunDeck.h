@@ -13,6 +13,7 @@
 ///   const io::RunOutcome o = io::runDeck(deck, "results/3000rpm");
 ///   std::printf("mean crank torque %.2f N m\n", o.summary.meanCrankTorque_Nm);
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +23,10 @@
 #include "pistondyn/plugin/CycleSimulation.h"
 
 namespace pistondyn::io {
+
+/// How many of its last cycles a run that did not become periodic is summarised over
+/// (summary.json results.last_cycles, and the range `pistondyn run` prints).
+inline constexpr std::size_t kLastCyclesSummarised = 3;
 
 /// What a run gives back besides its files.
 struct RunOutcome {

@@ -71,9 +71,19 @@ std::string quoted(const std::string& s) {
   return out + "\"";
 }
 
+std::string quotedLines(const std::vector<std::string>& lines) {
+  std::string text;
+  for (const std::string& line : lines) {
+    if (line.empty())
+      continue;
+    const std::string q = quoted(line);
+    text += (text.empty() ? "" : "\\n") + q.substr(1, q.size() - 2);
+  }
+  return "\"" + text + "\"";
+}
+
 std::string twoLines(const std::string& first, const std::string& second) {
-  const std::string a = quoted(first), b = quoted(second);
-  return second.empty() ? a : a.substr(0, a.size() - 1) + "\\n" + b.substr(1);
+  return quotedLines({first, second});
 }
 
 std::string number(double v) {

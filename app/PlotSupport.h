@@ -38,8 +38,10 @@ std::optional<Column> findOutput(const io::CsvTable& t, const std::string& name,
                                  const std::string& unit);
 bool hasOutput(const io::CsvTable& t, const std::string& name);
 
-// A gnuplot string literal; one of two lines (the second may be empty).
+// A gnuplot string literal; one of several lines (empty lines are left out: twoLines' second
+// may be empty).
 std::string quoted(const std::string& s);
+std::string quotedLines(const std::vector<std::string>& lines);
 std::string twoLines(const std::string& first, const std::string& second);
 // The shortest text that reads back to the same double.
 std::string number(double v);

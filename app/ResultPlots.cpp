@@ -448,23 +448,6 @@ std::vector<MapPanelField> writeMapData(const std::vector<io::RegionFile>& maps,
   return fields;
 }
 
-// The maps' title: what the axes are, the fields that are zero throughout on a line of their
-// own (on one line with the rest they ran past the page's width), the engine; as a gnuplot
-// double-quoted string.
-std::string mapsTitle(const std::string& zeroFields, const std::string& engine) {
-  std::string text;
-  for (const std::string& line :
-       {std::string("Over the last cycle, crank angle across (0° and 720° firing TDC, 360° "
-                    "gas-exchange TDC), height up"),
-        zeroFields.empty() ? std::string() : "zero throughout: " + zeroFields, engine}) {
-    if (line.empty())
-      continue;
-    const std::string q = quoted(line);
-    text += (text.empty() ? "" : "\\n") + q.substr(1, q.size() - 2);
-  }
-  return "\"" + text + "\"";
-}
-
 // cycle_maps.png: one column per region, one row per field that is not zero everywhere, crank
 // angle across and height up; one colour scale per field, shared by the regions. Returns
 // false when there is nothing to draw.
@@ -494,7 +477,12 @@ bool writeCycleMaps(const io::ResultFolder& folder, const fs::path& work,
      << "set xrange [0:720]\nset yrange [*:*]\nset autoscale yfix\n"
      << "set view map\nset pm3d map corners2color c1\nunset key\n"
      << "set multiplot layout " << fields.size() << "," << nRegions << " title "
-     << mapsTitle(zero, folder.getSummaryValue("inputs.engine.name"))
+     // The fields that are zero throughout on a line of their own (on one line with the rest
+     // they ran past the page's width).
+     << quotedLines({"Over the last cycle, crank angle across (0° and 720° firing TDC, 360° "
+                     "gas-exchange TDC), height up",
+                     zero.empty() ? std::string() : "zero throughout: " + zero,
+                     folder.getSummaryValue("inputs.engine.name")})
      << " font 'Sans,12'\n";
   for (MapPanelField& f : fields) {
     // Values beyond the colour scale are drawn in its end colours.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <optional>
 #include <regex>
 #include <sstream>
@@ -12,6 +13,7 @@
 
 #include "DisplayUnits.h"
 #include "pistondyn/io/DeckKeys.h"
+#include "pistondyn/io/EngineDeck.h"
 #include "pistondyn/io/LubricatedSkirtDeck.h"
 
 namespace pistondyn::app {
@@ -229,9 +231,10 @@ std::vector<InputRow> makeInputRows(const std::string& summaryJson, const std::s
   // Fidelity::Preview): they are the preview's, not the user's --set.
   std::vector<std::string> preview;
   if (summary.value("fidelity", "") == "preview") {
-    for (const char* key : {"liner.grid.nodes_axial", "liner.grid.nodes_circumferential"}) {
-      if (!overridden.empty() && overridden.back() == key) {
-        preview.push_back(key);
+    for (auto key = std::rbegin(io::kPreviewGridKeys); key != std::rend(io::kPreviewGridKeys);
+         ++key) {
+      if (!overridden.empty() && overridden.back() == *key) {
+        preview.push_back(*key);
         overridden.pop_back();
       }
     }

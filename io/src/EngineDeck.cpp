@@ -447,8 +447,8 @@ EngineDeck loadEngineDeck(const std::string& deckPath, const std::vector<std::st
   EngineDeck full = loadEngineDeck(deckPath, overrides, registry);
   if (fidelity == Fidelity::Full)
     return full;
-  const char* kPhi = "liner.grid.nodes_circumferential";
-  const char* kY = "liner.grid.nodes_axial";
+  const char* kPhi = kPreviewGridKeys[0];
+  const char* kY = kPreviewGridKeys[1];
   const std::optional<long> nPhi = findWholeInput(full, kPhi), nY = findWholeInput(full, kY);
   if (!nPhi || !nY) {
     full.fidelity = Fidelity::Preview;  // nothing to coarsen: the same run

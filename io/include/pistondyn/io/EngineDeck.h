@@ -28,6 +28,10 @@ enum class Fidelity { Full, Preview };
 /// "full" / "preview".
 const char* getFidelityName(Fidelity fidelity);
 
+/// The film-grid keys a preview assigns, in the order it appends them to the overrides.
+inline constexpr const char* kPreviewGridKeys[2] = {"liner.grid.nodes_circumferential",
+                                                    "liner.grid.nodes_axial"};
+
 /// An engine deck read, overridden and checked (loadEngineDeck): the crank train, cylinder
 /// pressure, liner model and simulation settings in SI, with the record of what was read.
 struct EngineDeck {

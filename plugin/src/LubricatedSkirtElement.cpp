@@ -11,6 +11,7 @@
 #include "pistondyn/common/Validation.h"
 #include "pistondyn/mbd_models/SliderCrank.h"
 #include "pistondyn/plugin/PistonPose.h"
+#include "pistondyn/skirt/SkirtSideHistoryRecord.h"
 
 #include "ForkJoinWorker.h"
 
@@ -165,6 +166,39 @@ void LubricatedSkirtElement::realizeTopology(SimTK::State&, ElementStateAllocato
   for (auto& history : history_)
     history.allocate(alloc, skirt::SkirtSideHistory{});  // empty: a full film at rest
   slap_.allocate(alloc, SlapTracker{});
+}
+
+std::vector<double> LubricatedSkirtElement::getWarmStartRecord(const SimTK::State& s) const {
+  std::vector<double> record;
+  for (int k : {kThrust, kAntiThrust})
+    skirt::appendSkirtSideRecord(history_[k].getValue(s), record);
+  return record;
+}
+
+void LubricatedSkirtElement::setWarmStartRecord(SimTK::State& s,
+                                                const std::vector<double>& record) const {
+  std::size_t offset = 0;
+  for (int k : {kThrust, kAntiThrust}) {
+    const char* side = k == kThrust ? "thrust" : "anti-thrust";
+    const auto nodes = static_cast<std::size_t>(workspace_->sides[k]->getGrid().nodeCount());
+    skirt::SkirtSideHistory h;
+    try {
+      h = skirt::readSkirtSideRecord(record, offset, nodes);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(getName() + ", " + side + " side: " + e.what());
+    }
+    if (!h.liner.empty() && !parameters_.linerOil) {
+      throw std::invalid_argument(getName() + ", " + side +
+                                  " side: the record holds liner oil, this skirt has no liner "
+                                  "oil film (liner.oil_supply.liner_transport)");
+    }
+    history_[k].setValue(s, h);
+  }
+  if (offset != record.size()) {
+    throw std::invalid_argument(getName() + ": the warm-start record holds " +
+                                std::to_string(record.size() - offset) +
+                                " numbers more than the two sides' histories");
+  }
 }
 
 const LubricatedSkirtResults& LubricatedSkirtElement::getResults(const SimTK::State& s) const {

@@ -180,6 +180,12 @@ struct SkirtSideSolver::Impl {
     if (!out.historyAdvanced)
       return;
     const double dt = c.stepSinceHistory_s;
+    if (dt <= 0.0 && !history.film.empty()) {
+      // The instant the history was taken at, solved again (a restart from an accepted state,
+      // a warm start): no time has passed for the film to change what it holds.
+      out.next = history;
+      return;
+    }
     if (linerOil) {
       const lubrication::FilmResult& f = results.film;
       const EdgeOutflows flows{&f.edgeOutflowYMin_m3ps, &f.edgeOutflowYMax_m3ps,

@@ -37,6 +37,7 @@
 #include "pistondyn/plugin/ElementState.h"
 
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -159,6 +160,22 @@ class ForceElement {
   /// not state: read when a realization computes the element's cache entry (a state already
   /// realized keeps what it has).
   virtual void setForceJacobianWanted(bool /*wanted*/) const {}
+
+  // ---- warm start (CycleSimulation.h, WarmStart) ------------------------------------------
+  /// What of the element's own state (discrete variables beyond the bodies' q and u) a later
+  /// run should start from, as numbers in a layout of the element's own, at a state realized
+  /// through Stage::Acceleration; empty (the default): nothing.
+  virtual std::vector<double> getWarmStartRecord(const SimTK::State& /*state*/) const {
+    return {};
+  }
+  /// Puts a record of getWarmStartRecord() into a run's initial state (before its integrator
+  /// starts). Throws std::invalid_argument when the record does not fit this element (another
+  /// grid); the default accepts only an empty record.
+  virtual void setWarmStartRecord(SimTK::State& /*state*/,
+                                  const std::vector<double>& record) const {
+    if (!record.empty())
+      throw std::invalid_argument("element '" + getName() + "' keeps no warm-start record");
+  }
 
   // ---- outputs -----------------------------------------------------------------------
   /// Declared once; the model records them when it builds the system.

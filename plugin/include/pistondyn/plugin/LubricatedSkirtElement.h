@@ -283,6 +283,12 @@ class LubricatedSkirtElement final : public LinerElement,
   }
   /// Film solves, fallbacks, derivative failures and the time of the phases of both sides.
   std::optional<SolverCounters> getSolverCounters() const override { return counters_; }
+  /// Both sides' histories (skirt::SkirtSideHistoryRecord.h), thrust side first: the
+  /// mass-conserving film's fill fraction, the liner oil, the elastic skirt's deformation.
+  std::vector<double> getWarmStartRecord(const SimTK::State& s) const override;
+  /// Installs both sides' histories; throws std::invalid_argument naming the side when a
+  /// record does not fit (another grid, a liner oil film this element does not carry).
+  void setWarmStartRecord(SimTK::State& s, const std::vector<double>& record) const override;
 
   // ---- NodalFieldSource -------------------------------------------------------------
   std::vector<NodalFieldRegion> getNodalFieldRegions() const override;

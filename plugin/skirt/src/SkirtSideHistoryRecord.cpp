@@ -1,0 +1,89 @@
+#include "pistondyn/skirt/SkirtSideHistoryRecord.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace pistondyn::skirt {
+namespace {
+
+template <class Array>
+void append(const Array& a, std::vector<double>& out) {
+  out.push_back(static_cast<double>(a.size()));
+  out.insert(out.end(), a.data(), a.data() + a.size());
+}
+
+[[noreturn]] void fail(const std::string& what) {
+  throw std::invalid_argument("skirt side record: " + what);
+}
+
+// One array: its length (checked against `sizes` when they are given), then its values.
+template <class Array>
+Array read(const std::vector<double>& record, std::size_t& offset, const char* name,
+           std::size_t filmNodes, bool perNode) {
+  if (offset >= record.size())
+    fail(std::string("cut short before ") + name);
+  const double n = record[offset++];
+  if (!(n >= 0.0) || n != std::floor(n) || n > static_cast<double>(record.size() - offset))
+    fail(std::string(name) + ": the length is not a whole number within the record");
+  const auto size = static_cast<std::size_t>(n);
+  if (perNode && size != 0 && size != filmNodes) {
+    fail(std::string(name) + " has " + std::to_string(size) + " values where the side has " +
+         std::to_string(filmNodes) + " film nodes (another grid?)");
+  }
+  Array a(static_cast<Eigen::Index>(size));
+  for (std::size_t i = 0; i < size; ++i) {
+    const double v = record[offset + i];
+    if (!std::isfinite(v))
+      fail(std::string(name) + " holds a value that is not finite");
+    a[static_cast<Eigen::Index>(i)] = v;
+  }
+  offset += size;
+  return a;
+}
+
+}  // namespace
+
+void appendSkirtSideRecord(const SkirtSideHistory& h, std::vector<double>& out) {
+  append(h.film.last.fillFraction, out);
+  append(h.film.last.expectedGap_m, out);
+  append(h.liner.volume_m3, out);
+  const bool liner = !h.liner.empty();
+  out.push_back(liner ? 1.0 : 0.0);
+  if (liner)
+    out.push_back(h.liner.pinHeight_m);
+  append(h.elastic.gapTerm_m, out);
+  append(h.elastic.structural_m, out);
+  append(h.elastic.structuralRate_mps, out);
+}
+
+SkirtSideHistory readSkirtSideRecord(const std::vector<double>& record, std::size_t& offset,
+                                     std::size_t filmNodes) {
+  SkirtSideHistory h;
+  auto& last = h.film.last;
+  last.fillFraction = read<Eigen::ArrayXd>(record, offset, "fill fraction", filmNodes, true);
+  last.expectedGap_m = read<Eigen::ArrayXd>(record, offset, "expected gap", filmNodes, true);
+  if ((last.fillFraction < 0.0).any() || (last.fillFraction > 1.0).any())
+    fail("a fill fraction is outside [0, 1]");
+  if ((last.expectedGap_m <= 0.0).any())
+    fail("an expected gap is not positive");
+  if (last.expectedGap_m.size() != 0 && last.fillFraction.size() == 0)
+    fail("an expected gap needs the fill fraction of its point");
+  h.liner.volume_m3 = read<Eigen::ArrayXd>(record, offset, "liner oil volume", filmNodes, false);
+  if ((h.liner.volume_m3 < 0.0).any())
+    fail("a liner oil volume is negative");
+  const Eigen::ArrayXd pin = read<Eigen::ArrayXd>(record, offset, "pin height", filmNodes, false);
+  if (pin.size() != (h.liner.empty() ? 0 : 1))
+    fail("the liner oil needs the one pin height it belongs to");
+  if (pin.size() == 1)
+    h.liner.pinHeight_m = pin[0];
+  auto& e = h.elastic;
+  e.gapTerm_m = read<Eigen::ArrayXd>(record, offset, "elastic gap term", filmNodes, true);
+  e.structural_m = read<Eigen::VectorXd>(record, offset, "structural displacement", filmNodes,
+                                         false);
+  e.structuralRate_mps =
+      read<Eigen::VectorXd>(record, offset, "structural rate", filmNodes, false);
+  return h;
+}
+
+}  // namespace pistondyn::skirt

@@ -1,5 +1,5 @@
 // pistondyn run DECK.yaml --out DIR [--set key.path=value]... [--fidelity full|preview]
-//               [--quiet] [--no-plot] [--log-level LEVEL]
+//               [--warm-start DIR] [--quiet] [--no-plot] [--log-level LEVEL]
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +22,7 @@
 #include "pistondyn/io/OutputFolderLock.h"
 #include "pistondyn/io/ResultFolder.h"
 #include "pistondyn/io/RunDeck.h"
+#include "pistondyn/io/WarmStartFile.h"
 
 namespace pistondyn::app {
 namespace {
@@ -121,10 +122,13 @@ void printSummary(const io::EngineDeck& deck, const io::RunOutcome& o, const std
   } else {
     std::printf("  fidelity full: the deck as written\n");
   }
+  if (!deck.warmStartFrom.empty())
+    std::printf("  warm start from %s (the first cycle compared with its last)\n",
+                deck.warmStartFrom.c_str());
   if (deck.simulation.untilPeriodic) {
     if (o.stats.converged) {
-      std::printf("  periodic after %d cycles (of at most %d)\n", o.stats.cyclesToConverge,
-                  deck.simulation.cycles);
+      std::printf("  periodic after %d cycle%s (of at most %d)\n", o.stats.cyclesToConverge,
+                  o.stats.cyclesToConverge == 1 ? "" : "s", deck.simulation.cycles);
     } else {
       std::printf("  NOT periodic after %d cycles: the figures are those of the last one\n",
                   o.stats.cyclesRun);
@@ -174,6 +178,12 @@ class RunCommand final : public Subcommand {
         ->type_name("DIR");
     addSetOption(*app_, overrides_);
     addFidelityOption(*app_, fidelity_);
+    app_->add_option("--warm-start", warmStart_,
+                     "start from where an earlier run of the same engine ended (its folder's "
+                     "warm_start.json: the piston's pose and rates, and its last cycle, with "
+                     "which the first cycle is compared; the films start full): a run from a "
+                     "periodic state is periodic after one cycle")
+        ->type_name("DIR");
     app_->add_flag("--quiet", quiet_,
                    "no progress line on stderr; the summary on stdout, warnings and errors "
                    "stay (default: runs longer than 1 s show cycle, crank angle and the "
@@ -195,9 +205,20 @@ class RunCommand final : public Subcommand {
                 << "; nothing was simulated or written\n";
       return kExitUsage;
     }
-    const auto deck = loadDeckOrReport(deck_, overrides_, toFidelity(fidelity_));
+    auto deck = loadDeckOrReport(deck_, overrides_, toFidelity(fidelity_));
     if (!deck)
       return kExitBadInput;
+    if (!warmStart_.empty()) {
+      try {
+        deck->simulation.warmStart = io::readWarmStart(warmStart_);
+        io::checkWarmStartFits(*deck);
+        deck->warmStartFrom = warmStart_;
+      } catch (const std::exception& e) {
+        std::cerr << "pistondyn: --warm-start " << warmStart_ << ": " << e.what()
+                  << "; nothing was simulated or written\n";
+        return kExitBadInput;
+      }
+    }
     // One process at a time writes the folder, from here to the last figure.
     std::optional<io::OutputFolderLock> lock;
     if (const int refused =
@@ -242,7 +263,7 @@ class RunCommand final : public Subcommand {
   }
 
  private:
-  std::string deck_, outDir_;
+  std::string deck_, outDir_, warmStart_;
   std::vector<std::string> overrides_;
   std::string logLevel_ = "warn", fidelity_ = "full";
   bool quiet_ = false, noPlot_ = false;

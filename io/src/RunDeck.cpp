@@ -15,6 +15,7 @@
 #include "pistondyn/common/Validation.h"
 #include "pistondyn/io/ResultWriters.h"
 #include "pistondyn/io/Version.h"
+#include "pistondyn/io/WarmStartFile.h"
 
 namespace pistondyn::io {
 namespace {
@@ -192,6 +193,11 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
   j["fidelity"] = getFidelityName(deck.fidelity);
   if (!deck.fidelityNote.empty())
     j["fidelity_note"] = deck.fidelityNote;
+  // Where the run started from: an earlier run's end (WarmStartFile.h), or the deck's pose.
+  if (!deck.warmStartFrom.empty()) {
+    const std::filesystem::path from = std::filesystem::absolute(deck.warmStartFrom, ec);
+    j["warm_start_from"] = ec ? deck.warmStartFrom : from.lexically_normal().string();
+  }
 
   j["inputs"] = nestedInputs(deck.inputs);
   // What the model uses besides the deck's keys.
@@ -336,6 +342,13 @@ RunOutcome runModel(const EngineDeck& deck, plugin::PistonAssemblyModel& model,
     out.close();
     if (!out)
       throw std::runtime_error(outDir + "/summary.json: write failed");
+    if (o.stats.endState) {  // the run's end, for a later run's warm start
+      std::ofstream end(files->stage(kWarmStartFile), std::ios::binary);
+      end << makeWarmStartJson(*o.stats.endState);
+      end.close();
+      if (!end)
+        throw std::runtime_error(outDir + "/" + kWarmStartFile + ": write failed");
+    }
     files->commit();
   }
   return o;

@@ -12,6 +12,7 @@
 #include "pistondyn/common/Validation.h"
 #include "pistondyn/mbd_models/SliderCrank.h"
 #include "pistondyn/plugin/LinearlyImplicitStepper.h"
+#include "pistondyn/plugin/PistonPose.h"
 
 namespace pistondyn::plugin {
 
@@ -71,6 +72,45 @@ void validate(const SimulationSettings& s) {
     fail("periodicPoseTolerance_m must be in (0, 1e-3) m");
   if (s.untilPeriodic && s.cycles < 2)
     fail("untilPeriodic needs cycles >= 2 (two cycles to compare)");
+  if (s.warmStart)
+    validateWarmStart(*s.warmStart, s);
+}
+
+void validateWarmStart(const WarmStart& w, const SimulationSettings& s) {
+  auto fail = [](const std::string& m) {
+    throw std::invalid_argument("SimulationSettings: warmStart: " + m);
+  };
+  const SecondaryState& x = w.state;
+  for (double v : {w.crankAngle_deg, w.outputStep_deg, x.lateral_m, x.tilt_rad, x.transverse_m,
+                   x.lateralRate_mps, x.tiltRate_radps, x.transverseRate_mps, x.crankSpeed_radps}) {
+    if (!std::isfinite(v))
+      fail("every value must be finite");
+  }
+  if (std::abs(x.lateral_m) > 1e-3 || std::abs(x.tilt_rad) > 0.05 ||
+      std::abs(x.transverse_m) > 5e-3) {
+    fail("the pose is outside the bounds of the initial pose (1 mm, 0.05 rad, 5 mm)");
+  }
+  const double shift = std::remainder(w.crankAngle_deg - s.startAngle_deg, 720.0);
+  if (std::abs(shift) > 1e-9 * std::max(1.0, std::abs(w.crankAngle_deg))) {
+    fail(common::message("its crank angle ", w.crankAngle_deg,
+                         " deg is not the start angle modulo 720 deg (", s.startAngle_deg,
+                         " deg)"));
+  }
+  if (std::abs(w.outputStep_deg - s.outputStep_deg) > 1e-12 * s.outputStep_deg) {
+    fail(common::message("its output step ", w.outputStep_deg, " deg is not this run's (",
+                         s.outputStep_deg, " deg): the cycles could not be compared"));
+  }
+  const auto perCycle = static_cast<std::size_t>(s.stepsPerCycle());
+  if (w.lastCycleLateral_m.size() != perCycle || w.lastCycleTilt_rad.size() != perCycle) {
+    fail(common::message("its last cycle must hold ", perCycle,
+                         " lateral displacements and tilts (one per output angle)"));
+  }
+  for (std::size_t i = 0; i < perCycle; ++i) {
+    if (!std::isfinite(w.lastCycleLateral_m[i]) || !std::isfinite(w.lastCycleTilt_rad[i]))
+      fail("its last cycle's pose must be finite");
+  }
+  if (w.lastCycleFmep_Pa && !std::isfinite(*w.lastCycleFmep_Pa))
+    fail("its last cycle's fmep must be finite");
 }
 
 void ResultTableSink::beginRun(const std::vector<std::string>& columns) {
@@ -292,6 +332,34 @@ void recordCycleCounts(const Advancer& integ, SimulationStats& stats) {
   stats.cycleRealizations.push_back(integ.getRealizations() - sum(stats.cycleRealizations));
 }
 
+// The run's end as a warm start: the state of its last row (a cycle's last) and the pose of
+// the cycle it closed (lateral, tilt x skirt length per output angle, interleaved).
+WarmStart makeEndState(const PistonAssemblyModel& model, const SimTK::State& s,
+                       const SimulationSettings& settings, long lastRow,
+                       const std::vector<double>& lastPose, double skirt_m,
+                       const std::vector<double>& cycleFmep_Pa) {
+  WarmStart w;
+  w.crankAngle_deg =
+      settings.startAngle_deg + static_cast<double>(lastRow) * settings.outputStep_deg;
+  w.outputStep_deg = settings.outputStep_deg;
+  const mbd::CrankTrain& ct = model.getCrankTrain();
+  const PistonPose p = calcPistonPose(ct, s);
+  w.state = {p.lateral_m,       p.tilt_rad,       p.transverse_m,           p.lateralRate_mps,
+             p.tiltRate_radps, p.transverseRate_mps, ct.getCrankSpeed_radps(s)};
+  for (std::size_t i = 0; i + 1 < lastPose.size(); i += 2) {
+    w.lastCycleLateral_m.push_back(lastPose[i]);
+    w.lastCycleTilt_rad.push_back(lastPose[i + 1] / skirt_m);
+  }
+  if (!cycleFmep_Pa.empty())
+    w.lastCycleFmep_Pa = cycleFmep_Pa.back();
+  for (const std::string& name : model.getElementNames()) {
+    std::vector<double> record = model.getElement(name).getWarmStartRecord(s);
+    if (!record.empty())
+      w.elements.push_back({name, std::move(record)});
+  }
+  return w;
+}
+
 }  // namespace
 
 std::vector<std::string> CycleSimulation::getColumns() const {
@@ -373,10 +441,29 @@ void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& pr
     throw std::invalid_argument(
         "SimulationSettings: initialTransverse_m needs a crank train with tertiary motion");
   }
-  ct.setPose(state, theta0, settings_.initialLateral_m, settings_.initialTilt_rad,
-             settings_.initialTransverse_m);
+  const std::optional<WarmStart>& warm = settings_.warmStart;
+  if (warm) {
+    const SecondaryState& x = warm->state;
+    ct.setPose(state, theta0, x.lateral_m, x.tilt_rad, x.transverse_m);
+    ct.setRates(state, prescribed ? omega : x.crankSpeed_radps, x.lateralRate_mps,
+                x.tiltRate_radps, x.transverseRate_mps);
+    for (const WarmStart::ElementRecord& e : warm->elements) {
+      if (!model_.hasElement(e.element)) {
+        throw std::invalid_argument("SimulationSettings: warmStart: the model has no element '" +
+                                    e.element + "' to start from its record");
+      }
+      try {
+        model_.getElement(e.element).setWarmStartRecord(state, e.record);
+      } catch (const std::invalid_argument& err) {
+        throw std::invalid_argument(std::string("SimulationSettings: warmStart: ") + err.what());
+      }
+    }
+  } else {
+    ct.setPose(state, theta0, settings_.initialLateral_m, settings_.initialTilt_rad,
+               settings_.initialTransverse_m);
+    ct.setRates(state, omega);
+  }
   const double t0 = state.getTime();
-  ct.setRates(state, omega);
 
   std::unique_ptr<Advancer> integ;
   if (settings_.integrator == SimulationSettings::Integrator::LinearlyImplicitBDF) {
@@ -400,6 +487,15 @@ void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& pr
   const double skirt_m = engine.piston.skirtLength_m;
   // Pose of the previous and the current cycle at every output angle, and friction work.
   std::vector<double> previousPose(2 * perCycle), currentPose(2 * perCycle);
+  // The first cycle compared: the second, or from a warm start the first (with its last one).
+  int firstCompared = 2;
+  if (warm) {
+    for (long i = 0; i < perCycle; ++i) {
+      previousPose[2 * i] = warm->lastCycleLateral_m[i];
+      previousPose[2 * i + 1] = warm->lastCycleTilt_rad[i] * skirt_m;
+    }
+    firstCompared = 1;
+  }
   double workAtCycleStart = 0.0;
   std::vector<double> row;
   row.reserve(columns.size());
@@ -439,14 +535,20 @@ void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& pr
         if (work)
           stats_.cycleFmep_Pa.push_back((*work - workAtCycleStart) / displacement_m3);
         recordCycleCounts(*integ, stats_);
-        if (settings_.untilPeriodic && cycle >= 2) {
+        if (settings_.untilPeriodic && cycle >= firstCompared) {
           double poseChange = 0.0;
           for (std::size_t i = 0; i < currentPose.size(); ++i)
             poseChange = std::max(poseChange, std::abs(currentPose[i] - previousPose[i]));
+          // The cycle before this one: the run's own, or the warm start's.
+          std::optional<double> before;
+          if (stats_.cycleFmep_Pa.size() >= 2)
+            before = stats_.cycleFmep_Pa.rbegin()[1];
+          else if (warm)
+            before = warm->lastCycleFmep_Pa;
           bool fmepSettled = true;
-          if (stats_.cycleFmep_Pa.size() >= 2) {
-            const double a = stats_.cycleFmep_Pa.back(), b = stats_.cycleFmep_Pa.rbegin()[1];
-            fmepSettled = std::abs(a - b) <= settings_.periodicFmepTolerance * std::abs(a);
+          if (work && before) {
+            const double a = stats_.cycleFmep_Pa.back();
+            fmepSettled = std::abs(a - *before) <= settings_.periodicFmepTolerance * std::abs(a);
           }
           if (fmepSettled && poseChange <= settings_.periodicPoseTolerance_m) {
             stats_.converged = true;
@@ -488,6 +590,9 @@ void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& pr
         formatAngle(settings_.startAngle_deg + static_cast<double>(k) * settings_.outputStep_deg) +
         " deg (last row written at " + formatAngle(reached) + " deg): " + e.what());
   }
+  if (stats_.cyclesRun >= 1)
+    stats_.endState = makeEndState(model_, integ->getState(), settings_, k, previousPose,
+                                   skirt_m, stats_.cycleFmep_Pa);
   stats_.integratorSteps = integ->getSteps();
   stats_.realizations = integ->getRealizations();
   stats_.rejectedSteps = integ->getRejectedSteps();

@@ -460,6 +460,38 @@ TEST_F(FirstHourSkirtEdges, PreviewFidelityIsRecordedAndPrinted) {
   EXPECT_EQ(invokeInScratch("check " + deck() + " --fidelity coarse").exitCode, 2);
 }
 
+// run --warm-start DIR through the program: a run's folder holds warm_start.json, a later run
+// starts from it and says so (stdout, summary.json); a folder without one, or the end of a run
+// on another film grid, is bad input (exit 1) with nothing written.
+TEST_F(FirstHourSkirtEdges, WarmStartThroughTheProgram) {
+  const std::string coarse =
+      " --set liner.grid.nodes_circumferential=12 --set liner.grid.nodes_axial=8"
+      " --set simulation.until_periodic=false --set simulation.cycles=1"
+      " --set simulation.output_step_deg=4";
+  const fs::path first = dir_ / "first", second = dir_ / "second", refused = dir_ / "refused";
+  ASSERT_EQ(runProgram(coarse, first), 0) << programStderr();
+  ASSERT_TRUE(fs::exists(first / "warm_start.json"));
+  ASSERT_EQ(runProgram(coarse + " --warm-start " + first.string(), second), 0) << programStderr();
+  EXPECT_NE(readFile(dir_ / "stdout.txt").find("warm start from " + first.string()),
+            std::string::npos)
+      << readFile(dir_ / "stdout.txt");
+  const auto summary = nlohmann::json::parse(readFile(second / "summary.json"));
+  EXPECT_EQ(summary["warm_start_from"].get<std::string>(), first.string());
+
+  EXPECT_EQ(runProgram(coarse + " --warm-start " + (dir_ / "nowhere").string(), refused), 1);
+  EXPECT_NE(programStderr().find("--warm-start " + (dir_ / "nowhere").string() +
+                                 ": " + (dir_ / "nowhere").string() + ": not a folder"),
+            std::string::npos)
+      << programStderr();
+  EXPECT_FALSE(fs::exists(refused));
+  EXPECT_EQ(runProgram(coarse + " --set liner.grid.nodes_axial=10 --warm-start " + first.string(),
+                       refused),
+            1);
+  EXPECT_NE(programStderr().find("another grid"), std::string::npos) << programStderr();
+  EXPECT_NE(programStderr().find("nothing was simulated or written"), std::string::npos);
+  EXPECT_FALSE(fs::exists(refused));
+}
+
 // sweep --fidelity preview: the preview grid joins the overrides every case shares (and so
 // the fingerprint); a sweep that varies the grid itself is refused.
 TEST_F(FirstHourSkirtEdges, PreviewSweepSharesThePreviewGrid) {

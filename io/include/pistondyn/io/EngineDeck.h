@@ -62,6 +62,9 @@ struct EngineDeck {
   /// `overrides` (as --set assignments after the user's) and `inputs`.
   Fidelity fidelity = Fidelity::Full;
   std::string fidelityNote;  ///< the preview's changes in words; "" when nothing changed
+  /// The result folder `simulation.warmStart` was read from (`run --warm-start DIR`); "" for
+  /// a run from the deck's initial pose.
+  std::string warmStartFrom;
 };
 
 /// Reads, overrides and checks a deck; the liner model comes from `registry`. Throws

@@ -26,7 +26,8 @@
 /// the skirt length at every output angle within periodicPoseTolerance_m - or until
 /// `cycles` cycles are done; only the last cycle's rows are kept (the sinks are told to
 /// discard the earlier ones), and the stats say whether and after how many cycles the run
-/// converged.
+/// converged. A run from a warm start (SimulationSettings::warmStart) compares its first cycle
+/// with the warm start's last one.
 ///
 /// Cancellation (common/Cancellation.h): a run checks the process's cancellation request
 /// before every output row (and every step of Simbody's integrators) and stops by throwing
@@ -34,6 +35,7 @@
 /// sinks see it as any failure (no endRun()).
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +43,46 @@
 #include "pistondyn/plugin/ResultTable.h"
 
 namespace pistondyn::plugin {
+
+/// The piston's secondary state at one instant: pose and rates (PistonPose.h's signs), and
+/// the crank speed.
+struct SecondaryState {
+  double lateral_m = 0.0;           ///< lateral displacement, + towards thrust [m]
+  double tilt_rad = 0.0;            ///< tilt, + crown towards thrust [rad]
+  double transverse_m = 0.0;        ///< tertiary displacement along the pin axis [m]
+  double lateralRate_mps = 0.0;     ///< its rate [m/s]
+  double tiltRate_radps = 0.0;      ///< its rate [rad/s]
+  double transverseRate_mps = 0.0;  ///< its rate [m/s]
+  double crankSpeed_radps = 0.0;    ///< crank speed [rad/s]
+};
+
+/// Where an earlier run of the same engine ended, as a later run's start (SimulationSettings::
+/// warmStart; written by `pistondyn run` as warm_start.json): the secondary state at its last
+/// row, the elements' own state there (ForceElement::getWarmStartRecord: the films' fill
+/// fraction, the liner oil, an elastic skirt's deformation) and the pose of the whole cycle
+/// that led to it. A run started from it compares its first cycle with `lastCycle*` as with a
+/// cycle of its own, so a run of an unchanged engine started from its periodic state is
+/// periodic after one cycle. The integrator restarts at first order; the elements' integrals
+/// (friction work, wear) start at zero.
+struct WarmStart {
+  /// One element's record (ForceElement::getWarmStartRecord), by the element's name.
+  struct ElementRecord {
+    std::string element;         ///< ForceElement::getName()
+    std::vector<double> record;  ///< in the element's own layout
+  };
+  double crankAngle_deg = 0.0;   ///< nominal crank angle of the state (its run's last row) [deg]
+  double outputStep_deg = 1.0;   ///< its run's output step [deg]
+  SecondaryState state;          ///< at crankAngle_deg
+  /// Lateral displacement [m] and tilt [rad] at the output angles of the last cycle, its first
+  /// row (crankAngle_deg - 720) first, 720 / outputStep_deg values each.
+  std::vector<double> lastCycleLateral_m;
+  std::vector<double> lastCycleTilt_rad;  ///< see lastCycleLateral_m
+  /// The last cycle's fmep [Pa], if the liner integrates the friction work.
+  std::optional<double> lastCycleFmep_Pa;
+  /// The elements' records (those with a non-empty one); each must name an element of the
+  /// model run from it.
+  std::vector<ElementRecord> elements;
+};
 
 /// How a CycleSimulation runs: rows, cycles, integrator and its tolerances (each member
 /// states its default).
@@ -56,6 +98,10 @@ struct SimulationSettings {
   double initialLateral_m = 0.0;
   double initialTilt_rad = 0.0;      ///< see initialLateral_m
   double initialTransverse_m = 0.0;  ///< see initialLateral_m
+  /// Start from an earlier run's end instead (WarmStart): its secondary state replaces the
+  /// initial pose above (and, with a free crank, the drive's speed); its crankAngle_deg must
+  /// equal startAngle_deg modulo 720 deg and its output step this one's.
+  std::optional<WarmStart> warmStart;
   int cycles = 1;               ///< number of 720 deg cycles (the maximum if untilPeriodic), >= 1
   double outputStep_deg = 1.0;  ///< output interval [deg], > 0, must divide 720
   /// The time integrator.
@@ -102,6 +148,9 @@ struct SimulationSettings {
 
 /// Throws std::invalid_argument naming the member when settings are unusable.
 void validate(const SimulationSettings& settings);
+/// Throws std::invalid_argument naming what does not fit when a warm start cannot start a run
+/// with these settings (validate() calls it for settings.warmStart).
+void validateWarmStart(const WarmStart& warmStart, const SimulationSettings& settings);
 
 /// Where a simulation puts its rows. The simulation calls beginRun() once with the column
 /// names, beginCycle() at the first row of every 720 deg cycle, consumeRow() for every
@@ -153,6 +202,9 @@ struct SimulationStats {
   int cyclesRun = 0;                 ///< whole cycles simulated
   bool converged = false;            ///< untilPeriodic: the last two cycles agreed
   int cyclesToConverge = 0;          ///< untilPeriodic: cycles run when they did (0 if not)
+  /// The run's end as a later run's warm start (its last row is a cycle's last): set when the
+  /// run completed at least one whole cycle.
+  std::optional<WarmStart> endState;
   std::vector<double> cycleFmep_Pa;  ///< fmep of every cycle run, if the liner integrates it
   /// Per cycle run, in order (each sums to its whole-run figure above over the cycles; the
   /// steps before the first cycle's first row, none with CycleSimulation's start, belong to

@@ -29,4 +29,13 @@ inline std::string gasolineColdShapesSet(const std::string& indent = "  ") {
          "liner.thermal.liner_expansion_per_K: 0\n";
 }
 
+// A Briggs & Stratton barrel whose minimum-clearance line is 6.8 mm below the pin
+// (tests/design/data): the rigid skirt rocks onto its lower edge after firing TDC, and the
+// tilt in the TDC windows tells the oil temperature from the clearance. On the example's own
+// barrel (3 mm below the pin) the film-borne tilt sees only their combination.
+inline std::string briggsEdgeRockingBarrelSet(const std::string& indent = "  ") {
+  return indent + "liner.skirt_profile.axial_profile_file: " +
+         std::string(PISTONDYN_SOURCE_DIR) + "/tests/design/data/briggs_barrel_6p8mm_below_pin.csv\n";
+}
+
 }  // namespace pistondyn_test

@@ -29,13 +29,13 @@ const std::string kBriggsProfile =
 // The Briggs & Stratton skirt: 10 mm above to 18 mm below the pin.
 constexpr double kTop_mm = 10.0, kBottom_mm = -18.0;
 
-// The example's barrel 0.12 (y + 6.8)^2 as the four numbers: edge drops 0.12 L^2.
+// The example's barrel 0.12 (y + 3)^2 as the four numbers: edge drops 0.12 L^2.
 SkirtProfileShape briggsBarrel() {
-  return {0.12 * 16.8 * 16.8, 0.12 * 11.2 * 11.2, -6.8, 0.12};
+  return {0.12 * 13.0 * 13.0, 0.12 * 15.0 * 15.0, -3.0, 0.12};
 }
 
 TEST(SkirtProfileDesign, ReproducesTheExampleBarrelTableOverTheSkirt) {
-  // The committed table (examples/engines/briggs_stratton_500) tabulates 0.12 (y + 6.8)^2
+  // The committed table (examples/engines/briggs_stratton_500) tabulates 0.12 (y + 3)^2
   // to four decimals: with the edge drops of that parabola the quartic term vanishes.
   const io::CsvTable t =
       io::readCsvTable(kBriggsProfile, {"height_above_pin_mm", "radial_drop_um"});

@@ -122,9 +122,10 @@ void printSummary(const io::EngineDeck& deck, const io::RunOutcome& o, const std
   } else {
     std::printf("  fidelity full: the deck as written\n");
   }
-  if (!deck.warmStartFrom.empty())
-    std::printf("  warm start from %s (the first cycle compared with its last)\n",
-                deck.warmStartFrom.c_str());
+  if (!deck.warmStartFrom.empty()) {
+    std::printf("  warm start from %s%s\n", deck.warmStartFrom.c_str(),
+                deck.simulation.untilPeriodic ? " (the first cycle compared with its last)" : "");
+  }
   if (deck.simulation.untilPeriodic) {
     if (o.stats.converged) {
       std::printf("  periodic after %d cycle%s (of at most %d)\n", o.stats.cyclesToConverge,
@@ -180,9 +181,10 @@ class RunCommand final : public Subcommand {
     addFidelityOption(*app_, fidelity_);
     app_->add_option("--warm-start", warmStart_,
                      "start from where an earlier run of the same engine ended (its folder's "
-                     "warm_start.json: the piston's pose and rates, and its last cycle, with "
-                     "which the first cycle is compared; the films start full): a run from a "
-                     "periodic state is periodic after one cycle")
+                     "warm_start.json: the piston's pose and rates, the films' fill fraction, "
+                     "the liner oil and an elastic skirt's deformation, and its last cycle, with "
+                     "which the first cycle is compared): a run from a periodic state is "
+                     "periodic after one cycle")
         ->type_name("DIR");
     app_->add_flag("--quiet", quiet_,
                    "no progress line on stderr; the summary on stdout, warnings and errors "

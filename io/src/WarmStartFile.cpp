@@ -143,12 +143,7 @@ void checkWarmStartFits(const EngineDeck& deck) {
   const auto model = buildModel(deck);
   model->buildSystem();
   SimTK::State state = model->getDefaultState();
-  for (const plugin::WarmStart::ElementRecord& e : w.elements) {
-    if (!model->hasElement(e.element))
-      throw std::invalid_argument("the model has no element '" + e.element +
-                                  "' to start from its record");
-    model->getElement(e.element).setWarmStartRecord(state, e.record);
-  }
+  plugin::applyWarmStart(*model, state, w, deck.simulation.startAngle_deg);
 }
 
 }  // namespace pistondyn::io

@@ -76,6 +76,26 @@ void validate(const SimulationSettings& s) {
     validateWarmStart(*s.warmStart, s);
 }
 
+void applyWarmStart(const PistonAssemblyModel& model, SimTK::State& state, const WarmStart& w,
+                    double startAngle_deg) {
+  const mbd::CrankTrain& ct = model.getCrankTrain();
+  const mbd::EngineDescription& engine = ct.getEngine();
+  const SecondaryState& x = w.state;
+  if ((x.transverse_m != 0.0 || x.transverseRate_mps != 0.0) && !engine.tertiaryMotion) {
+    throw std::invalid_argument(
+        "the warm start has a tertiary (transverse) motion, this crank train has none");
+  }
+  const bool prescribed = engine.drive.mode == mbd::CrankDrive::Mode::ConstantSpeed;
+  ct.setPose(state, startAngle_deg * M_PI / 180.0, x.lateral_m, x.tilt_rad, x.transverse_m);
+  ct.setRates(state, prescribed ? engine.drive.speed_radps : x.crankSpeed_radps,
+              x.lateralRate_mps, x.tiltRate_radps, x.transverseRate_mps);
+  for (const WarmStart::ElementRecord& e : w.elements) {
+    if (!model.hasElement(e.element))
+      throw std::invalid_argument("the model has no element '" + e.element + "' to start from");
+    model.getElement(e.element).setWarmStartRecord(state, e.record);
+  }
+}
+
 void validateWarmStart(const WarmStart& w, const SimulationSettings& s) {
   auto fail = [](const std::string& m) {
     throw std::invalid_argument("SimulationSettings: warmStart: " + m);
@@ -86,6 +106,8 @@ void validateWarmStart(const WarmStart& w, const SimulationSettings& s) {
     if (!std::isfinite(v))
       fail("every value must be finite");
   }
+  if (!(x.crankSpeed_radps > 0.0))
+    fail("the crank speed must be positive");
   if (std::abs(x.lateral_m) > 1e-3 || std::abs(x.tilt_rad) > 0.05 ||
       std::abs(x.transverse_m) > 5e-3) {
     fail("the pose is outside the bounds of the initial pose (1 mm, 0.05 rad, 5 mm)");
@@ -443,20 +465,10 @@ void CycleSimulation::run(const std::vector<RowSink*>& sinks, const Progress& pr
   }
   const std::optional<WarmStart>& warm = settings_.warmStart;
   if (warm) {
-    const SecondaryState& x = warm->state;
-    ct.setPose(state, theta0, x.lateral_m, x.tilt_rad, x.transverse_m);
-    ct.setRates(state, prescribed ? omega : x.crankSpeed_radps, x.lateralRate_mps,
-                x.tiltRate_radps, x.transverseRate_mps);
-    for (const WarmStart::ElementRecord& e : warm->elements) {
-      if (!model_.hasElement(e.element)) {
-        throw std::invalid_argument("SimulationSettings: warmStart: the model has no element '" +
-                                    e.element + "' to start from its record");
-      }
-      try {
-        model_.getElement(e.element).setWarmStartRecord(state, e.record);
-      } catch (const std::invalid_argument& err) {
-        throw std::invalid_argument(std::string("SimulationSettings: warmStart: ") + err.what());
-      }
+    try {
+      applyWarmStart(model_, state, *warm, settings_.startAngle_deg);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("SimulationSettings: warmStart: ") + e.what());
     }
   } else {
     ct.setPose(state, theta0, settings_.initialLateral_m, settings_.initialTilt_rad,

@@ -169,9 +169,15 @@ void LubricatedSkirtElement::realizeTopology(SimTK::State&, ElementStateAllocato
 }
 
 std::vector<double> LubricatedSkirtElement::getWarmStartRecord(const SimTK::State& s) const {
+  // Per side: the film grid's nodes around and along it (a record from another grid is
+  // refused by its shape, not only its node count), then the side's history.
   std::vector<double> record;
-  for (int k : {kThrust, kAntiThrust})
+  for (int k : {kThrust, kAntiThrust}) {
+    const skirt::SkirtSideGrid& grid = workspace_->sides[k]->getGrid();
+    record.push_back(grid.nPhi());
+    record.push_back(grid.nY());
     skirt::appendSkirtSideRecord(history_[k].getValue(s), record);
+  }
   return record;
 }
 
@@ -179,25 +185,73 @@ void LubricatedSkirtElement::setWarmStartRecord(SimTK::State& s,
                                                 const std::vector<double>& record) const {
   std::size_t offset = 0;
   for (int k : {kThrust, kAntiThrust}) {
-    const char* side = k == kThrust ? "thrust" : "anti-thrust";
-    const auto nodes = static_cast<std::size_t>(workspace_->sides[k]->getGrid().nodeCount());
+    const std::string where = getName() + ", " + (k == kThrust ? "thrust" : "anti-thrust") +
+                              " side: ";
+    const skirt::SkirtSideSolver& solver = *workspace_->sides[k];
+    const skirt::SkirtSideGrid& grid = solver.getGrid();
+    if (offset + 2 > record.size())
+      throw std::invalid_argument(where + "the warm-start record is cut short");
+    const double nPhi = record[offset], nY = record[offset + 1];
+    offset += 2;
+    if (nPhi != grid.nPhi() || nY != grid.nY()) {
+      throw std::invalid_argument(where + common::message("the record is of another film grid: ",
+                                                         nPhi, " x ", nY, " nodes, this one ",
+                                                         grid.nPhi(), " x ", grid.nY()));
+    }
     skirt::SkirtSideHistory h;
     try {
-      h = skirt::readSkirtSideRecord(record, offset, nodes);
+      h = skirt::readSkirtSideRecord(record, offset, static_cast<std::size_t>(grid.nodeCount()));
     } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(getName() + ", " + side + " side: " + e.what());
+      throw std::invalid_argument(where + e.what());
     }
-    if (!h.liner.empty() && !parameters_.linerOil) {
-      throw std::invalid_argument(getName() + ", " + side +
-                                  " side: the record holds liner oil, this skirt has no liner "
-                                  "oil film (liner.oil_supply.liner_transport)");
-    }
+    checkWarmStartHistory(solver, h, where);
     history_[k].setValue(s, h);
   }
   if (offset != record.size()) {
     throw std::invalid_argument(getName() + ": the warm-start record holds " +
                                 std::to_string(record.size() - offset) +
                                 " numbers more than the two sides' histories");
+  }
+}
+
+void LubricatedSkirtElement::checkWarmStartHistory(const skirt::SkirtSideSolver& solver,
+                                                   const skirt::SkirtSideHistory& h,
+                                                   const std::string& where) const {
+  const bool massConserving =
+      parameters_.lubrication.cavitation == lubrication::CavitationModel::MassConserving;
+  if (!h.film.empty() && !massConserving) {
+    throw std::invalid_argument(where +
+                                "the record holds a fill fraction, this skirt's film has none "
+                                "(liner.film.cavitation: reynolds)");
+  }
+  const skirt::LinerOilFilm* liner = solver.getLinerOilFilm();
+  if (!h.liner.empty()) {
+    if (liner == nullptr) {
+      throw std::invalid_argument(where +
+                                  "the record holds liner oil, this skirt has no liner oil film "
+                                  "(liner.oil_supply.liner_transport)");
+    }
+    const long cells = static_cast<long>(liner->rows()) * liner->columns();
+    if (h.liner.volume_m3.size() != cells) {
+      throw std::invalid_argument(
+          where + common::message("the record's liner oil has ", h.liner.volume_m3.size(),
+                                  " cells, this liner's film ", cells,
+                                  " (another stroke, ring height or grid?)"));
+    }
+  }
+  const skirt::ElasticCoupling* coupling = solver.getElasticCoupling();
+  const auto& e = h.elastic;
+  if (e.gapTerm_m.size() != 0 || e.structural_m.size() != 0 || e.structuralRate_mps.size() != 0) {
+    if (coupling == nullptr)
+      throw std::invalid_argument(where + "the record holds an elastic skirt's deformation, this "
+                                          "skirt is rigid");
+    const long n = coupling->structuralNodeCount();
+    if ((e.structural_m.size() != 0 && e.structural_m.size() != n) ||
+        (e.structuralRate_mps.size() != 0 && e.structuralRate_mps.size() != n)) {
+      throw std::invalid_argument(
+          where + common::message("the record's deformation is of ", e.structural_m.size(),
+                                  " structural nodes, this skirt's compliance has ", n));
+    }
   }
 }
 

@@ -58,7 +58,9 @@ TEST_F(ScratchDeck, ProgramWritesCycleAndSummary) {
   EXPECT_EQ(summary["overrides"].size(), 2u);
   // No temporary files left next to the results.
   for (const auto& entry : fs::directory_iterator(out)) {
-    EXPECT_TRUE(entry.path().filename() == "cycle.csv" || entry.path().filename() == "summary.json")
+    EXPECT_TRUE(entry.path().filename() == "cycle.csv" ||
+                entry.path().filename() == "summary.json" ||
+                entry.path().filename() == "warm_start.json")
         << entry.path();
   }
 }

@@ -160,7 +160,8 @@ TEST_F(FirstHourEdges, TwoRunsIntoOneFolderNeverMix) {
   // The first run's own speed (the refused one asked for 3000 rpm).
   const auto summary = nlohmann::json::parse(readFile(out / "summary.json"));
   EXPECT_NEAR(summary["inputs"]["drive"]["speed_rad_per_s"].get<double>(), 2000 * M_PI / 30, 1e-9);
-  EXPECT_EQ(listTree(out), (std::vector<std::string>{"cycle.csv", "summary.json"}));
+  EXPECT_EQ(listTree(out),
+            (std::vector<std::string>{"cycle.csv", "summary.json", "warm_start.json"}));
 }
 
 // SIGINT and SIGTERM during a run into a new folder: exit 130 / 143, and nothing the run
@@ -194,7 +195,8 @@ TEST_F(FirstHourEdges, SignalDuringRunKeepsEarlierResults) {
   ::kill(run, SIGINT);
   ::kill(run, SIGCONT);
   EXPECT_EQ(finish(run), 130) << output("run");
-  EXPECT_EQ(listTree(out), (std::vector<std::string>{"cycle.csv", "summary.json"}));
+  EXPECT_EQ(listTree(out),
+            (std::vector<std::string>{"cycle.csv", "summary.json", "warm_start.json"}));
   EXPECT_EQ(readFile(out / "cycle.csv"), csv);
   EXPECT_EQ(readFile(out / "summary.json"), json);
 }
@@ -233,8 +235,9 @@ TEST_F(FirstHourEdges, SignalDuringPlotLeavesNoPartialFigureOrTemporaryFolder) {
       }
       ::kill(plot, signal);
       EXPECT_EQ(finish(plot), 128 + signal) << output("plot");
-      EXPECT_EQ(listTree(out), (std::vector<std::string>{"cycle.csv", "plots",
-                                                         "plots/side_force.png", "summary.json"}));
+      EXPECT_EQ(listTree(out),
+                (std::vector<std::string>{"cycle.csv", "plots", "plots/side_force.png",
+                                          "summary.json", "warm_start.json"}));
       EXPECT_EQ(readFile(out / "plots" / "side_force.png"), "earlier figure");
       EXPECT_TRUE(listTree(tmp).empty()) << ::testing::PrintToString(listTree(tmp));
     }
@@ -487,7 +490,9 @@ TEST_F(FirstHourSkirtEdges, WarmStartThroughTheProgram) {
   EXPECT_EQ(runProgram(coarse + " --set liner.grid.nodes_axial=10 --warm-start " + first.string(),
                        refused),
             1);
-  EXPECT_NE(programStderr().find("another grid"), std::string::npos) << programStderr();
+  EXPECT_NE(programStderr().find("another film grid: 12 x 8 nodes, this one 12 x 10"),
+            std::string::npos)
+      << programStderr();
   EXPECT_NE(programStderr().find("nothing was simulated or written"), std::string::npos);
   EXPECT_FALSE(fs::exists(refused));
 }

@@ -314,7 +314,7 @@ TEST_F(SkirtScratchDeck, AShortRunWritesEverySkirtFigure) {
                        "field_dump_0deg_antithrust.csv", "field_dump_0deg_thrust.csv",
                        "field_dump_380deg_antithrust.csv", "field_dump_380deg_thrust.csv",
                        "field_frames_antithrust.csv", "field_frames_thrust.csv",
-                       "summary.json"}));
+                       "summary.json", "warm_start.json"}));
   const Csv dump = readCsv(out / "field_dump_380deg_antithrust.csv");
   EXPECT_EQ(dump.columns,
             (std::vector<std::string>{"phi_deg", "y_mm", "gap_um", "rigid_um", "skirt_profile_um",

@@ -237,7 +237,8 @@ TEST_F(ScratchDeck, RowsReachTheDiskWhileTheSimulationRuns) {
   // 200 rows of ~270 characters; the stream buffer holds at most a few kB of them.
   EXPECT_GT(watcher.partialBytesAtRow200, 20000u);
   EXPECT_FALSE(watcher.finalExistedDuringRun);
-  EXPECT_EQ(folderContents(watcher.dir), (std::vector<std::string>{"cycle.csv", "summary.json"}));
+  EXPECT_EQ(folderContents(watcher.dir),
+            (std::vector<std::string>{"cycle.csv", "summary.json", "warm_start.json"}));
 }
 
 // An element that throws at 200 deg: the run fails, earlier results stay as they were,

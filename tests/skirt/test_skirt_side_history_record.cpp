@@ -18,7 +18,8 @@ SkirtSideHistory filledHistory(int nodes) {
   SkirtSideHistory h;
   h.film.last.fillFraction = Eigen::ArrayXd::LinSpaced(nodes, 0.1, 1.0);
   h.film.last.expectedGap_m = Eigen::ArrayXd::LinSpaced(nodes, 1e-6, 3e-5);
-  h.film.earlier = h.film.last;  // left out of the record
+  h.film.earlier.fillFraction = Eigen::ArrayXd::LinSpaced(nodes, 0.2, 0.9);
+  h.film.earlier.expectedGap_m = Eigen::ArrayXd::LinSpaced(nodes, 2e-6, 2e-5);
   h.film.earlierStep_s = 1e-5;
   h.liner.volume_m3 = Eigen::ArrayXd::LinSpaced(7, 0.0, 1e-9);
   h.liner.pinHeight_m = 0.123;
@@ -49,7 +50,9 @@ TEST(SkirtSideHistoryRecord, TwoSidesReadBackToTheIdenticalStateAtOneInstant) {
   EXPECT_EQ(offset, record.size());
   EXPECT_TRUE((ra.film.last.fillFraction == a.film.last.fillFraction).all());
   EXPECT_TRUE((ra.film.last.expectedGap_m == a.film.last.expectedGap_m).all());
-  EXPECT_TRUE(ra.film.earlier.empty());  // the integrators restart at first order
+  EXPECT_TRUE((ra.film.earlier.fillFraction == a.film.earlier.fillFraction).all());
+  EXPECT_TRUE((ra.film.earlier.expectedGap_m == a.film.earlier.expectedGap_m).all());
+  EXPECT_EQ(ra.film.earlierStep_s, a.film.earlierStep_s);
   EXPECT_TRUE((ra.liner.volume_m3 == a.liner.volume_m3).all());
   EXPECT_EQ(ra.liner.pinHeight_m, a.liner.pinHeight_m);
   EXPECT_TRUE((ra.elastic.gapTerm_m == a.elastic.gapTerm_m).all());
@@ -79,6 +82,11 @@ TEST(SkirtSideHistoryRecord, ARecordThatDoesNotFitTheSideIsRefusedWithItsReason)
   nan[14] = std::nan("");  // an expected gap
   EXPECT_NE(messageOf(nan, 12).find("not finite"), std::string::npos);
   EXPECT_NE(messageOf({}, 12).find("cut short"), std::string::npos);
+  std::vector<double> backwards = record;
+  ASSERT_EQ(record[4 * 13], 1.0);   // after four arrays of 1 + 12 numbers: the step's length
+  backwards[4 * 13 + 1] = -1e-5;     // the step between the film's points
+  EXPECT_NE(messageOf(backwards, 12).find("step is not positive"), std::string::npos)
+      << messageOf(backwards, 12);
 }
 
 }  // namespace

@@ -47,6 +47,12 @@ Array read(const std::vector<double>& record, std::size_t& offset, const char* n
 void appendSkirtSideRecord(const SkirtSideHistory& h, std::vector<double>& out) {
   append(h.film.last.fillFraction, out);
   append(h.film.last.expectedGap_m, out);
+  append(h.film.earlier.fillFraction, out);
+  append(h.film.earlier.expectedGap_m, out);
+  const bool earlier = !h.film.earlier.empty();
+  out.push_back(earlier ? 1.0 : 0.0);
+  if (earlier)
+    out.push_back(h.film.earlierStep_s);
   append(h.liner.volume_m3, out);
   const bool liner = !h.liner.empty();
   out.push_back(liner ? 1.0 : 0.0);
@@ -57,18 +63,40 @@ void appendSkirtSideRecord(const SkirtSideHistory& h, std::vector<double>& out) 
   append(h.elastic.structuralRate_mps, out);
 }
 
+namespace {
+
+// One film point: its fill fraction and expected gap.
+lubrication::FilmHistoryPoint readFilmPoint(const std::vector<double>& record,
+                                            std::size_t& offset, std::size_t filmNodes) {
+  lubrication::FilmHistoryPoint p;
+  p.fillFraction = read<Eigen::ArrayXd>(record, offset, "fill fraction", filmNodes, true);
+  p.expectedGap_m = read<Eigen::ArrayXd>(record, offset, "expected gap", filmNodes, true);
+  if ((p.fillFraction < 0.0).any() || (p.fillFraction > 1.0).any())
+    fail("a fill fraction is outside [0, 1]");
+  if ((p.expectedGap_m <= 0.0).any())
+    fail("an expected gap is not positive");
+  if (p.expectedGap_m.size() != 0 && p.fillFraction.size() == 0)
+    fail("an expected gap needs the fill fraction of its point");
+  return p;
+}
+
+}  // namespace
+
 SkirtSideHistory readSkirtSideRecord(const std::vector<double>& record, std::size_t& offset,
                                      std::size_t filmNodes) {
   SkirtSideHistory h;
-  auto& last = h.film.last;
-  last.fillFraction = read<Eigen::ArrayXd>(record, offset, "fill fraction", filmNodes, true);
-  last.expectedGap_m = read<Eigen::ArrayXd>(record, offset, "expected gap", filmNodes, true);
-  if ((last.fillFraction < 0.0).any() || (last.fillFraction > 1.0).any())
-    fail("a fill fraction is outside [0, 1]");
-  if ((last.expectedGap_m <= 0.0).any())
-    fail("an expected gap is not positive");
-  if (last.expectedGap_m.size() != 0 && last.fillFraction.size() == 0)
-    fail("an expected gap needs the fill fraction of its point");
+  h.film.last = readFilmPoint(record, offset, filmNodes);
+  h.film.earlier = readFilmPoint(record, offset, filmNodes);
+  const Eigen::ArrayXd step = read<Eigen::ArrayXd>(record, offset, "film step", filmNodes, false);
+  if (step.size() != (h.film.earlier.empty() ? 0 : 1))
+    fail("the film's earlier point needs the one step to it");
+  if (step.size() == 1) {
+    if (!(step[0] > 0.0))
+      fail("the film's step is not positive");
+    if (h.film.last.empty())
+      fail("the film's earlier point needs its last point");
+    h.film.earlierStep_s = step[0];
+  }
   h.liner.volume_m3 = read<Eigen::ArrayXd>(record, offset, "liner oil volume", filmNodes, false);
   if ((h.liner.volume_m3 < 0.0).any())
     fail("a liner oil volume is negative");

@@ -33,6 +33,7 @@ struct SkirtSideSolver::Impl {
   LinerOilState initialLiner;              // the liner's start when the history has none
   const LinerOilState* linerStart = nullptr;  // the state this evaluation starts from
   Eigen::ArrayXd supplyBottom, supplyTop;  // the liner's supply per column [m]
+  lubrication::FilmHistory sameInstant;    // a film solved again at its history's instant
 
   Impl(const SkirtSideGrid& grid, const GapAssemblyParameters& gapParameters,
        std::shared_ptr<const lubrication::FlowFactorModel> flowFactors,
@@ -95,6 +96,17 @@ struct SkirtSideSolver::Impl {
     in.history = massConserving() ? &history.film : nullptr;
     in.timeStep_s = c.stepSinceHistory_s > 0.0 ? c.stepSinceHistory_s
                                                : std::numeric_limits<double>::infinity();
+    const double lastStep_s = history.film.earlierStep_s;
+    if (in.history && !(c.stepSinceHistory_s > 0.0) && !history.film.empty() &&
+        std::isfinite(lastStep_s) && lastStep_s > 0.0) {
+      // Solved again at the instant of its history (a restart from an accepted state, a warm
+      // start): a first-order step of the history's own last length from its last point, so
+      // that the fill fraction moves by what one step moves it - not the steady film, which
+      // would redistribute the oil the film holds. The history itself is kept (advanceHistory).
+      sameInstant.last = history.film.last;
+      in.history = &sameInstant;
+      in.timeStep_s = lastStep_s;
+    }
   }
 
   // Gap and film at the motion (the elastic fields as set), counted and timed also when the film
@@ -172,8 +184,8 @@ struct SkirtSideSolver::Impl {
           "tolerance, e.g. liner.film.tolerance 1e-11)"));
   }
 
-  // The history the evaluation leads to (mass-conserving film only; a zero step keeps the
-  // earlier film point and the elastic rate).
+  // The history the evaluation leads to (mass-conserving film only; a zero step with a film
+  // history keeps the history whole, see setInputs).
   void advanceHistory(const SkirtSideMotion& motion, const SkirtSideConditions& c,
                       const SkirtSideHistory& history, SkirtSideSolution& out) const {
     out.historyAdvanced = massConserving();

@@ -152,6 +152,14 @@ void validate(const SimulationSettings& settings);
 /// with these settings (validate() calls it for settings.warmStart).
 void validateWarmStart(const WarmStart& warmStart, const SimulationSettings& settings);
 
+/// Puts a warm start into a state of the (built) model, as a run from it begins: the pose and
+/// rates at the start angle (the crank speed the drive's, or with a free crank the warm
+/// start's) and every element's record. Throws std::invalid_argument naming what does not fit
+/// (a transverse motion on a crank train without tertiary motion, an element the model lacks,
+/// a record of another grid).
+void applyWarmStart(const PistonAssemblyModel& model, SimTK::State& state,
+                    const WarmStart& warmStart, double startAngle_deg);
+
 /// Where a simulation puts its rows. The simulation calls beginRun() once with the column
 /// names, beginCycle() at the first row of every 720 deg cycle, consumeRow() for every
 /// row (the state is realized through Stage::Acceleration, so a sink may also evaluate

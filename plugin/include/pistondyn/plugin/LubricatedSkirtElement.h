@@ -364,6 +364,12 @@ class LubricatedSkirtElement final : public LinerElement,
   /// velocity tells the liner film's leading edge.
   void sumSides(double axialVelocity_mps, LubricatedSkirtResults& r) const;
   /// Each side's history this evaluation leads to, installed if its step is accepted.
+  // Throws std::invalid_argument (prefixed by `where`) when a warm-start history does not fit
+  // the side: a fill fraction without the mass-conserving film, liner oil of another liner
+  // film, an elastic deformation of another compliance or of a rigid skirt.
+  void checkWarmStartHistory(const skirt::SkirtSideSolver& solver,
+                             const skirt::SkirtSideHistory& history,
+                             const std::string& where) const;
   void installHistories(const SimTK::State& s) const;
   /// The pin retainer (tertiary motion) and the loads in ground.
   void addRetainerAndRotate(const SimTK::State& s, const PistonPose& pose,

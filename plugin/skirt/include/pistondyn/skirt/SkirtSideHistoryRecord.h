@@ -3,11 +3,11 @@
 /// A skirt side's history (SkirtSideHistory) as a flat list of numbers and back: what a warm
 /// start carries from the end of one run to the start of the next (plugin::WarmStart).
 ///
-/// The record holds the state at one instant only: the mass-conserving film's last fill
-/// fraction and expected gap, the liner oil per cell and the pin height it belongs to, the
-/// elastic skirt's gap term, structural displacement and rate. The film's earlier point is left
-/// out (the time integrators restart at first order). Layout: each of these seven arrays as
-/// its length followed by its values, in the order of SkirtSideHistory's members.
+/// The record holds the mass-conserving film's last and earlier points (fill fraction, expected
+/// gap) and the step between them, the liner oil per cell and the pin height it belongs to, the
+/// elastic skirt's gap term, structural displacement and rate. Layout: each of these ten arrays
+/// as its length followed by its values, in the order of SkirtSideHistory's members (the step
+/// and the pin height as arrays of one value, or none).
 
 #include <cstddef>
 #include <vector>

@@ -243,7 +243,10 @@ void writeOperation(DeckText& d, const NewDeckRequest& r, const TypeRules& t, co
 void writeLiner(DeckText& d, const Engine& e) {
   d.section(0, "liner");
   d.comment(2,
-            "The lubricated skirt: oil film (average Reynolds, mass-conserving cavitation) and "
+            std::string("The lubricated skirt: oil film (average Reynolds, ") +
+                (e.splashLubricated ? "fully flooded, Reynolds cavitation"
+                                    : "partially flooded, mass-conserving cavitation") +
+                ") and "
             "asperity contact on both skirt sides, with the example decks' film, roughness and "
             "contact data. Run the same engine on the ideal guide with --set "
             "liner.model=ideal_guide --set simulation.integrator=rk_merson. No bore_distortion "
@@ -269,9 +272,10 @@ void writeLiner(DeckText& d, const Engine& e) {
   d.entry(4, "grade", e.oilGrade, e.oilNote + " (data-sheet oil, lubrication/OilGrades.h)");
   d.entry(4, "temperature_degC", num(e.oilTemperature.number), e.oilTemperature.note);
   d.section(2, "oil_supply");
-  d.entry(4, "film_um", "1.0",
-          "EST: partially flooded [T]: the film an oil-control ring leaves on a warm liner, "
-          "0.2-1.5 um, as the gasoline example");
+  if (e.splashLubricated)
+    d.entry(4, "fully_flooded", "true", e.lubricationNote);
+  else
+    d.entry(4, "film_um", "1.0", e.lubricationNote);
   d.section(2, "roughness", "entered once: flow factors and asperity contact");
   d.entry(4, "liner_rq_um", "0.4", "EST: plateau-honed cast-iron bore, as both examples");
   d.entry(4, "skirt_rq_um", "0.6", "EST: machined skirt with its coating, as both examples");
@@ -289,12 +293,18 @@ void writeLiner(DeckText& d, const Engine& e) {
           "numerics: Coulomb friction smoothed below 1 mm/s");
   d.entry(4, "wear_coefficient_mm3_per_N_m", "0.0", "no wear computed");
   d.section(2, "film");
-  d.entry(4, "cavitation", "mass_conserving", "JFO / Elrod-Adams: what partial flooding needs");
-  d.entry(4, "fill_fraction_history", "bdf2", "second order in time like the stepper");
-  d.entry(4, "faces", "linear_gap",
-          "second order along the sliding direction, as the examples (README.md, \"Example "
-          "engines\")");
-  d.entry(4, "fill_fraction_flux", "second_order", "limited second-order fill fraction");
+  if (e.splashLubricated) {
+    d.entry(4, "cavitation", "reynolds",
+            "flooded: p >= 0, as the B&S example (README.md, \"Example engines\")");
+    d.entry(4, "faces", "linear_gap", "face conductance exact for a gap linear between nodes");
+  } else {
+    d.entry(4, "cavitation", "mass_conserving", "JFO / Elrod-Adams: what partial flooding needs");
+    d.entry(4, "fill_fraction_history", "bdf2", "second order in time like the stepper");
+    d.entry(4, "faces", "linear_gap",
+            "second order along the sliding direction, as the examples (README.md, \"Example "
+            "engines\")");
+    d.entry(4, "fill_fraction_flux", "second_order", "limited second-order fill fraction");
+  }
   d.entry(4, "solver", "fast", "active-set solver");
   d.entry(4, "tolerance", "1.0e-8", "film residual, relative to the driving fluxes");
   d.entry(2, "tertiary_motion", "false", "EST: as the thesis' study");

@@ -160,6 +160,9 @@ class Estimator {
                     roundTo(kExampleOvality_um * B / kExampleBore_mm, 10.0),
                     "elliptic skirt section, D_thrust - D_pin: the gasoline example's 300 um x "
                     "bore/74.5 mm, to 10 um (as the B&S example's 260 um)");
+    e.minimumLineFromTop = t_.minimumClearanceLineFromTop;
+    e.splashLubricated = t_.splashLubricated;
+    e.lubricationNote = std::string("EST: ") + t_.lubricationWhy;
     e.oilGrade = r_.oilGrade ? lubrication::toString(lubrication::parseSaeGrade(*r_.oilGrade))
                              : t_.oilGrade;
     if (r_.oilGrade) {
@@ -217,7 +220,11 @@ const TypeRules& getRules(EngineType type) {
       {0.13, "the gasoline example's hot running clearance, 9.4 um on 74.5 mm (40 um cold with "
              "its thermal section); without a thermal section the key holds the running one"},
       "0W-30",
-      "the thesis' study oil"};
+      "the thesis' study oil",
+      {0.60, "the gasoline example's line 6 mm below the pin of its 30 mm skirt"},
+      false,
+      "partially flooded [T]: the film an oil-control ring leaves on a warm liner, 0.2-1.5 um, "
+      "as the gasoline example"};
   static const TypeRules smallAirCooled{
       "small air-cooled",
       50.0,
@@ -249,7 +256,12 @@ const TypeRules& getRules(EngineType type) {
       {0.81, "the B&S example's measured 53 um on 65.1 mm [T]: air-cooled cylinders run "
              "larger clearances"},
       "5W-30",
-      "B&S's all-temperature synthetic recommendation, as the B&S example"};
+      "B&S's all-temperature synthetic recommendation, as the B&S example",
+      {0.46, "the B&S example's line 3 mm below the pin of its 28 mm skirt (13 mm from the "
+             "top)"},
+      true,
+      "splash-lubricated: the dipper on the rod's cap throws sump oil over the bore, so the "
+      "skirt runs fully flooded, as the B&S example"};
   static const TypeRules diesel{
       "diesel",
       70.0,
@@ -279,10 +291,15 @@ const TypeRules& getRules(EngineType type) {
       makeCycle(1.30, 1.50, 1.70, 570.0, 130.0, -8.0, 60.0),
       "turbocharged: boost 1.5 bar, exhaust back pressure 1.7 bar; one Wiebe burn of 60 deg "
       "from 8 deg before TDC (no premixed peak)",
-      {0.60, "aluminium diesel pistons run larger clearances than gasoline ones for their "
-             "hotter crown"},
+      {0.20, "the gasoline example's running 0.13 per mille raised for a diesel piston's "
+             "hotter, heavier skirt (a new deck has no thermal section: the key holds the running "
+             "clearance); 0.6 per mille cold-clearance rules left this skirt rattling"},
       "5W-40",
-      "a diesel-approved multigrade"};
+      "a diesel-approved multigrade",
+      {0.60, "as the gasoline example"},
+      false,
+      "partially flooded [T]: the film an oil-control ring leaves on a warm liner, 0.2-1.5 um, "
+      "as the gasoline example"};
   switch (type) {
     case EngineType::PassengerCarGasoline:
       return gasoline;

@@ -61,6 +61,11 @@ struct TypeRules {
   Ratio clearancePerMilleOfBore;
   const char* oilGrade;
   const char* oilWhy;
+  Ratio minimumClearanceLineFromTop;  // of the skirt length: the barrel's zero-drop line
+  // Splash-lubricated (a dipper on the rod's cap): the skirt runs fully flooded, with
+  // Reynolds cavitation; otherwise the oil-control ring's film as a constant supply.
+  bool splashLubricated;
+  const char* lubricationWhy;
 };
 
 // The pin: a hollow steel tube of outer diameter D = (ratio) x bore, inner 0.6 D.
@@ -72,7 +77,6 @@ constexpr double kMotoredIntake_bar = 0.95, kMotoredExhaust_bar = 1.03;
 // Skirt profile and ovality scaled from the gasoline example (74.5 mm bore, 30 mm skirt).
 constexpr double kExampleBore_mm = 74.5, kExampleSkirt_mm = 30.0;
 constexpr double kExampleBarrel_um_per_mm2 = 0.12, kExampleOvality_um = 300.0;
-constexpr double kMinimumClearanceLineFromTop = 0.6;  // of the skirt length
 
 /// The rules of an engine type (one static set each).
 const TypeRules& getRules(EngineType type);
@@ -105,6 +109,9 @@ struct Engine {
   Value pinMass, pinInertia, rodMass, rodCom, rodInertia, crankMass, crankCom, crankInertia;
   Value speed, clearance, ovality, oilTemperature;
   std::string oilGrade, oilNote;
+  Ratio minimumLineFromTop;  // the barrel's zero-drop line, of the skirt length from its top
+  bool splashLubricated = false;
+  std::string lubricationNote;  // "EST: <why>" of the oil supply
   double pinOuter_mm = 0, pinInner_mm = 0, pinLength_mm = 0;
 };
 

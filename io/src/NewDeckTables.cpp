@@ -59,7 +59,7 @@ Profile makeSkirtProfile(const std::string& name, const Engine& e, double bore_m
   p.barrel_um_per_mm2 = roundSignificant(kExampleBarrel_um_per_mm2 * (kExampleSkirt_mm / Ls) *
                                              (kExampleSkirt_mm / Ls) * bore_mm / kExampleBore_mm,
                                          4);
-  p.minimumLine_mm = roundTo(top - kMinimumClearanceLineFromTop * Ls, 0.01);
+  p.minimumLine_mm = roundTo(top - e.minimumLineFromTop.value * Ls, 0.01);
   p.step_mm = niceStep(Ls / 60.0);
   const double block = 10.0 * p.step_mm;
   p.halfRange_mm =
@@ -69,14 +69,14 @@ Profile makeSkirtProfile(const std::string& name, const Engine& e, double bore_m
     << ", made by pistondyn new: radial drop below\n"
        "# the largest (reference) diameter against the height above the pin axis, cold, at the\n"
        "# deck's liner.reference_temperature_degC. EST: the gasoline example's parabolic barrel\n"
-       "# (0.12 um/mm^2, minimum-clearance line 60 % of its 30 mm skirt from the top) scaled to "
-       "this\n# skirt ("
-    << num(Ls) << " mm, +" << num(top) << " .. " << num(bottom) << " mm) and bore ("
-    << num(bore_mm) << " mm):\n"
+       "# (0.12 um/mm^2 on its 30 mm skirt) scaled to this skirt ("
+    << num(Ls) << " mm, +" << num(top) << " .. " << num(bottom) << " mm)\n# and bore ("
+    << num(bore_mm) << " mm), its minimum-clearance line " << ratio(e.minimumLineFromTop.value)
+    << " x the skirt length from the top\n# (" << e.minimumLineFromTop.why << "):\n"
     << "#   radial_drop_um = " << num(p.barrel_um_per_mm2) << " * (height_above_pin_mm "
     << (p.minimumLine_mm <= 0 ? "+ " : "- ") << num(std::abs(p.minimumLine_mm)) << ")^2\n"
-    << "# (0.12 um/mm^2 x (30 mm/skirt length)^2 x bore/74.5 mm, to 4 digits; the line at 60 % "
-       "of\n# the skirt length from its top), tabulated every "
+    << "# (0.12 um/mm^2 x (30 mm/skirt length)^2 x bore/74.5 mm, to 4 digits), tabulated "
+       "every "
     << num(p.step_mm) << " mm over " << num(-p.halfRange_mm) << " .. +" << num(p.halfRange_mm)
     << " mm so that the skirt\n# and the mirrored skirt are covered.\n"
     << "height_above_pin_mm,radial_drop_um\n";

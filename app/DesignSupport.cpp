@@ -13,6 +13,7 @@
 #include "pistondyn/io/DeckError.h"
 #include "pistondyn/io/ResultWriters.h"
 #include "pistondyn/io/SweepRun.h"
+#include "pistondyn/io/WarmStartFile.h"
 
 namespace pistondyn::app {
 
@@ -111,9 +112,13 @@ void writeDesignDeck(const design::DesignStudy& study, const std::vector<double>
   files.emplace_back("engine.yaml",
                      design::makeDeckWithOverrides(study.baseDeckPath, overrides, header));
   io::writeFilesAtomically(to.string(), files);
-  io::writeFilesAtomically((to / "run").string(),
-                           {{"cycle.csv", readWholeFile((from / "cycle.csv").string())},
-                            {"summary.json", readWholeFile((from / "summary.json").string())}});
+  std::vector<std::pair<std::string, std::string>> run = {
+      {"cycle.csv", readWholeFile((from / "cycle.csv").string())},
+      {"summary.json", readWholeFile((from / "summary.json").string())}};
+  // Where the best design's run ended: a later `run --warm-start` of its deck starts there.
+  if (fs::exists(from / io::kWarmStartFile))
+    run.emplace_back(io::kWarmStartFile, readWholeFile((from / io::kWarmStartFile).string()));
+  io::writeFilesAtomically((to / "run").string(), run);
 }
 
 }  // namespace pistondyn::app

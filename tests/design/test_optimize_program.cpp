@@ -130,6 +130,12 @@ TEST_F(OptimizeProgram, TheOptimumsDeckRunsToTheSameFigures) {
             result["optimum"]["objective"].get<double>());
   EXPECT_EQ(rerun["inputs"]["geometry"]["pin_offset_m"],
             stored["inputs"]["geometry"]["pin_offset_m"]);
+  // Where the optimum's run ended is kept with it: its deck starts there.
+  ASSERT_TRUE(fs::exists(dir_ / "out" / "optimum" / "run" / "warm_start.json"));
+  const std::string warm = "cd " + (dir_ / "elsewhere").string() + " && " + PISTONDYN_EXE +
+                           " run ../out/optimum/engine.yaml --out ../warm --quiet --no-plot"
+                           " --warm-start ../out/optimum/run > /dev/null";
+  EXPECT_EQ(std::system(warm.c_str()), 0);
 }
 
 TEST_F(OptimizeProgram, AFailedRunIsInfeasibleAndTheSearchGoesOn) {

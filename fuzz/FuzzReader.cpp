@@ -161,6 +161,24 @@ void checkResult(const pistondyn::mapping::StructuralCompliance& c) {
     require(c.y_m[i] > c.y_m[i - 1], "node heights not increasing");
 }
 
+// WarmStartFile.h: every number finite, the last cycle's two lists of one length, every element
+// record finite.
+void checkResult(const pistondyn::plugin::WarmStart& w) {
+  const auto& x = w.state;
+  for (const double v : {w.crankAngle_deg, w.outputStep_deg, x.lateral_m, x.tilt_rad,
+                         x.transverse_m, x.lateralRate_mps, x.tiltRate_radps,
+                         x.transverseRate_mps, x.crankSpeed_radps})
+    require(std::isfinite(v), "a non-finite warm-start value was accepted");
+  require(w.lastCycleLateral_m.size() == w.lastCycleTilt_rad.size(), "unequal last-cycle lists");
+  for (const auto* list : {&w.lastCycleLateral_m, &w.lastCycleTilt_rad})
+    for (const double v : *list)
+      require(std::isfinite(v), "a non-finite last-cycle value was accepted");
+  require(!w.lastCycleFmep_Pa || std::isfinite(*w.lastCycleFmep_Pa), "a non-finite fmep");
+  for (const auto& e : w.elements)
+    for (const double v : e.record)
+      require(std::isfinite(v), "a non-finite element record value was accepted");
+}
+
 template <class T>
 void checkResult(const T&) {}
 

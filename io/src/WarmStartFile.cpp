@@ -1,5 +1,6 @@
 #include "pistondyn/io/WarmStartFile.h"
 
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
@@ -42,8 +43,8 @@ class Reader {
   }
   double number(const Json& object, const char* key, const std::string& where = "") const {
     const Json& v = member(object, key, where);
-    if (!v.is_number())
-      fail(where + key + " must be a number");
+    if (!v.is_number() || !std::isfinite(v.get<double>()))
+      fail(where + key + " must be a finite number");
     return v.get<double>();
   }
   std::vector<double> numbers(const Json& object, const char* key, const std::string& where) const {
@@ -53,8 +54,8 @@ class Reader {
     std::vector<double> out;
     out.reserve(v.size());
     for (const Json& x : v) {
-      if (!x.is_number())
-        fail(where + key + " must be a list of numbers");
+      if (!x.is_number() || !std::isfinite(x.get<double>()))
+        fail(where + key + " must be a list of finite numbers");
       out.push_back(x.get<double>());
     }
     return out;
@@ -95,10 +96,13 @@ std::string makeWarmStartJson(const plugin::WarmStart& w) {
 }
 
 plugin::WarmStart readWarmStart(const std::string& dir) {
-  const std::string path = (std::filesystem::path(dir) / kWarmStartFile).string();
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec))
     throw std::runtime_error(dir + ": not a folder (a result folder of `pistondyn run`)");
+  return readWarmStartFile((std::filesystem::path(dir) / kWarmStartFile).string());
+}
+
+plugin::WarmStart readWarmStartFile(const std::string& path) {
   const std::optional<std::string> text = detail::readFileBytes(path);
   if (!text) {
     throw std::runtime_error(path + ": cannot be read (a result folder of `pistondyn run` "

@@ -31,6 +31,11 @@ std::string makeWarmStartJson(const plugin::WarmStart& end);
 /// length). Whether it fits a run is SimulationSettings' check (plugin::validateWarmStart).
 plugin::WarmStart readWarmStart(const std::string& dir);
 
+/// Reads one warm-start file (what readWarmStart() reads in a folder). Throws
+/// std::runtime_error starting with the file's path: not readable, not JSON, a key missing,
+/// not a number or a number out of double range, lists of unequal length.
+plugin::WarmStart readWarmStartFile(const std::string& file);
+
 /// Throws std::invalid_argument naming what does not fit when the deck's warm start
 /// (deck.simulation.warmStart) cannot start a run of its model: the settings' check
 /// (plugin::validateWarmStart) and every element record put into the model's default state

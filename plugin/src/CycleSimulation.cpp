@@ -196,6 +196,8 @@ class Advancer {
   virtual long getFailedEvaluations() const { return 0; }
   // Wall time in force evaluations [s] where the advancer can tell (0: it cannot).
   virtual double getRealizeTime_s() const { return 0.0; }
+  // The shortest step it takes [s] (0: any).
+  virtual double getMinStep_s() const { return 0.0; }
 };
 
 class SimbodyAdvancer final : public Advancer {
@@ -299,6 +301,7 @@ class StepperAdvancer final : public Advancer {
   double getRealizeTime_s() const override {
     return before_.realizeTime_s + stepper_->getStats().realizeTime_s;
   }
+  double getMinStep_s() const override { return options_.minStep_s; }
 
  private:
   void accumulate() {
@@ -332,6 +335,10 @@ void landOnCrankAngle(Advancer& integ, const mbd::CrankTrain& ct, double thetaTa
     if (std::abs(err) <= tol)
       return;
     const double speed = ct.getCrankSpeed_radps(s);
+    // Closer than the integrator's shortest step: landed (the stepper's floor is 1e-9 of a
+    // crank degree, so the row is within that of its angle).
+    if (speed > 0.0 && std::abs(err) / speed <= integ.getMinStep_s())
+      return;
     if (!(speed > 0.0)) {
       throw std::runtime_error(common::message("the free crank stopped or reversed (speed ", speed,
                                                " rad/s at t = ", s.getTime(),

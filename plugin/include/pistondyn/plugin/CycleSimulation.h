@@ -17,7 +17,8 @@
 ///
 /// Rows are taken at the crank angles start + k * step: with a constant-speed crank at
 /// the matching times, with a free crank by iterating the time until the crank angle
-/// is reached to 1e-12 rad (relative beyond 1 rad: 1e-12 |theta|). crank_angle_deg holds that
+/// is reached to 1e-12 rad (relative beyond 1 rad: 1e-12 |theta|), or with
+/// LinearlyImplicitBDF to within its shortest step (1e-9 of a crank degree). crank_angle_deg holds that
 /// nominal angle, unwrapped (it keeps growing past 720 deg over several cycles).
 ///
 /// Periodic steady state (SimulationSettings::untilPeriodic): cycles are run until two

@@ -159,6 +159,14 @@ std::string ResultFileSet::stage(const std::string& name) {
   return temporaryOf(dir_, name).string();
 }
 
+void ResultFileSet::stageText(const std::string& name, const std::string& text) {
+  std::ofstream out(stage(name), std::ios::binary);
+  out << text;
+  out.close();
+  if (!out)
+    throw std::runtime_error((fs::path(dir_) / name).string() + ": write failed");
+}
+
 void ResultFileSet::commit() {
   const fs::path folder(dir_);
   const std::size_t n = names_.size();
@@ -210,14 +218,8 @@ void ResultFileSet::commit() {
 void writeFilesAtomically(const std::string& dir,
                           const std::vector<std::pair<std::string, std::string>>& files) {
   ResultFileSet set(dir);
-  for (const auto& [name, content] : files) {
-    const std::string path = set.stage(name);
-    std::ofstream out(path, std::ios::binary);
-    out << content;
-    out.close();
-    if (!out)
-      throw std::runtime_error((fs::path(dir) / name).string() + ": write failed");
-  }
+  for (const auto& [name, content] : files)
+    set.stageText(name, content);
   set.commit();
 }
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <stdexcept>
 
@@ -336,19 +335,9 @@ RunOutcome runModel(const EngineDeck& deck, plugin::PistonAssemblyModel& model,
   if (linerFilm)
     o.linerOilLastCycle = linerFilm->getLastCycleBalance();
   if (files) {
-    const std::string path = files->stage("summary.json");
-    std::ofstream out(path, std::ios::binary);
-    out << makeSummaryJson(deck, o);
-    out.close();
-    if (!out)
-      throw std::runtime_error(outDir + "/summary.json: write failed");
-    if (o.stats.endState) {  // the run's end, for a later run's warm start
-      std::ofstream end(files->stage(kWarmStartFile), std::ios::binary);
-      end << makeWarmStartJson(*o.stats.endState);
-      end.close();
-      if (!end)
-        throw std::runtime_error(outDir + "/" + kWarmStartFile + ": write failed");
-    }
+    files->stageText("summary.json", makeSummaryJson(deck, o));
+    if (o.stats.endState)  // the run's end, for a later run's warm start
+      files->stageText(kWarmStartFile, makeWarmStartJson(*o.stats.endState));
     files->commit();
   }
   return o;

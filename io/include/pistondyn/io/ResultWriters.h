@@ -86,6 +86,9 @@ class ResultFileSet {
   const std::string& getDirectory() const { return dir_; }  ///< the folder
   /// The temporary path to write result `name` to: `DIR/.NAME.partial`.
   std::string stage(const std::string& name);
+  /// Stages result `name` with the whole of `text`; throws std::runtime_error ("DIR/NAME: write
+  /// failed") if it cannot be written.
+  void stageText(const std::string& name, const std::string& text);
   /// Renames every staged file to its name, replacing earlier results of that name. On
   /// any failure the folder is restored as it was (old results back, no new or temporary
   /// files) and std::runtime_error is thrown.

@@ -335,15 +335,15 @@ void landOnCrankAngle(Advancer& integ, const mbd::CrankTrain& ct, double thetaTa
     if (std::abs(err) <= tol)
       return;
     const double speed = ct.getCrankSpeed_radps(s);
-    // Closer than the integrator's shortest step: landed (the stepper's floor is 1e-9 of a
-    // crank degree, so the row is within that of its angle).
-    if (speed > 0.0 && std::abs(err) / speed <= integ.getMinStep_s())
-      return;
     if (!(speed > 0.0)) {
       throw std::runtime_error(common::message("the free crank stopped or reversed (speed ", speed,
                                                " rad/s at t = ", s.getTime(),
                                                " s); raise the speed or lower the load"));
     }
+    // Closer than the integrator's shortest step: landed (the stepper's floor is 1e-9 of a
+    // crank degree, so the row is within that of its angle).
+    if (std::abs(err) / speed <= integ.getMinStep_s())
+      return;
     t = s.getTime() + err / speed;
   }
   throw std::runtime_error(

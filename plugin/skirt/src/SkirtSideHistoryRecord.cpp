@@ -13,11 +13,18 @@ void append(const Array& a, std::vector<double>& out) {
   out.insert(out.end(), a.data(), a.data() + a.size());
 }
 
+// A value that is there or not: an array of one value, or of none.
+void appendOptional(bool present, double value, std::vector<double>& out) {
+  out.push_back(present ? 1.0 : 0.0);
+  if (present)
+    out.push_back(value);
+}
+
 [[noreturn]] void fail(const std::string& what) {
   throw std::invalid_argument("skirt side record: " + what);
 }
 
-// One array: its length (checked against `sizes` when they are given), then its values.
+// One array: its length (with perNode: none or one value per film node), then its values.
 template <class Array>
 Array read(const std::vector<double>& record, std::size_t& offset, const char* name,
            std::size_t filmNodes, bool perNode) {
@@ -42,29 +49,6 @@ Array read(const std::vector<double>& record, std::size_t& offset, const char* n
   return a;
 }
 
-}  // namespace
-
-void appendSkirtSideRecord(const SkirtSideHistory& h, std::vector<double>& out) {
-  append(h.film.last.fillFraction, out);
-  append(h.film.last.expectedGap_m, out);
-  append(h.film.earlier.fillFraction, out);
-  append(h.film.earlier.expectedGap_m, out);
-  const bool earlier = !h.film.earlier.empty();
-  out.push_back(earlier ? 1.0 : 0.0);
-  if (earlier)
-    out.push_back(h.film.earlierStep_s);
-  append(h.liner.volume_m3, out);
-  const bool liner = !h.liner.empty();
-  out.push_back(liner ? 1.0 : 0.0);
-  if (liner)
-    out.push_back(h.liner.pinHeight_m);
-  append(h.elastic.gapTerm_m, out);
-  append(h.elastic.structural_m, out);
-  append(h.elastic.structuralRate_mps, out);
-}
-
-namespace {
-
 // One film point: its fill fraction and expected gap.
 lubrication::FilmHistoryPoint readFilmPoint(const std::vector<double>& record,
                                             std::size_t& offset, std::size_t filmNodes) {
@@ -81,6 +65,19 @@ lubrication::FilmHistoryPoint readFilmPoint(const std::vector<double>& record,
 }
 
 }  // namespace
+
+void appendSkirtSideRecord(const SkirtSideHistory& h, std::vector<double>& out) {
+  append(h.film.last.fillFraction, out);
+  append(h.film.last.expectedGap_m, out);
+  append(h.film.earlier.fillFraction, out);
+  append(h.film.earlier.expectedGap_m, out);
+  appendOptional(!h.film.earlier.empty(), h.film.earlierStep_s, out);
+  append(h.liner.volume_m3, out);
+  appendOptional(!h.liner.empty(), h.liner.pinHeight_m, out);
+  append(h.elastic.gapTerm_m, out);
+  append(h.elastic.structural_m, out);
+  append(h.elastic.structuralRate_mps, out);
+}
 
 SkirtSideHistory readSkirtSideRecord(const std::vector<double>& record, std::size_t& offset,
                                      std::size_t filmNodes) {

@@ -65,6 +65,12 @@ struct SkirtSideSolver::Impl {
     return settings.lubrication.cavitation == lubrication::CavitationModel::MassConserving;
   }
 
+  // A film solved again at the instant of its history (a restart from an accepted state, a
+  // warm start): no time has passed since the history's last point.
+  static bool atHistoryInstant(const SkirtSideConditions& c, const SkirtSideHistory& history) {
+    return !(c.stepSinceHistory_s > 0.0) && !history.film.empty();
+  }
+
   // The film inputs of an evaluation: sliding velocities, viscosity, supply, derivatives wanted,
   // the film's history.
   void setInputs(const SkirtSideMotion& motion, const SkirtSideConditions& c,
@@ -97,12 +103,11 @@ struct SkirtSideSolver::Impl {
     in.timeStep_s = c.stepSinceHistory_s > 0.0 ? c.stepSinceHistory_s
                                                : std::numeric_limits<double>::infinity();
     const double lastStep_s = history.film.earlierStep_s;
-    if (in.history && !(c.stepSinceHistory_s > 0.0) && !history.film.empty() &&
-        std::isfinite(lastStep_s) && lastStep_s > 0.0) {
-      // Solved again at the instant of its history (a restart from an accepted state, a warm
-      // start): a first-order step of the history's own last length from its last point, so
-      // that the fill fraction moves by what one step moves it - not the steady film, which
-      // would redistribute the oil the film holds. The history itself is kept (advanceHistory).
+    if (in.history && atHistoryInstant(c, history) && std::isfinite(lastStep_s) &&
+        lastStep_s > 0.0) {
+      // A first-order step of the history's own last length from its last point, so that the
+      // fill fraction moves by what one step moves it - not the steady film, which would
+      // redistribute the oil the film holds. The history itself is kept (advanceHistory).
       sameInstant.last = history.film.last;
       in.history = &sameInstant;
       in.timeStep_s = lastStep_s;
@@ -191,13 +196,11 @@ struct SkirtSideSolver::Impl {
     out.historyAdvanced = massConserving();
     if (!out.historyAdvanced)
       return;
-    const double dt = c.stepSinceHistory_s;
-    if (dt <= 0.0 && !history.film.empty()) {
-      // The instant the history was taken at, solved again (a restart from an accepted state,
-      // a warm start): no time has passed for the film to change what it holds.
-      out.next = history;
+    if (atHistoryInstant(c, history)) {
+      out.next = history;  // no time has passed for the film to change what it holds
       return;
     }
+    const double dt = c.stepSinceHistory_s;
     if (linerOil) {
       const lubrication::FilmResult& f = results.film;
       const EdgeOutflows flows{&f.edgeOutflowYMin_m3ps, &f.edgeOutflowYMax_m3ps,

@@ -177,6 +177,14 @@ TEST(LubricatedSkirt, FrictionWorkIsTheIntegralOfFrictionPower) {
               run.stats.cycleFmep_Pa[1] / 1e3);
 }
 
+// One cycle of a model with the example deck's stepper: its rows and the run's figures.
+std::pair<plugin::ResultTable, plugin::SimulationStats> runOneCycle(
+    plugin::PistonAssemblyModel& model) {
+  plugin::CycleSimulation sim(model, ts::deckStepperSettings(1));
+  plugin::ResultTable table = sim.run();
+  return {std::move(table), sim.getStats()};
+}
+
 // Issue 12: the two sides solved on two threads give the serial run's results. The sides
 // share only read-only data and are summed in the same order, so the rows must agree to the
 // last bit; 1e-12 relative is the issue's bound. A starved film (mass-conserving, 0.5 um
@@ -186,14 +194,7 @@ TEST(LubricatedSkirt, ParallelSidesGiveTheSerialResults) {
     plugin::LubricatedSkirtParameters p = ts::exampleSkirtParameters(16, 12);
     p.supplyFilm.constant_m = 0.5e-6;
     p.parallelSides = parallel;
-    ts::SkirtModel setup = ts::makeGasolineSkirtModel(16, 12, &p);
-    plugin::SimulationSettings s;
-    s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF;
-    s.outputStep_deg = 1.0;
-    s.cycles = 1;
-    plugin::CycleSimulation sim(*setup.model, s);
-    plugin::ResultTable table = sim.run();
-    return std::make_pair(table, sim.getStats());
+    return runOneCycle(*ts::makeGasolineSkirtModel(16, 12, &p).model);
   };
   const auto [serial, serialStats] = run(false);
   const auto [parallel, parallelStats] = run(true);
@@ -227,24 +228,10 @@ TEST(LubricatedSkirt, AFreeCrankOnAHugeFlywheelRunsThePrescribedCycle) {
   auto run = [](bool free) {
     plugin::LubricatedSkirtParameters p = ts::exampleSkirtParameters(16, 12);
     p.supplyFilm.constant_m = std::numeric_limits<double>::infinity();
-    ts::SkirtModel setup = ts::makeGasolineSkirtModel(16, 12, &p);
-    if (free) {
-      mbd::EngineDescription e = setup.engine;
-      e.drive.mode = mbd::CrankDrive::Mode::Free;
-      e.drive.flywheelInertia_kgm2 = 1e4;
-      setup.model = std::make_unique<plugin::PistonAssemblyModel>(e);
-      const io::EngineDeck deck = ts::loadGasolineSkirtDeck(16, 12);
-      setup.model->addElement(std::make_unique<plugin::GasForceElement>(
-          *deck.cylinderPressure, deck.crankcasePressure_Pa));
-      setup.model->addElement(std::make_unique<plugin::LubricatedSkirtElement>(p));
-    }
-    plugin::SimulationSettings s;
-    s.integrator = plugin::SimulationSettings::Integrator::LinearlyImplicitBDF;
-    s.outputStep_deg = 1.0;
-    s.cycles = 1;
-    plugin::CycleSimulation sim(*setup.model, s);
-    plugin::ResultTable table = sim.run();
-    return std::make_pair(table, sim.getStats());
+    mbd::CrankDrive drive = ts::loadGasolineSkirtDeck(16, 12).engine.drive;
+    drive.mode = mbd::CrankDrive::Mode::Free;
+    drive.flywheelInertia_kgm2 = 1e4;
+    return runOneCycle(*ts::makeGasolineSkirtModel(16, 12, &p, free ? &drive : nullptr).model);
   };
   const auto [prescribed, prescribedStats] = run(false);
   const auto [free, freeStats] = run(true);

@@ -98,14 +98,17 @@ inline plugin::SimulationSettings deckStepperSettings(int cycles) {
   return s;
 }
 
-// The example engine (the deck's, with its skirt range and tertiary motion off) with the
-// gas force and a lubricated skirt of `custom` parameters, or of the example's on an
-// nPhi x nY grid.
-inline SkirtModel makeGasolineSkirtModel(
-    int nPhi, int nY, const plugin::LubricatedSkirtParameters* custom = nullptr) {
+// The example engine (the deck's, with its skirt range and tertiary motion off; its crank
+// drive replaced by `drive` when given) with the gas force and a lubricated skirt of `custom`
+// parameters, or of the example's on an nPhi x nY grid.
+inline SkirtModel makeGasolineSkirtModel(int nPhi, int nY,
+                                         const plugin::LubricatedSkirtParameters* custom = nullptr,
+                                         const mbd::CrankDrive* drive = nullptr) {
   const io::EngineDeck deck = loadGasolineSkirtDeck(nPhi, nY);
   SkirtModel m;
   m.engine = deck.engine;
+  if (drive)
+    m.engine.drive = *drive;
   m.model = std::make_unique<plugin::PistonAssemblyModel>(m.engine);
   m.model->addElement(
       std::make_unique<plugin::GasForceElement>(*deck.cylinderPressure, deck.crankcasePressure_Pa));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <cmath>
 #include <memory>
 #include <numeric>
@@ -198,6 +199,9 @@ class Advancer {
   virtual double getRealizeTime_s() const { return 0.0; }
   // The shortest step it takes [s] (0: any).
   virtual double getMinStep_s() const { return 0.0; }
+  // Sum of the accepted steps' local error estimates on the pose [m] (LinearlyImplicitStepper
+  // Stats::poseErrorSum_m); NaN where the advancer does not estimate it.
+  virtual double getPoseErrorSum_m() const { return std::numeric_limits<double>::quiet_NaN(); }
 };
 
 class SimbodyAdvancer final : public Advancer {
@@ -302,6 +306,9 @@ class StepperAdvancer final : public Advancer {
     return before_.realizeTime_s + stepper_->getStats().realizeTime_s;
   }
   double getMinStep_s() const override { return options_.minStep_s; }
+  double getPoseErrorSum_m() const override {
+    return before_.poseErrorSum_m + stepper_->getStats().poseErrorSum_m;
+  }
 
  private:
   void accumulate() {
@@ -311,6 +318,7 @@ class StepperAdvancer final : public Advancer {
     before_.rejectedSteps += s.rejectedSteps;
     before_.failedEvaluations += s.failedEvaluations;
     before_.realizeTime_s += s.realizeTime_s;
+    before_.poseErrorSum_m += s.poseErrorSum_m;
   }
   const PistonAssemblyModel& model_;
   LinearlyImplicitStepperOptions options_;
@@ -350,8 +358,8 @@ void landOnCrankAngle(Advancer& integ, const mbd::CrankTrain& ct, double thetaTa
       common::message("could not land on crank angle ", thetaTarget * 180.0 / M_PI, " deg"));
 }
 
-// The steps, rejected steps and realizations of the cycle that closed now: the integrator's
-// counts since the previous cycle closed (or since the start).
+// The steps, rejected steps, realizations and step error estimate of the cycle that closed
+// now: the integrator's figures since the previous cycle closed (or since the start).
 void recordCycleCounts(const Advancer& integ, SimulationStats& stats) {
   const auto sum = [](const std::vector<long>& v) {
     return std::accumulate(v.begin(), v.end(), 0L);
@@ -359,6 +367,10 @@ void recordCycleCounts(const Advancer& integ, SimulationStats& stats) {
   stats.cycleIntegratorSteps.push_back(integ.getSteps() - sum(stats.cycleIntegratorSteps));
   stats.cycleRejectedSteps.push_back(integ.getRejectedSteps() - sum(stats.cycleRejectedSteps));
   stats.cycleRealizations.push_back(integ.getRealizations() - sum(stats.cycleRealizations));
+  const double errorSum_um = 1e6 * integ.getPoseErrorSum_m();
+  stats.cycleStepErrorEstimate_um.push_back(
+      errorSum_um - std::accumulate(stats.cycleStepErrorEstimate_um.begin(),
+                                    stats.cycleStepErrorEstimate_um.end(), 0.0));
 }
 
 // The run's end as a warm start: the state of its last row (a cycle's last) and the pose of

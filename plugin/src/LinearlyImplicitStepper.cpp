@@ -259,6 +259,15 @@ struct LinearlyImplicitStepper::Impl {
     return nq + nu > 0 ? std::sqrt(sum / (nq + nu)) : 0.0;
   }
 
+  // The pose part of a step's local error estimate `scale` v [m]: the largest over the free q
+  // of the error times its pose lever (positionTolerance_m / absTol).
+  double poseError(const Eigen::VectorXd& v, double scale) const {
+    double largest = 0.0;
+    for (int i = 0; i < nq; ++i)
+      largest = std::max(largest, std::abs(scale * v[i]) * options.positionTolerance_m / absTol[i]);
+    return largest;
+  }
+
   // Error constants (solution error / y''' or y'') of the corrector and of the predictor
   // for the current step pattern; the estimate is Ec / (Ec - Ep) * (y1 - yp).
   double errorFactor(double h, int order) const {
@@ -450,8 +459,8 @@ struct LinearlyImplicitStepper::Impl {
 
     // Local error estimate from the corrector-predictor difference.
     delta = y - yp;
-    const double err =
-        weightedNorm(delta, std::abs(order == 3 ? factor3 : errorFactor(h, order)));
+    const double errorScale = std::abs(order == 3 ? factor3 : errorFactor(h, order));
+    const double err = weightedNorm(delta, errorScale);
     const double exponent = 1.0 / (order + 1);
     const double grow = err > 0.0 ? 0.9 * std::pow(err, -exponent) : 2.0;
     if (err > 1.0) {
@@ -463,6 +472,7 @@ struct LinearlyImplicitStepper::Impl {
     failuresInRow = 0;
     lastFailure.clear();
     ++stats.steps;
+    stats.poseErrorSum_m += poseError(delta, errorScale);
     ++jacobianAge;
     trial.autoUpdateDiscreteVariables();
     if (nz > 0)

@@ -593,6 +593,11 @@ TEST_F(SkirtScratchDeck, EveryCycleIsSummarisedAndANonPeriodicRunReportsItsLastC
   EXPECT_EQ(total("cycle_rejected_steps"), json["rejected_steps"].get<long>());
   EXPECT_EQ(total("cycle_force_evaluations"), r.stats.realizations);
   EXPECT_GT(json["cycle_integrator_steps"][1].get<long>(), 720 / 0.25 - 1);  // the 0.25 deg cap
+  // The stepper's step error estimate per cycle: positive, finite, the last one the results'.
+  ASSERT_EQ(json["cycle_step_error_estimate_um"].size(), 2u);
+  for (const auto& e : json["cycle_step_error_estimate_um"])
+    EXPECT_GT(e.get<double>(), 0.0);
+  EXPECT_EQ(json["step_error_estimate_um"], json["cycle_step_error_estimate_um"][1]);
   expectMeanAndSpread("max_abs_u_lat_um", maxULat_um, 1e-9);
   // Every figure of the last cycle is averaged, none of the deck's own (the same in each).
   for (const auto& [key, value] : last["mean"].items())

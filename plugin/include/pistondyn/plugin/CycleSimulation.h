@@ -221,6 +221,11 @@ struct SimulationStats {
   std::vector<long> cycleIntegratorSteps;
   std::vector<long> cycleRejectedSteps;      ///< see cycleIntegratorSteps
   std::vector<long> cycleRealizations;       ///< see cycleIntegratorSteps
+  /// Per cycle run: the step error estimate of the pose [um], the sum of the cycle's accepted
+  /// steps' local error estimates (LinearlyImplicitStepperStats::poseErrorSum_m): an estimate
+  /// of the error the cycle's steps add to the lateral motion and tilt x skirt length (within
+  /// a factor of 3 on a test problem). NaN with Simbody's integrators (not estimated).
+  std::vector<double> cycleStepErrorEstimate_um;
 };
 
 /// Runs a model over whole cycles (the documentation of CycleSimulation.h).

@@ -110,7 +110,8 @@ void addFidelityOption(CLI::App& command, std::string& fidelity) {
   command
       .add_option("--fidelity", fidelity,
                   "full: the deck as written (default); preview: a quick look with the film "
-                  "grid halved each way (not below 16 x 12 nodes per side), recorded among the "
+                  "grid coarsened to 3/8 of its nodes around and 5/6 along the skirt (not "
+                  "below 16 x 12 nodes per side), recorded among the "
                   "overrides and inputs of summary.json (sweeps: of every case, and in "
                   "sweep.json) and said by run's summary; a liner without a film grid runs "
                   "the same at both")

@@ -321,9 +321,10 @@ void writeSimulation(DeckText& d) {
           "... and u_lat, tilt x skirt length within 0.2 um");
   d.entry(2, "output_step_deg", "1.0", "one row per crank degree");
   d.entry(2, "integrator", "linearly_implicit_bdf2", "the squeeze film is stiff");
-  d.entry(2, "pose_tolerance_nm", "10",
+  d.entry(2, "stepper_order", "3", "BDF3: the slow secondary motion's error falls as h^3");
+  d.entry(2, "pose_tolerance_nm", "1",
           "stepper's per-step error on lateral, tertiary, tilt x L");
-  d.entry(2, "max_step_deg", "0.25", "largest step [deg of crank], as the examples");
+  d.entry(2, "max_step_deg", "1", "largest step [deg of crank], as the examples");
   d.entry(2, "gravity_mps2", "9.80665", "cylinder vertical, head up");
 }
 

@@ -419,14 +419,14 @@ class FirstHourSkirtEdges : public SkirtScratchDeck {};
 
 // --fidelity preview through the program: check says what the preview changes; a run
 // records it in summary.json (fidelity, fidelity_note, the grid among inputs and
-// overrides) and in the printed summary. The deck set to 32 x 24 becomes 16 x 12.
+// overrides) and in the printed summary. The deck set to 32 x 24 becomes 16 x 20.
 TEST_F(FirstHourSkirtEdges, PreviewFidelityIsRecordedAndPrinted) {
   const std::string grid =
       " --set liner.grid.nodes_circumferential=32 --set liner.grid.nodes_axial=24";
   const ProgramRun check = invokeInScratch("check " + deck() + grid + " --fidelity preview");
   ASSERT_EQ(check.exitCode, 0) << check.err;
-  EXPECT_NE(check.out.find("fidelity preview: film grid 16 x 12 nodes per side, the deck's 32 x "
-                           "24 halved"),
+  EXPECT_NE(check.out.find("fidelity preview: film grid 16 x 20 nodes per side, the deck's 32 x "
+                           "24 coarsened"),
             std::string::npos)
       << check.out;
   const fs::path out = dir_ / "results";
@@ -437,12 +437,12 @@ TEST_F(FirstHourSkirtEdges, PreviewFidelityIsRecordedAndPrinted) {
       << programStderr();
   const auto summary = nlohmann::json::parse(readFile(out / "summary.json"));
   EXPECT_EQ(summary["fidelity"], "preview");
-  EXPECT_NE(summary["fidelity_note"].get<std::string>().find("film grid 16 x 12"),
+  EXPECT_NE(summary["fidelity_note"].get<std::string>().find("film grid 16 x 20"),
             std::string::npos);
   EXPECT_EQ(summary["inputs"]["liner"]["grid"]["nodes_circumferential"], 16);
-  EXPECT_EQ(summary["inputs"]["liner"]["grid"]["nodes_axial"], 12);
-  EXPECT_EQ(summary["overrides"].back(), "liner.grid.nodes_axial=12");
-  EXPECT_NE(readFile(dir_ / "stdout.txt").find("fidelity preview: film grid 16 x 12"),
+  EXPECT_EQ(summary["inputs"]["liner"]["grid"]["nodes_axial"], 20);
+  EXPECT_EQ(summary["overrides"].back(), "liner.grid.nodes_axial=20");
+  EXPECT_NE(readFile(dir_ / "stdout.txt").find("fidelity preview: film grid 16 x 20"),
             std::string::npos)
       << readFile(dir_ / "stdout.txt");
   // The report's inputs table names the preview as the grid's source (the user's own grid
@@ -512,11 +512,11 @@ TEST_F(FirstHourSkirtEdges, PreviewSweepSharesThePreviewGrid) {
   const auto sweep = nlohmann::json::parse(readFile(dir_ / "preview" / "sweep.json"));
   const std::string text = sweep.dump();
   EXPECT_NE(text.find("liner.grid.nodes_circumferential=16"), std::string::npos) << text;
-  EXPECT_NE(text.find("liner.grid.nodes_axial=12"), std::string::npos) << text;
+  EXPECT_NE(text.find("liner.grid.nodes_axial=20"), std::string::npos) << text;
   const auto summary =
       nlohmann::json::parse(readFile(dir_ / "preview" / "case_0001" / "summary.json"));
   EXPECT_EQ(summary["inputs"]["liner"]["grid"]["nodes_circumferential"], 16);
-  EXPECT_EQ(summary["inputs"]["liner"]["grid"]["nodes_axial"], 12);
+  EXPECT_EQ(summary["inputs"]["liner"]["grid"]["nodes_axial"], 20);
   // The full sweep into the same folder is another sweep: refused, never mixed.
   EXPECT_EQ(invokeInScratch("sweep sweep.yaml --out preview --quiet --no-plot").exitCode, 2);
   std::ofstream(dir_ / "grid.yaml") << "base_deck: engine.yaml\n"

@@ -57,8 +57,8 @@ TEST_F(NewDeckProgram, AShortRunOfANewDeckFinishesWithFiniteResults) {
 namespace {
 
 // A new deck of every type runs to a periodic state (issue 37: `run` gives a periodic result):
-// the rules' running clearance and oil supply, at the deck's preview fidelity (32 x 24 nodes
-// per side; on 16 x 12 the pose keeps moving by more than the deck's 0.2 um), at most 6 cycles.
+// the rules' running clearance and oil supply, at the deck's preview fidelity (24 x 40 nodes
+// per side), at most 6 cycles.
 TEST_F(NewDeckProgram, ANewDeckOfEveryTypeBecomesPeriodic) {
   for (const char* engine : {"--type gasoline --bore-mm 80 --stroke-mm 86",
                              "--type small-air-cooled --bore-mm 68 --stroke-mm 54",

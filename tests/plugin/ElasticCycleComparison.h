@@ -63,7 +63,7 @@ inline plugin::ResultTable lastCycleOf(plugin::ResultTable t) {
 // Two cycles from the deck's start with the deck's stepper; the second cycle's rows.
 inline CycleOutcome runTwoCycles(const plugin::LubricatedSkirtParameters& p) {
   SkirtModel m = makeGasolineSkirtModel(32, 24, &p);
-  plugin::SimulationSettings s = deckStepperSettings(2);
+  plugin::SimulationSettings s = bdf2StepperSettings(2);
   s.untilPeriodic = false;
   plugin::CycleSimulation sim(*m.model, s);
   plugin::ResultTableSink table;

@@ -40,7 +40,7 @@ ElasticRun runElastic(bool parallel) {
   EXPECT_TRUE(p.elasticSkirt.enabled);
   EXPECT_EQ(p.parallelSides, parallel);
   ts::SkirtModel m = ts::makeGasolineSkirtModel(16, 12, &p);
-  plugin::CycleSimulation sim(*m.model, ts::deckStepperSettings(1));
+  plugin::CycleSimulation sim(*m.model, ts::bdf2StepperSettings(1));
   ElasticRun r;
   r.table = sim.run();
   r.stats = sim.getStats();

@@ -180,7 +180,7 @@ TEST(LubricatedSkirt, FrictionWorkIsTheIntegralOfFrictionPower) {
 // One cycle of a model with the example deck's stepper: its rows and the run's figures.
 std::pair<plugin::ResultTable, plugin::SimulationStats> runOneCycle(
     plugin::PistonAssemblyModel& model) {
-  plugin::CycleSimulation sim(model, ts::deckStepperSettings(1));
+  plugin::CycleSimulation sim(model, ts::bdf2StepperSettings(1));
   plugin::ResultTable table = sim.run();
   return {std::move(table), sim.getStats()};
 }

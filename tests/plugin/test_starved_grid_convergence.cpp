@@ -55,7 +55,7 @@ double workBetweenRows(const std::vector<double>& time, const std::vector<double
 
 Outcome run(const plugin::LubricatedSkirtParameters& p) {
   ts::SkirtModel m = ts::makeGasolineSkirtModel(p.grid.nPhi, p.grid.nY, &p);
-  plugin::SimulationSettings s = ts::deckStepperSettings(3);
+  plugin::SimulationSettings s = ts::bdf2StepperSettings(3);
   s.untilPeriodic = false;
   plugin::CycleSimulation sim(*m.model, s);
   plugin::ResultTableSink table;

@@ -258,8 +258,8 @@ void writeLiner(DeckText& d, const Engine& e) {
           "EST: the temperature the shapes are measured at");
   d.section(2, "grid", "numerics (each skirt side), not engine data");
   d.entry(4, "arc_width_deg", "80.0", "the film region around the thrust / anti-thrust axis");
-  d.entry(4, "nodes_circumferential", "64", "nodes around the arc (--fidelity preview: 32)");
-  d.entry(4, "nodes_axial", "48", "nodes along the skirt (--fidelity preview: 24)");
+  d.entry(4, "nodes_circumferential", "64", "nodes around the arc (--fidelity preview: 24)");
+  d.entry(4, "nodes_axial", "48", "nodes along the skirt (--fidelity preview: 40)");
   d.entry(4, "axial_clustering", "0.0", "uniform axial spacing, as the examples");
   d.section(2, "skirt_profile");
   d.entry(4, "axial_profile_file", "skirt_profile.csv",

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numeric>
 #include <optional>
@@ -202,6 +202,9 @@ class Advancer {
   // Sum of the accepted steps' local error estimates on the pose [m] (LinearlyImplicitStepper
   // Stats::poseErrorSum_m); NaN where the advancer does not estimate it.
   virtual double getPoseErrorSum_m() const { return std::numeric_limits<double>::quiet_NaN(); }
+  // After a restart from an earlier state: the sum as it was at that state (the steps beyond
+  // it are discarded, so their error estimates must not count).
+  virtual void resetPoseErrorSum_m(double /*sum_m*/) {}
 };
 
 class SimbodyAdvancer final : public Advancer {
@@ -309,6 +312,9 @@ class StepperAdvancer final : public Advancer {
   double getPoseErrorSum_m() const override {
     return before_.poseErrorSum_m + stepper_->getStats().poseErrorSum_m;
   }
+  void resetPoseErrorSum_m(double sum_m) override {
+    before_.poseErrorSum_m = sum_m - stepper_->getStats().poseErrorSum_m;
+  }
 
  private:
   void accumulate() {
@@ -331,12 +337,15 @@ class StepperAdvancer final : public Advancer {
 // the integrator from the previous row's state.
 void landOnCrankAngle(Advancer& integ, const mbd::CrankTrain& ct, double thetaTarget) {
   const SimTK::State start = integ.getState();
+  const double errorSumAtStart_m = integ.getPoseErrorSum_m();
   const double tol = 1e-12 * std::max(1.0, std::abs(thetaTarget));
   double t =
       start.getTime() + (thetaTarget - ct.getCrankAngle_rad(start)) / ct.getCrankSpeed_radps(start);
   for (int iter = 0; iter < 50; ++iter) {
-    if (t < integ.getTime())
+    if (t < integ.getTime()) {
       integ.initialize(start);
+      integ.resetPoseErrorSum_m(errorSumAtStart_m);
+    }
     integ.advanceTo(t);
     const SimTK::State& s = integ.getState();
     const double err = thetaTarget - ct.getCrankAngle_rad(s);

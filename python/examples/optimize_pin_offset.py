@@ -24,6 +24,7 @@ FAST = {
     "simulation.cycles": 1, "simulation.until_periodic": False,
     "liner.grid.nodes_circumferential": 16, "liner.grid.nodes_axial": 12,
     "simulation.stepper_order": 3, "simulation.max_step_deg": 1,
+    "simulation.pose_tolerance_nm": 10,
     "liner.film.fallback_to_reference": False, "simulation.jacobian_reuse_steps": 20,
     "liner.film.cavitation": "reynolds", "liner.oil_supply.film_um": None,
     "liner.oil_supply.fully_flooded": True, "simulation.output_step_deg": 2,

@@ -13,7 +13,7 @@ inline std::string fastSkirtSet(const std::string& indent = "  ") {
   for (const char* kv :
        {"simulation.cycles: 1", "simulation.until_periodic: false",
         "liner.grid.nodes_circumferential: 16", "liner.grid.nodes_axial: 12",
-        "simulation.stepper_order: 3", "simulation.max_step_deg: 1",
+        "simulation.stepper_order: 3", "simulation.max_step_deg: 1", "simulation.pose_tolerance_nm: 10",
         "liner.film.fallback_to_reference: false", "simulation.jacobian_reuse_steps: 20",
         "liner.film.cavitation: reynolds", "liner.oil_supply.film_um: null",
         "liner.oil_supply.fully_flooded: true", "simulation.output_step_deg: 2"})

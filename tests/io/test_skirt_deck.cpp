@@ -259,14 +259,16 @@ TEST_F(SkirtScratchDeck, TheIdealGuideIsSelectableFromTheSkirtDeck) {
 }
 
 // --fidelity preview: the film grid coarsened to 3/8 of the nodes around the arc and 5/6 along
-// the skirt (rounded up), not below 16 x 12, never finer than the deck's; the preview's assignments follow the user's overrides, its grid is
-// what the element gets, and the note says what changed. The ideal guide has no grid.
+// the skirt (rounded up), not below 16 x 12, never finer than the deck's; the preview's
+// assignments follow the user's overrides, its grid is what the element gets, and the note
+// says what changed. The ideal guide has no grid.
 TEST_F(SkirtScratchDeck, PreviewFidelityCoarsensTheFilmGridNotBelowSixteenByTwelve) {
   struct Case {
     int phi, y, previewPhi, previewY;
   };
   for (const Case& c : {Case{64, 48, 24, 40}, Case{32, 24, 16, 20}, Case{33, 25, 16, 21},
-                        Case{48, 36, 18, 30}, Case{20, 14, 16, 12}, Case{10, 8, 10, 8}}) {
+                        Case{48, 36, 18, 30}, Case{40, 13, 16, 12}, Case{20, 14, 16, 12},
+                        Case{10, 8, 10, 8}}) {
     SCOPED_TRACE(std::to_string(c.phi) + " x " + std::to_string(c.y));
     const std::vector<std::string> user = {
         "liner.grid.nodes_circumferential=" + std::to_string(c.phi),

@@ -60,7 +60,8 @@ inline plugin::ResultTable lastCycleOf(plugin::ResultTable t) {
   return t;
 }
 
-// Two cycles from the deck's start with the deck's stepper; the second cycle's rows.
+// Two cycles from the deck's start with BDF2 at 0.25 deg (the elastic study's stepper); the
+// second cycle's rows.
 inline CycleOutcome runTwoCycles(const plugin::LubricatedSkirtParameters& p) {
   SkirtModel m = makeGasolineSkirtModel(32, 24, &p);
   plugin::SimulationSettings s = bdf2StepperSettings(2);

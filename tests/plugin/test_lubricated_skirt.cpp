@@ -177,7 +177,8 @@ TEST(LubricatedSkirt, FrictionWorkIsTheIntegralOfFrictionPower) {
               run.stats.cycleFmep_Pa[1] / 1e3);
 }
 
-// One cycle of a model with the example deck's stepper: its rows and the run's figures.
+// One cycle of a model with BDF2 at 0.25 deg (ts::bdf2StepperSettings): its rows and the
+// run's figures.
 std::pair<plugin::ResultTable, plugin::SimulationStats> runOneCycle(
     plugin::PistonAssemblyModel& model) {
   plugin::CycleSimulation sim(model, ts::bdf2StepperSettings(1));
@@ -251,6 +252,17 @@ TEST(LubricatedSkirt, AFreeCrankOnAHugeFlywheelRunsThePrescribedCycle) {
   EXPECT_LT(lateral, 0.2);  // um: the periodic test's pose tolerance
   EXPECT_NEAR(freeStats.cycleFmep_Pa.at(0), prescribedStats.cycleFmep_Pa.at(0),
               0.005 * prescribedStats.cycleFmep_Pa.at(0));
+  // The step error estimate of the same trajectory agrees (the free crank's restarts at
+  // first order take more, shorter steps). Its landings' restarts discard the steps beyond an
+  // output angle and their error estimates with them; counted, they added 10 % here (measured
+  // 0.96x the prescribed crank's, 1.10x with them), within the bounds below: on this heavy
+  // flywheel the overshoots are short, so the bounds check agreement, not that rule.
+  const double errorFree_um = freeStats.cycleStepErrorEstimate_um.at(0),
+               errorPrescribed_um = prescribedStats.cycleStepErrorEstimate_um.at(0);
+  std::printf("  step error estimate: free crank %.4f um, prescribed %.4f um\n", errorFree_um,
+              errorPrescribed_um);
+  EXPECT_LT(errorFree_um, 1.5 * errorPrescribed_um);
+  EXPECT_GT(errorFree_um, errorPrescribed_um / 1.5);
 }
 
 }  // namespace

@@ -20,8 +20,9 @@ namespace pistondyn::io {
 /// How finely a run resolves the liner (`pistondyn run --fidelity`). Full: the deck as
 /// written. Preview: a quick look - the film grid of a liner that has one
 /// (liner.grid.nodes_circumferential x liner.grid.nodes_axial, the lubricated skirt's)
-/// halved each way, rounded up, but not below 16 x 12 nodes per side and never finer than
-/// the deck's (64 x 48 -> 32 x 24, 32 x 24 -> 16 x 12); everything else as written. A
+/// coarsened to 3/8 of its nodes around the arc and 5/6 along the skirt, rounded up, but not
+/// below 16 x 12 nodes per side and never finer than the deck's (64 x 48 -> 24 x 40,
+/// 32 x 24 -> 16 x 20); everything else as written. A
 /// liner without a film grid (the ideal guide) runs the same at both.
 enum class Fidelity { Full, Preview };
 

@@ -224,7 +224,8 @@ struct SimulationStats {
   /// Per cycle run: the step error estimate of the pose [um], the sum of the cycle's accepted
   /// steps' local error estimates (LinearlyImplicitStepperStats::poseErrorSum_m): an estimate
   /// of the error the cycle's steps add to the lateral motion and tilt x skirt length (within
-  /// a factor of 3 on a test problem). NaN with Simbody's integrators (not estimated).
+  /// a factor of 3 on a test problem; a free crank's landing restarts do not count the steps
+  /// they discard). NaN with Simbody's integrators (not estimated).
   std::vector<double> cycleStepErrorEstimate_um;
 };
 

@@ -120,7 +120,8 @@ struct LinearlyImplicitStepperStats {
   double realizeTime_s = 0.0;  ///< wall time in the evaluations' realizations (Simbody + elements)
   /// Sum over the accepted steps of each step's local error estimate on the piston's pose [m]:
   /// the largest over the free q of the estimated error times its pose lever (lateral,
-  /// tertiary, tilt x skirt length). An estimate of the global error those steps add to the
+  /// tertiary, tilt x skirt length; with a free crank also the crank angle's, as the piston's
+  /// travel). An estimate of the global error those steps add to the
   /// pose where the dynamics neither amplify nor damp it: on a squeeze-damped test problem
   /// within a factor of 3 of the true error (BDF2 about 2x, BDF3 0.6-0.7x; test
   /// StepErrorEstimateFollowsTheGlobalPoseError).

@@ -65,6 +65,13 @@ void printLinerFigures(const io::CycleSummary::LinerFigures& f, const io::CycleS
                 *f.filmSolves, f.filmFallbacks.value_or(0), f.filmDerivativeFailures.value_or(0),
                 stats.rejectedSteps);
   }
+  // linearly_implicit_bdf2's own estimate (summary.json: results.step_error_estimate_um).
+  if (!stats.cycleStepErrorEstimate_um.empty() &&
+      std::isfinite(stats.cycleStepErrorEstimate_um.back())) {
+    std::printf("  step error estimate %.3f um on the pose over the last cycle (the stepper's "
+                "local error estimates, summed)\n",
+                stats.cycleStepErrorEstimate_um.back());
+  }
 }
 
 // The range (smallest .. largest) of the main figures over the last cycles of a run that did

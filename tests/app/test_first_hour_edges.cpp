@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -444,6 +445,12 @@ TEST_F(FirstHourSkirtEdges, PreviewFidelityIsRecordedAndPrinted) {
   EXPECT_EQ(summary["overrides"].back(), "liner.grid.nodes_axial=20");
   EXPECT_NE(readFile(dir_ / "stdout.txt").find("fidelity preview: film grid 16 x 20"),
             std::string::npos)
+      << readFile(dir_ / "stdout.txt");
+  // The stepper's step error estimate is printed with the summary.json figure's digits.
+  char estimate[64];
+  std::snprintf(estimate, sizeof estimate, "step error estimate %.3f um",
+                summary["results"]["step_error_estimate_um"].get<double>());
+  EXPECT_NE(readFile(dir_ / "stdout.txt").find(estimate), std::string::npos)
       << readFile(dir_ / "stdout.txt");
   // The report's inputs table names the preview as the grid's source (the user's own grid
   // assignment came before it), the user's other assignments as --set.

@@ -235,23 +235,14 @@ std::string makeSummaryJson(const EngineDeck& deck, const RunOutcome& o) {
     r["last_cycles"] = lastCyclesSpread(o.cycleSummaries);
   r["rejected_steps"] = o.stats.rejectedSteps;         // linearly_implicit_bdf2's error test
   // The integrator's work per cycle run (each list sums to the run's figure).
-  const auto counts = [&r](const char* key, const std::vector<long>& v) {
-    Json list = Json::array();
-    for (long x : v)
-      list.push_back(x);
-    r[key] = list;
-  };
-  counts("cycle_integrator_steps", o.stats.cycleIntegratorSteps);
-  counts("cycle_rejected_steps", o.stats.cycleRejectedSteps);
-  counts("cycle_force_evaluations", o.stats.cycleRealizations);
+  r["cycle_integrator_steps"] = o.stats.cycleIntegratorSteps;
+  r["cycle_rejected_steps"] = o.stats.cycleRejectedSteps;
+  r["cycle_force_evaluations"] = o.stats.cycleRealizations;
   // linearly_implicit_bdf2: its estimate of the step error per cycle (the sum of its steps'
   // local error estimates on the pose) and that of the cycle the figures above describe.
   const std::vector<double>& errors_um = o.stats.cycleStepErrorEstimate_um;
   if (!errors_um.empty() && std::isfinite(errors_um.back())) {
-    Json list = Json::array();
-    for (double v : errors_um)
-      list.push_back(v);
-    r["cycle_step_error_estimate_um"] = list;
+    r["cycle_step_error_estimate_um"] = errors_um;
     r["step_error_estimate_um"] = errors_um.back();
   }
   // linearly_implicit_bdf2: steps retried because an element threw, e.g. a film solve or an

@@ -367,19 +367,20 @@ void landOnCrankAngle(Advancer& integ, const mbd::CrankTrain& ct, double thetaTa
       common::message("could not land on crank angle ", thetaTarget * 180.0 / M_PI, " deg"));
 }
 
+// Appends to `perCycle` the part of the run's figure `runTotal` that the cycles already in it
+// do not hold: the cycle that closed now.
+template <typename T>
+void appendCycleShare(std::vector<T>& perCycle, T runTotal) {
+  perCycle.push_back(runTotal - std::accumulate(perCycle.begin(), perCycle.end(), T{}));
+}
+
 // The steps, rejected steps, realizations and step error estimate of the cycle that closed
 // now: the integrator's figures since the previous cycle closed (or since the start).
 void recordCycleCounts(const Advancer& integ, SimulationStats& stats) {
-  const auto sum = [](const std::vector<long>& v) {
-    return std::accumulate(v.begin(), v.end(), 0L);
-  };
-  stats.cycleIntegratorSteps.push_back(integ.getSteps() - sum(stats.cycleIntegratorSteps));
-  stats.cycleRejectedSteps.push_back(integ.getRejectedSteps() - sum(stats.cycleRejectedSteps));
-  stats.cycleRealizations.push_back(integ.getRealizations() - sum(stats.cycleRealizations));
-  const double errorSum_um = 1e6 * integ.getPoseErrorSum_m();
-  stats.cycleStepErrorEstimate_um.push_back(
-      errorSum_um - std::accumulate(stats.cycleStepErrorEstimate_um.begin(),
-                                    stats.cycleStepErrorEstimate_um.end(), 0.0));
+  appendCycleShare(stats.cycleIntegratorSteps, integ.getSteps());
+  appendCycleShare(stats.cycleRejectedSteps, integ.getRejectedSteps());
+  appendCycleShare(stats.cycleRealizations, integ.getRealizations());
+  appendCycleShare(stats.cycleStepErrorEstimate_um, 1e6 * integ.getPoseErrorSum_m());
 }
 
 // The run's end as a warm start: the state of its last row (a cycle's last) and the pose of
